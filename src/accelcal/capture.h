@@ -1,0 +1,81 @@
+// A capture: a stretch of raw samples taken in one pose (static) or one turntable mounting,
+// and the statistics the fit uses from it.
+//
+// Units: t in s (one clock for the whole session), raw in ADC counts, temperature in degC,
+// radius in m, turntable speed in rpm (revolutions per minute, as typed on the bench).
+#pragma once
+
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <Eigen/Core>
+
+namespace accelcal {
+
+inline constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+enum class CaptureKind { kStatic, kTurntable };
+
+// "static" / "turntable" (the spelling of the capture-set file and the store).
+std::string_view CaptureKindToString(CaptureKind kind);
+// Inverse of CaptureKindToString; nullopt for anything else.
+std::optional<CaptureKind> StringToCaptureKind(std::string_view text);
+
+struct Sample {
+  double t_s = 0.0;
+  Eigen::Vector3d raw_counts = Eigen::Vector3d::Zero();
+  double temp_c = kNaN;  // NaN when the source has no temperature
+};
+
+// Running statistics of a capture (Welford's algorithm: one pass, numerically stable).
+struct CaptureStats {
+  long n = 0;
+  Eigen::Vector3d mean_counts = Eigen::Vector3d::Zero();
+  // Sample covariance of the raw samples (n - 1 in the denominator), counts^2.
+  Eigen::Matrix3d cov_counts2 = Eigen::Matrix3d::Zero();
+  double t_first_s = kNaN;
+  double t_last_s = kNaN;
+  double mean_t_s = kNaN;
+  double mean_temp_c = kNaN;  // NaN when no sample carries a temperature
+  double min_temp_c = kNaN;
+  double max_temp_c = kNaN;
+  Eigen::Vector3d min_counts = Eigen::Vector3d::Constant(kNaN);
+  Eigen::Vector3d max_counts = Eigen::Vector3d::Constant(kNaN);
+  bool any_non_finite = false;  // a NaN or infinite reading was seen (it is not accumulated)
+
+  void Add(const Sample& s);
+  // Covariance of the mean, counts^2: cov / n. Assumes uncorrelated samples (white noise).
+  Eigen::Matrix3d MeanCovariance() const;
+  Eigen::Vector3d StdCounts() const;
+
+ private:
+  long temp_n_ = 0;  // samples that carried a temperature
+};
+
+CaptureStats ComputeStats(const std::vector<Sample>& samples);
+
+struct Capture {
+  int id = 0;
+  CaptureKind kind = CaptureKind::kStatic;
+  std::string label;
+  double radius_m = kNaN;  // turntable only: distance from the spin axis to the sensor, m
+  double rpm = kNaN;       // turntable only: table speed, revolutions per minute
+  std::vector<Sample> samples;
+
+  // When the capture was left out of the fit: why (set by screening); empty when usable.
+  std::string rejection_reason;
+  bool used() const { return rejection_reason.empty(); }
+};
+
+// Table speed in rad/s from rpm.
+inline double RpmToRadPerS(double rpm) { return rpm * 2.0 * M_PI / 60.0; }
+
+// Magnitude of the specific force the sensor feels in a capture, m/s^2:
+// g for a static capture, sqrt(g^2 + (w^2 r)^2) for a turntable capture (level table).
+double ReferenceMagnitudeMps2(CaptureKind kind, double gravity_mps2, double radius_m, double rpm);
+
+}  // namespace accelcal

@@ -1,0 +1,17 @@
+// The subcommands of `accelcal`. Each lives in ui/cli/<name>.cpp with an options struct, a
+// setup function that binds its flags (CLI11's subcommands-in-files pattern) and a run function
+// that takes the options and calls the core, so it can be tested without parsing.
+//
+// Run functions report a failed job by throwing accelcal::Error (main prints one line on stderr
+// and exits 1); bad usage is CLI11's (exit 2).
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+namespace accelcal::cli {
+
+void SetupFitCommand(CLI::App& app);
+void SetupApplyCommand(CLI::App& app);
+void SetupSimulateCommand(CLI::App& app);
+
+}  // namespace accelcal::cli

@@ -1,0 +1,38 @@
+// accelcal: calibrate a three-axis accelerometer (see README.md).
+#include <cstdio>
+#include <exception>
+
+#include <CLI/CLI.hpp>
+#include <fmt/core.h>
+
+#include "accelcal/error.h"
+#include "cli/commands.h"
+
+int main(int argc, char** argv) {
+  CLI::App app{
+      "accelcal: calibrate the three-axis accelerometer of an IMU (the nine-parameter model of\n"
+      "scale K, bias b and misalignment T) from static poses and turntable runs.\n\n"
+      "Example:\n"
+      "  accelcal simulate scenarios/bench_default.toml -o captures.csv\n"
+      "  accelcal fit captures.csv -o cal.json\n"
+      "  accelcal apply cal.json < raw.txt > calibrated.txt",
+      "accelcal"};
+  app.set_version_flag("--version", std::string("accelcal ") + ACCELCAL_VERSION);
+  app.require_subcommand(1);
+  accelcal::cli::SetupFitCommand(app);
+  accelcal::cli::SetupApplyCommand(app);
+  accelcal::cli::SetupSimulateCommand(app);
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    // CLI11 prints help/version itself (exit 0) and usage errors (we map them to 2).
+    const int code = app.exit(e);
+    return code == 0 ? 0 : 2;
+  } catch (const std::exception& e) {
+    std::fflush(stdout);
+    fmt::print(stderr, "accelcal: error: {}\n", e.what());
+    return 1;
+  }
+  return 0;
+}
