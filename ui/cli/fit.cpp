@@ -1,12 +1,130 @@
-#include "cli/commands.h"
+// `accelcal fit`: the nine calibration parameters from a capture set or a continuous recording.
+#include <iostream>
+#include <memory>
 
+#include <fmt/core.h>
+
+#include "accelcal/capture_screening.h"
 #include "accelcal/error.h"
+#include "accelcal/fit/calibration_fit.h"
+#include "accelcal/io/calibration_file.h"
+#include "accelcal/io/capture_set_reader.h"
+#include "accelcal/io/recording_reader.h"
+#include "accelcal/static_detector.h"
+#include "cli/commands.h"
+#include "accelcal/report/fit_text.h"
+#include "cli/gravity_options.h"
 
 namespace accelcal::cli {
+namespace {
+
+struct FitCommandOptions {
+  std::string captures_path;
+  std::string recording_path;
+  std::string output_path;
+  std::vector<double> adc_range;
+  int min_samples = ScreeningOptions{}.min_samples;
+  StaticDetectorOptions detector;
+  bool quiet = false;
+  GravityFlags gravity;
+};
+
+struct LoadedCaptures {
+  std::vector<Capture> captures;
+  std::string source;
+  std::optional<AdcRange> adc_range;
+  std::string intervals_text;  // for recordings: the intervals found
+};
+
+LoadedCaptures LoadCaptureSet(const FitCommandOptions& o) {
+  CaptureSet set = ReadCaptureSetFile(o.captures_path);
+  return {std::move(set.captures), o.captures_path, set.adc_range, {}};
+}
+
+LoadedCaptures LoadRecording(const FitCommandOptions& o) {
+  if (std::string e = o.detector.Validate(); !e.empty()) throw Error("static detector: " + e);
+  const std::vector<Sample> samples = ReadRecordingFile(o.recording_path);
+  const StaticDetection detection = DetectStaticIntervals(samples, o.detector);
+  LoadedCaptures out{CapturesFromIntervals(samples, detection), o.recording_path, std::nullopt,
+                     FormatIntervals(detection, o.detector)};
+  return out;
+}
+
+void RunFit(const FitCommandOptions& o) {
+  const GravitySpec gravity = o.gravity.Resolve();
+  LoadedCaptures loaded = o.recording_path.empty() ? LoadCaptureSet(o) : LoadRecording(o);
+
+  ScreeningOptions screening;
+  screening.min_samples = o.min_samples;
+  screening.adc_range = loaded.adc_range;
+  if (o.adc_range.size() == 2) screening.adc_range = AdcRange{o.adc_range[0], o.adc_range[1]};
+  if (std::string e = screening.Validate(); !e.empty()) throw Error(e);
+  ScreenCaptures(loaded.captures, screening);
+
+  FitOptions fit;
+  fit.gravity = gravity;
+  const FitSummary summary = FitCalibration(loaded.captures, fit);
+
+  if (!o.quiet) {
+    std::cout << fmt::format("source: {}\ngravity: {}\n", loaded.source, gravity.Describe());
+    std::cout << loaded.intervals_text;
+  }
+  if (!summary.IsUsable()) {
+    if (!o.quiet) std::cout << FormatCaptureTable(loaded.captures, summary);
+    throw Error(fmt::format("no calibration: {}", summary.message));
+  }
+  const Calibration cal = MakeCalibration(summary, gravity, loaded.captures, loaded.source);
+  if (!o.quiet) std::cout << FormatFitReport(cal, summary);
+  if (!o.output_path.empty()) {
+    WriteCalibrationFile(o.output_path, cal);
+    if (!o.quiet) std::cout << fmt::format("calibration written to {}\n", o.output_path);
+  }
+}
+
+}  // namespace
 
 void SetupFitCommand(CLI::App& app) {
-  CLI::App* sub = app.add_subcommand("fit", "(not yet written)");
-  sub->callback([] { throw Error("'fit' is not implemented yet"); });
+  auto opts = std::make_shared<FitCommandOptions>();
+  CLI::App* sub = app.add_subcommand(
+      "fit",
+      "Fit the nine calibration parameters (bias, scale, misalignment) to a capture set or to a\n"
+      "continuous recording of static poses, print them with their 1-sigma uncertainties and every\n"
+      "capture's residual, and write the calibration file.\n\n"
+      "Examples:\n"
+      "  accelcal fit captures.csv -o cal.json\n"
+      "  accelcal fit --recording imu.txt --gravity 9.81744 -o cal.json\n"
+      "  accelcal fit captures.csv --latitude -34.90 --altitude 43 -o cal.json");
+  CLI::Option* captures = sub->add_option("captures", opts->captures_path,
+                                          "Capture-set file (CSV, format in README.md)")
+                              ->check(CLI::ExistingFile);
+  CLI::Option* recording = sub->add_option("--recording", opts->recording_path,
+                                           "Continuous recording 't ax ay az [temp_c]' of static poses "
+                                           "with a still start; static intervals are found automatically")
+                               ->check(CLI::ExistingFile);
+  captures->excludes(recording);
+  sub->add_option("-o,--output", opts->output_path, "Write the calibration file (JSON) here");
+  opts->gravity.Bind(*sub);
+  sub->add_option("--adc-range", opts->adc_range,
+                  "ADC output range MIN,MAX in counts (readings at either end count as clipped); "
+                  "overrides the file's '# adc_range_counts'")
+      ->expected(2)->delimiter(',');
+  sub->add_option("--min-samples", opts->min_samples, "Shortest usable capture, samples")
+      ->capture_default_str();
+  sub->add_option("--init-static-s", opts->detector.init_static_s,
+                  "Recordings: length of the still start, s (sets the noise level)")
+      ->capture_default_str();
+  sub->add_option("--threshold-multiplier", opts->detector.threshold_multiplier,
+                  "Recordings: a window is static below this many times the still start's variance")
+      ->capture_default_str();
+  sub->add_option("--window-samples", opts->detector.window_samples,
+                  "Recordings: centred variance window, samples (odd)")
+      ->capture_default_str();
+  sub->add_flag("-q,--quiet", opts->quiet, "Print nothing but errors");
+  sub->callback([opts, captures, recording] {
+    if (captures->count() == 0 && recording->count() == 0)
+      throw CLI::RequiredError("a capture-set file or --recording FILE");
+    RunFit(*opts);
+  });
 }
 
 }  // namespace accelcal::cli

@@ -1,0 +1,25 @@
+// Plain-text renderings of a fit for terminals and logs (80 columns, no control codes).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "accelcal/capture.h"
+#include "accelcal/fit/fit_summary.h"
+#include "accelcal/io/calibration_file.h"
+#include "accelcal/static_detector.h"
+
+namespace accelcal {
+
+// "found 38 static intervals (threshold ... counts^2)" and one line per interval.
+std::string FormatIntervals(const StaticDetection& detection, const StaticDetectorOptions& options);
+
+// One line per capture: id, kind, samples, used or why not, residual when fitted.
+std::string FormatCaptureTable(const std::vector<Capture>& captures, const FitSummary& summary);
+std::string FormatCaptureTable(const std::vector<CaptureRecord>& captures);
+
+// Parameters with 1-sigma uncertainties, residual statistics, conditioning, warnings, and the
+// capture table.
+std::string FormatFitReport(const Calibration& cal, const FitSummary& summary);
+
+}  // namespace accelcal
