@@ -257,6 +257,23 @@ TEST(CaptureSetReader, NonContiguousCaptureIdNamesBothLines) {
   EXPECT_TRUE(Contains(e.message(), "lines 2-3")) << e.what();
 }
 
+TEST(CaptureSetReader, NonContiguousIdSpanIgnoresCommentsBetweenCaptures) {
+  const InputError e = ParseFailure(std::string(kHeader) +
+                                    "1,static,0,1,2,3\n# pose 2\n\n2,static,2,1,2,3\n"
+                                    "1,static,3,1,2,3\n");
+  EXPECT_EQ(e.line(), 6);
+  EXPECT_TRUE(Contains(e.message(), "began on line 5); it was on lines 2-2")) << e.what();
+}
+
+TEST(CaptureSetReader, TemperatureNanIsUnknownButInfIsAnError) {
+  const CaptureSet set = ParseCaptureSet(
+      "capture,kind,t,ax,ay,az,temp_c\n1,static,0,1,2,3,nan\n", "set.csv");
+  EXPECT_TRUE(std::isnan(set.captures[0].samples[0].temp_c));
+  const InputError e = ParseFailure("capture,kind,t,ax,ay,az,temp_c\n1,static,0,1,2,3,-inf\n");
+  EXPECT_EQ(e.column(), 18);
+  EXPECT_EQ(e.message(), "column 'temp_c': '-inf' is not a finite number");
+}
+
 TEST(CaptureSetReader, TurntableRowsCarryRadiusAndRpm) {
   const CaptureSet set = ParseCaptureSet(
       "capture,kind,t,ax,ay,az,radius_m,rpm\n1,static,0,1,2,3,,\n"

@@ -66,6 +66,7 @@ class CaptureSetParser {
   void ParseTurntableColumns(Row* row) const;
   void CheckStaticColumnEmpty(Column c) const;
   void AddRow(Row row);
+  void StartCapture(Row row);
   void CheckSameAsFirstRow(const Row& row) const;
 
   // The row's field for column c; nullptr when the header has no such column.
@@ -89,7 +90,7 @@ class CaptureSetParser {
   long first_row_line_ = 0;
   std::map<long, LineSpan> finished_;  // captures already closed, by id
   double previous_t_s_ = -INFINITY;
-  long previous_t_line_ = 0;
+  long previous_row_line_ = 0;  // line of the last data row added
 };
 
 CaptureSet CaptureSetParser::Run() {
@@ -233,7 +234,10 @@ Row CaptureSetParser::ParseRow() const {
   row.sample.raw_counts = {Number(kAx), Number(kAy), Number(kAz)};
   if (const CsvField* temp = Field(kTempC); temp != nullptr && !temp->value.empty()) {
     row.sample.temp_c = Number(kTempC);
-    if (std::isinf(row.sample.temp_c)) FiniteNumber(kTempC);  // throws, with the message
+    if (std::isinf(row.sample.temp_c)) {  // "nan" means unknown, like an empty field
+      FailAt(temp->offset, fmt::format("column 'temp_c': '{}' is not a finite number",
+                                       temp->value));
+    }
   }
   if (row.kind == CaptureKind::kTurntable) {
     ParseTurntableColumns(&row);
@@ -270,22 +274,24 @@ void CaptureSetParser::CheckStaticColumnEmpty(Column c) const {
 }
 
 void CaptureSetParser::AddRow(Row row) {
-  const long line = lines_.line_number();
   if (row.sample.t_s < previous_t_s_) {
     FailAtField(kT, fmt::format("column 't': t = {} s is earlier than t = {} s on line {} "
                                 "(t must not decrease down the file)",
                                 Field(kT)->value, detail::FormatNumber(previous_t_s_),
-                                previous_t_line_));
+                                previous_row_line_));
   }
   previous_t_s_ = row.sample.t_s;
-  previous_t_line_ = line;
-
   const bool same_capture = !set_.captures.empty() && set_.captures.back().id == row.id;
   if (same_capture) {
     CheckSameAsFirstRow(row);
     set_.captures.back().samples.push_back(row.sample);
-    return;
+  } else {
+    StartCapture(std::move(row));
   }
+  previous_row_line_ = lines_.line_number();
+}
+
+void CaptureSetParser::StartCapture(Row row) {
   if (const auto seen = finished_.find(row.id); seen != finished_.end()) {
     FailAtField(kCapture,
                 fmt::format("capture {} reappears after capture {} (which began on line {}); "
@@ -294,7 +300,7 @@ void CaptureSetParser::AddRow(Row row) {
                             seen->second.last));
   }
   if (!set_.captures.empty()) {
-    finished_[set_.captures.back().id] = {first_row_line_, line - 1};
+    finished_[set_.captures.back().id] = {first_row_line_, previous_row_line_};
   }
   Capture& capture = set_.captures.emplace_back();
   capture.id = static_cast<int>(row.id);
@@ -304,7 +310,7 @@ void CaptureSetParser::AddRow(Row row) {
   capture.rpm = row.rpm;
   capture.samples.push_back(row.sample);
   first_row_ = std::move(row);
-  first_row_line_ = line;
+  first_row_line_ = lines_.line_number();
 }
 
 void CaptureSetParser::CheckSameAsFirstRow(const Row& row) const {
