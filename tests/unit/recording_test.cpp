@@ -74,6 +74,24 @@ TEST(Recording, HoldsReadTheirPosesAndMovesAreRestless) {
   }
 }
 
+TEST(Recording, BumpLandsInItsPosesHold) {
+  Scenario s = StaticOnly();
+  s.sensor.noise_counts.setZero();
+  s.effects.bumps = {Bump{1, 2.0, 4.0, 0.2}};  // pose 1's hold starts at 30 + 4 s
+  VirtualBench bench(s);
+  double peak_mps2 = 0.0;
+  for (const Sample& smp : Between(bench.SimulateRecording(), 34.0, 44.0)) {
+    const double excess = std::abs(s.sensor.model.Calibrate(smp.raw_counts).norm() - 9.80665);
+    if (smp.t_s < 36.0 || smp.t_s > 36.2) {
+      EXPECT_LT(excess, 0.05) << smp.t_s;
+    } else {
+      peak_mps2 = std::max(peak_mps2, excess);
+    }
+  }
+  // |g z + a| - g for a horizontal a of 4 m/s^2 is about a^2 / 2g.
+  EXPECT_GT(peak_mps2, 0.6);
+}
+
 TEST(Recording, IsDeterministicPerSeed) {
   VirtualBench a(StaticOnly());
   VirtualBench b(StaticOnly());

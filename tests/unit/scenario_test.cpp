@@ -145,7 +145,8 @@ TEST(ScenarioParse, WrongTypeIsRefusedWhereItStands) {
   EXPECT_EQ(vec.line(), 2);
   EXPECT_TRUE(Contains(vec.message(), "sensor.bias_counts")) << vec.what();
 
-  const InputError element = ParseFails(Replace(kMinimal, "[2048, 2048, 2048]", "[2048, \"a\", 2048]"));
+  const InputError element =
+      ParseFails(Replace(kMinimal, "[2048, 2048, 2048]", "[2048, \"a\", 2048]"));
   EXPECT_EQ(element.line(), 2);
   EXPECT_EQ(element.column(), 22);  // the opening quote of "a"
 }
@@ -160,7 +161,8 @@ TEST(ScenarioParse, UnknownKeysAreRefused) {
   EXPECT_EQ(nested.line(), 8);
   EXPECT_EQ(nested.column(), 1);
 
-  const InputError in_capture = ParseFails(Replace(kMinimal, "up = [0, 0, 1]", "up = [0, 0, 1]\nradius = 3"));
+  const InputError in_capture =
+      ParseFails(Replace(kMinimal, "up = [0, 0, 1]", "up = [0, 0, 1]\nradius = 3"));
   EXPECT_TRUE(Contains(in_capture.message(), "capture 0.radius")) << in_capture.what();
 
   const InputError misalignment = ParseFails(
@@ -168,8 +170,9 @@ TEST(ScenarioParse, UnknownKeysAreRefused) {
   EXPECT_TRUE(Contains(misalignment.message(), "misalignment_rad.xy")) << misalignment.what();
 
   // A [[capture]] key that belongs to the other kind is a mistake too.
-  EXPECT_TRUE(Contains(ParseFails(Replace(kMinimal, "up = [0, 0, 1]", "up = [0, 0, 1]\nrpm = 60")).message(),
-                       "capture 0.rpm"));
+  EXPECT_TRUE(Contains(
+      ParseFails(Replace(kMinimal, "up = [0, 0, 1]", "up = [0, 0, 1]\nrpm = 60")).message(),
+      "capture 0.rpm"));
 }
 
 TEST(ScenarioParse, BadKindIsRefused) {
@@ -179,8 +182,10 @@ TEST(ScenarioParse, BadKindIsRefused) {
 }
 
 std::string Turntable(const std::string& radial, const std::string& up) {
-  return kMinimal + "\n[[capture]]\nkind = \"turntable\"\nlabel = \"t\"\nradius_m = 0.1\nrpm = 60\n"
-                    "radial_axis = \"" + radial + "\"\nup_axis = \"" + up + "\"\n";
+  return kMinimal +
+         "\n[[capture]]\nkind = \"turntable\"\nlabel = \"t\"\nradius_m = 0.1\nrpm = 60\n"
+         "radial_axis = \"" +
+         radial + "\"\nup_axis = \"" + up + "\"\n";
 }
 
 TEST(ScenarioParse, RadialAxisMustBePerpendicularToUp) {
@@ -188,23 +193,29 @@ TEST(ScenarioParse, RadialAxisMustBePerpendicularToUp) {
   EXPECT_TRUE(Contains(same.message(), "perpendicular")) << same.what();
   EXPECT_EQ(same.line(), 20);
   EXPECT_TRUE(Contains(ParseFails(Turntable("+z", "-z")).message(), "perpendicular"));
-  EXPECT_TRUE(Contains(ParseFails(Turntable("x", "+z")).message(), "+x -x")) ;
+  EXPECT_TRUE(Contains(ParseFails(Turntable("x", "+z")).message(), "+x -x"));
   EXPECT_NO_THROW(ParseScenario(Turntable("-z", "+y"), "t"));
 }
 
 TEST(ScenarioParse, OutOfRangeValuesAreRefused) {
-  const InputError noise = ParseFails(Replace(kMinimal, "noise_counts = [1, 1, 1]", "noise_counts = [1, -1, 1]"));
+  const InputError noise =
+      ParseFails(Replace(kMinimal, "noise_counts = [1, 1, 1]", "noise_counts = [1, -1, 1]"));
   EXPECT_EQ(noise.line(), 4);
   EXPECT_EQ(noise.column(), 20);
   EXPECT_TRUE(Contains(noise.message(), "negative")) << noise.what();
 
-  EXPECT_TRUE(Contains(ParseFails(Replace(kMinimal, "[34.8, 34.8, 34.8]", "[34.8, 0, 34.8]")).message(),
-                       "positive"));
-  EXPECT_TRUE(Contains(ParseFails(Replace(kMinimal, "bits = 12", "bits = 40")).message(), "between"));
-  EXPECT_TRUE(Contains(ParseFails(Replace(kMinimal, "up = [0, 0, 1]", "up = [0, 0, 0]")).message(), "zero"));
+  EXPECT_TRUE(
+      Contains(ParseFails(Replace(kMinimal, "[34.8, 34.8, 34.8]", "[34.8, 0, 34.8]")).message(),
+               "positive"));
+  EXPECT_TRUE(
+      Contains(ParseFails(Replace(kMinimal, "bits = 12", "bits = 40")).message(), "between"));
+  EXPECT_TRUE(Contains(ParseFails(Replace(kMinimal, "up = [0, 0, 1]", "up = [0, 0, 0]")).message(),
+                       "zero"));
   EXPECT_TRUE(Contains(ParseFails(kMinimal + "[bench]\ngap_s = -1\n").message(), "bench.gap_s"));
-  const InputError bump = ParseFails(kMinimal + "[[effects.bump]]\ncapture = 5\nat_s = 1\npeak_mps2 = 1\nduration_s = 0.1\n");
-  EXPECT_TRUE(Contains(bump.message(), "capture 5")) << bump.what();
+  const InputError bump = ParseFails(
+      kMinimal + "[[effects.bump]]\ncapture = 5\nat_s = 1\npeak_mps2 = 1\nduration_s = 0.1\n");
+  EXPECT_TRUE(Contains(bump.message(), "effects.bump 0.capture: 5")) << bump.what();
+  EXPECT_EQ(bump.line(), 14);
 }
 
 TEST(ScenarioParse, MissingPiecesAreNamed) {
@@ -283,7 +294,8 @@ TEST(DefaultScenario, HasTheDocumentedShape) {
   // No two static poses alike.
   for (std::size_t i = 0; i < s.captures.size(); ++i) {
     for (std::size_t j = i + 1; j < s.captures.size(); ++j) {
-      if (s.captures[i].kind != CaptureKind::kStatic || s.captures[j].kind != CaptureKind::kStatic) continue;
+      if (s.captures[i].kind != CaptureKind::kStatic || s.captures[j].kind != CaptureKind::kStatic)
+        continue;
       EXPECT_GT((s.captures[i].up - s.captures[j].up).norm(), 0.1) << i << " " << j;
     }
   }

@@ -3,8 +3,8 @@
 
 #include <cmath>
 
-#include <Eigen/Dense>
 #include <gtest/gtest.h>
+#include <Eigen/Dense>
 
 #include "accelcal/error.h"
 
@@ -106,10 +106,12 @@ TEST(VirtualBench, NoiseStdIsRecovered) {
   s.captures.resize(1);
   s.captures[0].duration_s = 100.0;
   VirtualBench bench(s);
-  const Eigen::Vector3d std_counts = ComputeStats(bench.SimulateCaptureSet()[0].samples).StdCounts();
+  const Eigen::Vector3d std_counts =
+      ComputeStats(bench.SimulateCaptureSet()[0].samples).StdCounts();
   for (int i = 0; i < 3; ++i) {
     // Rounding to whole counts adds a uniform error of variance 1/12.
-    const double expected = std::sqrt(s.sensor.noise_counts(i) * s.sensor.noise_counts(i) + 1.0 / 12.0);
+    const double expected =
+        std::sqrt(s.sensor.noise_counts(i) * s.sensor.noise_counts(i) + 1.0 / 12.0);
     EXPECT_NEAR(std_counts(i), expected, 0.04 * expected) << "axis " << i;
   }
 }
@@ -125,7 +127,8 @@ TEST(VirtualBench, QuadraticEffectAddsQTimesSquaredAxisForce) {
   for (std::size_t i = 0; i < a.size(); ++i) {
     SCOPED_TRACE(a[i].label);
     const Eigen::Vector3d mean_a = ComputeStats(a[i].samples).mean_counts;
-    const Eigen::Vector3d along_axes = (mean_a - m.bias_counts).cwiseQuotient(m.scale_counts_per_mps2);
+    const Eigen::Vector3d along_axes =
+        (mean_a - m.bias_counts).cwiseQuotient(m.scale_counts_per_mps2);
     const Eigen::Vector3d expected =
         curved.effects.quadratic_counts_per_mps2_sq.cwiseProduct(along_axes.cwiseAbs2());
     const Eigen::Vector3d diff = ComputeStats(b[i].samples).mean_counts - mean_a;
@@ -145,7 +148,8 @@ TEST(VirtualBench, RadiusOffsetMovesTheSensingPointOutwards) {
     SCOPED_TRACE(c.label);
     const double w = TrueOmega(s, c);
     const double true_mps2 = std::hypot(s.bench.gravity_mps2, w * w * (c.radius_m + 0.01));
-    const double stated_mps2 = ReferenceMagnitudeMps2(c.kind, s.bench.gravity_mps2, c.radius_m, c.rpm);
+    const double stated_mps2 =
+        ReferenceMagnitudeMps2(c.kind, s.bench.gravity_mps2, c.radius_m, c.rpm);
     const double measured_mps2 = CalibratedMean(s.sensor.model, c).norm();
     EXPECT_NEAR(measured_mps2, true_mps2, kQuantizationTolMps2);
     EXPECT_GT(measured_mps2 - stated_mps2, 0.3);
@@ -233,7 +237,8 @@ TEST(VirtualBench, BiasDriftsWithSessionTime) {
   s.captures = {s.captures.at(0), s.captures.at(0)};  // the same pose twice, 1000 s apart
   VirtualBench bench(s);
   const std::vector<Capture> c = bench.SimulateCaptureSet();
-  const Eigen::Vector3d diff = ComputeStats(c[1].samples).mean_counts - ComputeStats(c[0].samples).mean_counts;
+  const Eigen::Vector3d diff =
+      ComputeStats(c[1].samples).mean_counts - ComputeStats(c[0].samples).mean_counts;
   // Noise (1.5 counts) dithers the rounding, so the means resolve well below a count.
   EXPECT_LT((diff - s.effects.bias_drift_counts_per_s * 1000.0).cwiseAbs().maxCoeff(), 0.25)
       << diff.transpose();
@@ -254,8 +259,10 @@ TEST(VirtualBench, TemperatureRampAndCoefficients) {
   const SensorModel& m = s.sensor.model;
   const Eigen::Vector3d a_a = m.Misalignment().inverse() * f;
   const Eigen::Vector3d expected =
-      m.scale_counts_per_mps2.cwiseProduct(Eigen::Vector3d::Ones() + 5.0 * s.effects.scale_temp_coeff_per_c)
-          .cwiseProduct(a_a) + m.bias_counts + 5.0 * s.effects.bias_temp_coeff_counts_per_c;
+      m.scale_counts_per_mps2
+          .cwiseProduct(Eigen::Vector3d::Ones() + 5.0 * s.effects.scale_temp_coeff_per_c)
+          .cwiseProduct(a_a) +
+      m.bias_counts + 5.0 * s.effects.bias_temp_coeff_counts_per_c;
   EXPECT_LT((bench.IdealRaw(f.replicate<1, 3>(), t_s) - expected).norm(), 1e-9);
   EXPECT_LT((bench.IdealRaw(f.replicate<1, 3>(), 0.5 * t_s) - m.Raw(f)).norm(), 1e-9);  // 25 degC
 }
@@ -266,7 +273,7 @@ TEST(VirtualBench, ReadingsClipAtTheAdcRange) {
   VirtualBench bench(s);
   const std::vector<Capture> c = bench.SimulateCaptureSet();
   for (const Sample& smp : c.at(0).samples) ASSERT_EQ(smp.raw_counts.z(), 4095.0);  // z up
-  EXPECT_LT(ComputeStats(c.at(1).samples).max_counts.z(), 4095.0);                 // z down
+  EXPECT_LT(ComputeStats(c.at(1).samples).max_counts.z(), 4095.0);                  // z down
   for (const Capture& cap : c) {
     const CaptureStats st = ComputeStats(cap.samples);
     EXPECT_GE(st.min_counts.minCoeff(), 0.0);

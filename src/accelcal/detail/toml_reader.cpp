@@ -85,7 +85,8 @@ std::int64_t TomlTableReader::Integer(std::string_view key, std::optional<std::i
     return *fallback;
   }
   const auto* value = node->as_integer();
-  if (value == nullptr) Fail(*node, key, "expected an integer, got " + std::string(TypeName(*node)));
+  if (value == nullptr)
+    Fail(*node, key, "expected an integer, got " + std::string(TypeName(*node)));
   return value->get();
 }
 
@@ -96,7 +97,8 @@ bool TomlTableReader::Bool(std::string_view key, std::optional<bool> fallback) {
     return *fallback;
   }
   const auto* value = node->as_boolean();
-  if (value == nullptr) Fail(*node, key, "expected true or false, got " + std::string(TypeName(*node)));
+  if (value == nullptr)
+    Fail(*node, key, "expected true or false, got " + std::string(TypeName(*node)));
   return value->get();
 }
 

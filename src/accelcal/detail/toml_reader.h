@@ -8,8 +8,8 @@
 #include <string>
 #include <string_view>
 
-#include <Eigen/Core>
 #include <toml++/toml.h>
+#include <Eigen/Core>
 
 namespace accelcal::detail {
 

@@ -15,7 +15,9 @@ namespace {
 std::string Number(double value) { return fmt::format("{}", value); }
 
 // Empty for NaN: the format's "unknown".
-std::string OptionalNumber(double value) { return std::isnan(value) ? std::string() : Number(value); }
+std::string OptionalNumber(double value) {
+  return std::isnan(value) ? std::string() : Number(value);
+}
 
 void WriteRow(std::ostream& out, const Capture& c, const std::string& label, const Sample& s) {
   const bool turntable = c.kind == CaptureKind::kTurntable;
@@ -69,14 +71,14 @@ void WriteCaptureSetFile(const std::string& path, const CaptureSet& set) {
 }
 
 void WriteRecording(std::ostream& out, const std::vector<Sample>& samples) {
-  const bool has_temp =
-      std::any_of(samples.begin(), samples.end(), [](const Sample& s) { return !std::isnan(s.temp_c); });
-  out << "# accelcal recording: t in s, ax ay az in raw counts" << (has_temp ? ", temp_c in degC" : "")
-      << '\n';
+  const bool has_temp = std::any_of(samples.begin(), samples.end(),
+                                    [](const Sample& s) { return !std::isnan(s.temp_c); });
+  out << "# accelcal recording: t in s, ax ay az in raw counts"
+      << (has_temp ? ", temp_c in degC" : "") << '\n';
   out << (has_temp ? "# t ax ay az temp_c\n" : "# t ax ay az\n");
   for (const Sample& s : samples) {
-    out << Number(s.t_s) << ' ' << Number(s.raw_counts.x()) << ' ' << Number(s.raw_counts.y()) << ' '
-        << Number(s.raw_counts.z());
+    out << Number(s.t_s) << ' ' << Number(s.raw_counts.x()) << ' ' << Number(s.raw_counts.y())
+        << ' ' << Number(s.raw_counts.z());
     if (has_temp) out << ' ' << Number(s.temp_c);
     out << '\n';
   }

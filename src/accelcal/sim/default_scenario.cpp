@@ -43,17 +43,18 @@ Scenario DefaultScenario() {
   s.adc.is_signed = false;
   s.bench.seed = 7;
   s.captures = {
-      StaticPose("z up", {0, 0, 1}),        StaticPose("z down", {0, 0, -1}),
-      StaticPose("x up", {1, 0, 0}),        StaticPose("x down", {-1, 0, 0}),
-      StaticPose("y up", {0, 1, 0}),        StaticPose("y down", {0, -1, 0}),
-      StaticPose("tilted +x+y+z", {1, 1, 1}), StaticPose("tilted -x+y-z", {-1, 1, -1}),
+      StaticPose("z up", {0, 0, 1}),           StaticPose("z down", {0, 0, -1}),
+      StaticPose("x up", {1, 0, 0}),           StaticPose("x down", {-1, 0, 0}),
+      StaticPose("y up", {0, 1, 0}),           StaticPose("y down", {0, -1, 0}),
+      StaticPose("tilted +x+y+z", {1, 1, 1}),  StaticPose("tilted -x+y-z", {-1, 1, -1}),
       StaticPose("tilted +x-y+z", {1, -1, 1}),
   };
   const SensorAxis mountings[3][2] = {{SensorAxis::kPlusX, SensorAxis::kPlusZ},
                                       {SensorAxis::kPlusY, SensorAxis::kPlusZ},
                                       {SensorAxis::kPlusZ, SensorAxis::kPlusX}};
   for (const auto& m : mountings) {
-    for (double radius_m : {0.05, 0.10, 0.15}) s.captures.push_back(Turntable(m[0], m[1], radius_m));
+    for (double radius_m : {0.05, 0.10, 0.15})
+      s.captures.push_back(Turntable(m[0], m[1], radius_m));
   }
   return s;
 }

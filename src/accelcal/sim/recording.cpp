@@ -30,6 +30,7 @@ struct Segment {
   Eigen::Quaterniond to;    // platform -> world at end
   bool is_move = false;
   JitterTone tones[3][kJitterTones];  // per world axis
+  std::vector<ActivePulse> pulses;    // bumps of the pose held (holds only)
 };
 
 // Hand jitter during a move, world frame, m/s^2; zero at both ends of the move.
@@ -39,7 +40,8 @@ Eigen::Vector3d Jitter(const Segment& seg, double t_s) {
   Eigen::Vector3d a = Eigen::Vector3d::Zero();
   for (int axis = 0; axis < 3; ++axis) {
     for (const JitterTone& tone : seg.tones[axis]) {
-      a(axis) += kJitterAmplitudeMps2 * std::sin(2.0 * M_PI * tone.frequency_hz * t_s + tone.phase_rad);
+      a(axis) +=
+          kJitterAmplitudeMps2 * std::sin(2.0 * M_PI * tone.frequency_hz * t_s + tone.phase_rad);
     }
   }
   return envelope * a;
@@ -63,19 +65,21 @@ std::vector<Sample> VirtualBench::SimulateRecording() {
   double t_s = 0.0;
   Eigen::Quaterniond previous;
   for (int i = 0; i < static_cast<int>(scenario_.captures.size()); ++i) {
-    const Eigen::Quaterniond pose(BeginCapture(scenario_.captures[static_cast<std::size_t>(i)], 0.0)
-                                      .platform_rotation);
+    // A pose's hold starts after the move to it; its bumps count from the start of the hold.
+    const double hold_start_s = t_s + (i > 0 ? bench.move_s : 0.0);
+    Mounting held = BeginCapture(i, hold_start_s);
+    const Eigen::Quaterniond pose(held.platform_rotation);
     if (i > 0) {
-      Segment move{t_s, t_s + bench.move_s, previous, pose, true, {}};
+      Segment move{t_s, hold_start_s, previous, pose, true, {}, {}};
       for (auto& axis_tones : move.tones) {
         for (JitterTone& tone : axis_tones) tone = {frequency_hz(rng_), phase_rad(rng_)};
       }
       segments.push_back(move);
-      t_s = move.end_s;
+      t_s = hold_start_s;
     }
     double hold_s = scenario_.CaptureDurationS(i);
     if (i == 0) hold_s = std::max(hold_s, bench.recording_quiet_start_s);
-    segments.push_back(Segment{t_s, t_s + hold_s, pose, pose, false, {}});
+    segments.push_back(Segment{t_s, t_s + hold_s, pose, pose, false, {}, std::move(held.pulses)});
     t_s += hold_s;
     previous = pose;
   }
@@ -100,6 +104,7 @@ std::vector<Sample> VirtualBench::SimulateRecording() {
       // note; the unsteadiness of the hand is the jitter.
       f_world += Jitter(s, ts);
     }
+    for (const ActivePulse& p : s.pulses) f_world += p.AccelerationWorld(ts);
     samples.push_back(Measure(q.toRotationMatrix().transpose() * f_world, ts));
   }
   session_duration_s_ = scenario_.SessionDurationS();

@@ -29,19 +29,23 @@ std::string ValidateBench(const BenchSpec& b) {
   if (!(b.gap_s >= 0.0)) return "bench.gap_s must not be negative";
   if (!(b.capture_duration_s > 0.0)) return "bench.capture_duration_s must be positive";
   if (!std::isfinite(b.temperature_c)) return "bench.temperature_c must be finite";
-  if (!(b.recording_quiet_start_s >= 0.0)) return "bench.recording_quiet_start_s must not be negative";
+  if (!(b.recording_quiet_start_s >= 0.0))
+    return "bench.recording_quiet_start_s must not be negative";
   if (!(b.move_s > 0.0)) return "bench.move_s must be positive";
   return {};
 }
 
 std::string ValidateCapture(const CapturePlan& c, int i) {
   const std::string where = fmt::format("capture {} ('{}')", i, c.label);
-  if (!(std::isnan(c.duration_s) || c.duration_s > 0.0)) return where + ": duration_s must be positive";
+  if (!(std::isnan(c.duration_s) || c.duration_s > 0.0))
+    return where + ": duration_s must be positive";
   if (c.kind == CaptureKind::kStatic) {
-    if (!c.up.allFinite() || std::abs(c.up.norm() - 1.0) > 1e-9) return where + ": up must be a unit vector";
+    if (!c.up.allFinite() || std::abs(c.up.norm() - 1.0) > 1e-9)
+      return where + ": up must be a unit vector";
     return {};
   }
-  if (!(c.radius_m >= 0.0) || !std::isfinite(c.radius_m)) return where + ": radius_m must not be negative";
+  if (!(c.radius_m >= 0.0) || !std::isfinite(c.radius_m))
+    return where + ": radius_m must not be negative";
   if (!(c.rpm >= 0.0) || !std::isfinite(c.rpm)) return where + ": rpm must not be negative";
   if (std::abs(SensorAxisVector(c.radial_axis).dot(SensorAxisVector(c.up_axis))) > 0.5) {
     return where + ": radial_axis and up_axis must be perpendicular";

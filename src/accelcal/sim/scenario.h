@@ -34,15 +34,15 @@ Eigen::Vector3d SensorAxisVector(SensorAxis axis);
 
 // [sensor]: the true parameters the calibration should recover, plus noise and rate.
 struct SensorSpec {
-  SensorModel model;                                          // bias, scale, misalignment (truth)
-  Eigen::Vector3d noise_counts = Eigen::Vector3d::Zero();     // white-noise std per axis, counts
-  double rate_hz = 100.0;                                     // output data rate, samples per s
+  SensorModel model;                                       // bias, scale, misalignment (truth)
+  Eigen::Vector3d noise_counts = Eigen::Vector3d::Zero();  // white-noise std per axis, counts
+  double rate_hz = 100.0;                                  // output data rate, samples per s
 };
 
 // [adc]: readings are rounded to integer counts and clipped to the converter's range.
 struct AdcSpec {
-  int bits = 12;            // resolution, bits (1..32)
-  bool is_signed = false;   // TOML `signed`: range -2^(bits-1)..2^(bits-1)-1, else 0..2^bits-1
+  int bits = 12;           // resolution, bits (1..32)
+  bool is_signed = false;  // TOML `signed`: range -2^(bits-1)..2^(bits-1)-1, else 0..2^bits-1
 
   double MinCounts() const;
   double MaxCounts() const;
@@ -51,15 +51,15 @@ struct AdcSpec {
 
 // [bench]: the simulated bench and the person operating it.
 struct BenchSpec {
-  double gravity_mps2 = 9.80665;      // local gravity, m/s^2
-  std::uint64_t seed = 1;             // random seed; same seed => identical output
-  double placement_error_deg = 0.5;   // std of each component of a random small rotation
-                                      // applied to every pose and mounting, deg
-  double gap_s = 20.0;                // time between captures (repositioning), s
-  double capture_duration_s = 10.0;   // default capture length, s
-  double temperature_c = 25.0;        // ambient; also the reference of temperature effects, degC
+  double gravity_mps2 = 9.80665;     // local gravity, m/s^2
+  std::uint64_t seed = 1;            // random seed; same seed => identical output
+  double placement_error_deg = 0.5;  // std of each component of a random small rotation
+                                     // applied to every pose and mounting, deg
+  double gap_s = 20.0;               // time between captures (repositioning), s
+  double capture_duration_s = 10.0;  // default capture length, s
+  double temperature_c = 25.0;       // ambient; also the reference of temperature effects, degC
   double recording_quiet_start_s = 30.0;  // continuous recording: first pose held this long, s
-  double move_s = 4.0;                // continuous recording: time to turn between poses, s
+  double move_s = 4.0;                    // continuous recording: time to turn between poses, s
 };
 
 // Temperature of the sensor over the session: a linear ramp from start_c (t = 0) to end_c
@@ -71,10 +71,10 @@ struct TemperatureRamp {
 
 // [[effects.bump]]: a half-sine acceleration pulse in a random horizontal direction.
 struct Bump {
-  int capture = 0;           // 0-based index into the plan
-  double at_s = 0.0;         // start, seconds into the capture
-  double peak_mps2 = 0.0;    // peak acceleration, m/s^2
-  double duration_s = 0.1;   // pulse length, s
+  int capture = 0;          // 0-based index into the plan
+  double at_s = 0.0;        // start, seconds into the capture
+  double peak_mps2 = 0.0;   // peak acceleration, m/s^2
+  double duration_s = 0.1;  // pulse length, s
 };
 
 // [effects]: non-ideal behaviour the nine-parameter model does not describe. All off by default.

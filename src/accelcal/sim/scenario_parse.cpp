@@ -49,7 +49,8 @@ BenchSpec ReadBench(TomlTableReader& r) {
   b.placement_error_deg =
       r.Number("placement_error_deg", b.placement_error_deg, NumberRange::kNonNegative);
   b.gap_s = r.Number("gap_s", b.gap_s, NumberRange::kNonNegative);
-  b.capture_duration_s = r.Number("capture_duration_s", b.capture_duration_s, NumberRange::kPositive);
+  b.capture_duration_s =
+      r.Number("capture_duration_s", b.capture_duration_s, NumberRange::kPositive);
   b.temperature_c = r.Number("temperature_c", b.temperature_c);
   b.recording_quiet_start_s =
       r.Number("recording_quiet_start_s", b.recording_quiet_start_s, NumberRange::kNonNegative);
@@ -113,13 +114,15 @@ CapturePlan ReadCapture(TomlTableReader& r) {
   CapturePlan c;
   const std::string kind = r.String("kind", std::nullopt);
   const std::optional<CaptureKind> parsed = StringToCaptureKind(kind);
-  if (!parsed) r.Fail(*r.Get("kind"), "kind", "expected \"static\" or \"turntable\", got '" + kind + "'");
+  if (!parsed)
+    r.Fail(*r.Get("kind"), "kind", "expected \"static\" or \"turntable\", got '" + kind + "'");
   c.kind = *parsed;
   c.label = r.String("label", std::nullopt);
   if (c.label.find_first_of("\r\n") != std::string::npos) {
     r.Fail(*r.Get("label"), "label", "must be a single line");
   }
-  if (r.Has("duration_s")) c.duration_s = r.Number("duration_s", std::nullopt, NumberRange::kPositive);
+  if (r.Has("duration_s"))
+    c.duration_s = r.Number("duration_s", std::nullopt, NumberRange::kPositive);
   if (c.kind == CaptureKind::kTurntable) {
     ReadTurntable(r, c);
   } else {
@@ -132,8 +135,8 @@ CapturePlan ReadCapture(TomlTableReader& r) {
 
 // Reads a required or optional top-level table through its own reader and checks its keys.
 template <typename Fn>
-void WithTable(TomlTableReader& root, std::string_view key, bool required, const std::string& source,
-               Fn&& fn) {
+void WithTable(TomlTableReader& root, std::string_view key, bool required,
+               const std::string& source, Fn&& fn) {
   const toml::table* table = root.Table(key);
   if (table == nullptr) {
     if (required) {
@@ -144,6 +147,19 @@ void WithTable(TomlTableReader& root, std::string_view key, bool required, const
   TomlTableReader reader(*table, std::string(key), source);
   fn(reader);
   reader.Finish();
+}
+
+// A bump must name a capture of the plan; known only once the plan has been read.
+void CheckBumpTargets(const toml::table& doc, const Scenario& s, const std::string& source) {
+  for (std::size_t i = 0; i < s.effects.bumps.size(); ++i) {
+    const int target = s.effects.bumps[i].capture;
+    if (target >= 0 && target < static_cast<int>(s.captures.size())) continue;
+    const toml::node* node = doc["effects"]["bump"][i]["capture"].node();
+    const toml::source_position at = node ? node->source().begin : toml::source_position{};
+    throw InputError(source, at.line, at.column,
+                     fmt::format("effects.bump {}.capture: {} is not in the plan (0..{})", i,
+                                 target, s.captures.size() - 1));
+  }
 }
 
 }  // namespace
@@ -159,7 +175,8 @@ Scenario ParseScenario(std::string_view toml_text, const std::string& source_nam
   Scenario s;
   s.source_name = source_name;
   TomlTableReader root(doc, "", source_name);
-  WithTable(root, "sensor", true, source_name, [&](TomlTableReader& r) { s.sensor = ReadSensor(r, source_name); });
+  WithTable(root, "sensor", true, source_name,
+            [&](TomlTableReader& r) { s.sensor = ReadSensor(r, source_name); });
   WithTable(root, "adc", true, source_name, [&](TomlTableReader& r) { s.adc = ReadAdc(r); });
   WithTable(root, "bench", false, source_name, [&](TomlTableReader& r) { s.bench = ReadBench(r); });
   WithTable(root, "effects", false, source_name, [&](TomlTableReader& r) {
@@ -173,7 +190,9 @@ Scenario ParseScenario(std::string_view toml_text, const std::string& source_nam
     r.Finish();
   }
   root.Finish();
-  // Cross-field checks (a bump naming a capture that does not exist, ...), without a position.
+  CheckBumpTargets(doc, s, source_name);
+  // Other cross-field checks (a bump naming a capture that does not exist, ...), without a
+  // position.
   if (std::string why = s.Validate(); !why.empty()) throw InputError(source_name, 0, 0, why);
   return s;
 }

@@ -63,10 +63,12 @@ Mounting VirtualBench::BeginCapture(const CapturePlan& plan, double start_s) {
   m.start_s = start_s;
   if (plan.kind == CaptureKind::kStatic) {
     // R * up = world z: world-up seen from the platform is `up`.
-    m.platform_rotation = RotationBetween(plan.up, Eigen::Vector3d::UnitZ()) * RandomPlacementRotation();
+    m.platform_rotation =
+        RotationBetween(plan.up, Eigen::Vector3d::UnitZ()) * RandomPlacementRotation();
     return m;
   }
-  m.platform_rotation = MountingRotation(plan.radial_axis, plan.up_axis) * RandomPlacementRotation();
+  m.platform_rotation =
+      MountingRotation(plan.radial_axis, plan.up_axis) * RandomPlacementRotation();
   m.true_radius_m = plan.radius_m + scenario_.effects.radius_offset_m;
   m.omega_rad_per_s = RpmToRadPerS(plan.rpm) * (1.0 + scenario_.effects.rpm_scale);
   m.phase_rad = std::uniform_real_distribution<double>(0.0, 2.0 * M_PI)(rng_);
@@ -147,8 +149,8 @@ Eigen::Vector3d VirtualBench::IdealRaw(const Eigen::Matrix3d& f_per_axis_mps2, d
     along_axes_mps2(i) = t.triangularView<Eigen::UnitUpper>().solve(f_per_axis_mps2.col(i))(i);
   }
   const double delta_c = TemperatureC(t_s) - scenario_.bench.temperature_c;
-  const Eigen::Vector3d scale =
-      model.scale_counts_per_mps2.cwiseProduct(Eigen::Vector3d::Ones() + fx.scale_temp_coeff_per_c * delta_c);
+  const Eigen::Vector3d scale = model.scale_counts_per_mps2.cwiseProduct(
+      Eigen::Vector3d::Ones() + fx.scale_temp_coeff_per_c * delta_c);
   const Eigen::Vector3d bias = model.bias_counts + fx.bias_temp_coeff_counts_per_c * delta_c +
                                fx.bias_drift_counts_per_s * t_s;
   return scale.cwiseProduct(along_axes_mps2) +

@@ -33,8 +33,8 @@ namespace accelcal::sim {
 
 // A half-sine acceleration pulse, placed on the session clock and given its direction.
 struct ActivePulse {
-  double start_s = 0.0;                                    // session clock, s
-  double duration_s = 0.1;                                 // s
+  double start_s = 0.0;                                       // session clock, s
+  double duration_s = 0.1;                                    // s
   Eigen::Vector3d peak_world_mps2 = Eigen::Vector3d::Zero();  // peak acceleration, world frame
   // Acceleration of the pulse at session time t_s (zero outside it), world frame, m/s^2.
   Eigen::Vector3d AccelerationWorld(double t_s) const;
@@ -63,8 +63,8 @@ class VirtualBench {
 
   // One continuous record of the plan's static poses turned by hand: the first pose held for
   // max(recording_quiet_start_s, its duration), each later pose held for its duration, and
-  // moves of move_s between them (smooth slerp plus hand jitter). Throws accelcal::Error when
-  // the plan has turntable captures.
+  // moves of move_s between them (smooth slerp plus hand jitter). A bump's at_s counts from the
+  // start of its pose's hold. Throws accelcal::Error when the plan has turntable captures.
   std::vector<Sample> SimulateRecording();
 
   // --- Lower-level pieces, for a live sample source that drives the bench step by step. ---
