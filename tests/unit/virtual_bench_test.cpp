@@ -209,7 +209,8 @@ TEST(VirtualBench, TiltedTurntableGivesOncePerRevolutionGravity) {
   s.effects.turntable_tilt_rad = 0.0;
   VirtualBench level(s);
   std::vector<double> level_x;
-  for (const Sample& smp : level.SimulateCaptureSet().at(0).samples) {
+  const Capture level_capture = level.SimulateCaptureSet().at(0);
+  for (const Sample& smp : level_capture.samples) {
     level_x.push_back(s.sensor.model.Calibrate(smp.raw_counts).x());
   }
   EXPECT_LT(OncePerRevolutionAmplitude(t_s, level_x, omega), 0.01);

@@ -40,8 +40,7 @@ std::string ValidateCapture(const CapturePlan& c, int i) {
   if (!(std::isnan(c.duration_s) || c.duration_s > 0.0))
     return where + ": duration_s must be positive";
   if (c.kind == CaptureKind::kStatic) {
-    if (!c.up.allFinite() || std::abs(c.up.norm() - 1.0) > 1e-9)
-      return where + ": up must be a unit vector";
+    if (!c.up.allFinite() || !(c.up.norm() > 0.0)) return where + ": up must be a non-zero vector";
     return {};
   }
   if (!(c.radius_m >= 0.0) || !std::isfinite(c.radius_m))

@@ -105,7 +105,8 @@ struct EffectsSpec {
 struct CapturePlan {
   CaptureKind kind = CaptureKind::kStatic;
   std::string label;
-  // Static: direction of "up" (the specific force at rest) in the platform frame, unit vector.
+  // Static: direction of "up" (the specific force at rest) in the platform frame; only its
+  // direction matters (ParseScenario normalizes it).
   Eigen::Vector3d up = Eigen::Vector3d::UnitZ();
   // Turntable: stated radius (m) and speed (rpm), and which sensor axes point radially outward
   // and up (perpendicular to each other).
