@@ -1,12 +1,101 @@
-#include "cli/commands.h"
+#include "cli/simulate.h"
+
+#include <fstream>
+#include <iostream>
+#include <memory>
+
+#include <nlohmann/json.hpp>
 
 #include "accelcal/error.h"
+#include "accelcal/io/capture_set_writer.h"
+#include "accelcal/sim/scenario.h"
+#include "accelcal/sim/virtual_bench.h"
+#include "cli/commands.h"
 
 namespace accelcal::cli {
+namespace {
+
+nlohmann::json TruthJson(const sim::Scenario& scenario) {
+  const SensorModel& m = scenario.sensor.model;
+  nlohmann::json j;
+  j["bias_counts"] = {m.bias_counts.x(), m.bias_counts.y(), m.bias_counts.z()};
+  j["scale_counts_per_mps2"] = {m.scale_counts_per_mps2.x(), m.scale_counts_per_mps2.y(),
+                                m.scale_counts_per_mps2.z()};
+  j["misalignment_rad"] = {{"yz", m.a_yz_rad}, {"zy", m.a_zy_rad}, {"zx", m.a_zx_rad}};
+  j["gravity_mps2"] = scenario.bench.gravity_mps2;
+  return j;
+}
+
+void WriteTruth(const std::string& path, const sim::Scenario& scenario) {
+  std::ofstream out(path, std::ios::trunc);
+  if (!out) throw Error("cannot open '" + path + "' for writing");
+  out << TruthJson(scenario).dump(2) << '\n';
+  out.close();
+  if (!out) throw Error("cannot write '" + path + "'");
+}
+
+// Writes with `write` to the file at `path`, or to `stdout_stream` for "-".
+template <typename WriteFn>
+void WriteOutput(const std::string& path, std::ostream& stdout_stream, WriteFn&& write) {
+  if (path == "-") {
+    write(stdout_stream);
+    stdout_stream.flush();
+    return;
+  }
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  if (!out) throw Error("cannot open '" + path + "' for writing");
+  try {
+    write(out);
+  } catch (const Error& e) {
+    throw Error("'" + path + "': " + e.what());
+  }
+  out.close();
+  if (!out) throw Error("cannot write '" + path + "'");
+}
+
+}  // namespace
+
+void RunSimulate(const SimulateOptions& options, std::ostream& stdout_stream) {
+  sim::Scenario scenario = sim::LoadScenario(options.scenario_path);
+  if (options.seed) scenario.bench.seed = *options.seed;
+  sim::VirtualBench bench(scenario);
+  if (options.recording) {
+    const std::vector<Sample> samples = bench.SimulateRecording();
+    WriteOutput(options.output_path, stdout_stream,
+                [&](std::ostream& out) { WriteRecording(out, samples); });
+  } else {
+    CaptureSet set;
+    set.source_name = options.scenario_path;
+    set.captures = bench.SimulateCaptureSet();
+    set.adc_range = scenario.adc.Range();
+    WriteOutput(options.output_path, stdout_stream,
+                [&](std::ostream& out) { WriteCaptureSet(out, set); });
+  }
+  if (!options.truth_path.empty()) WriteTruth(options.truth_path, scenario);
+}
 
 void SetupSimulateCommand(CLI::App& app) {
-  CLI::App* sub = app.add_subcommand("simulate", "(not yet written)");
-  sub->callback([] { throw Error("'simulate' is not implemented yet"); });
+  auto options = std::make_shared<SimulateOptions>();
+  CLI::App* sub = app.add_subcommand(
+      "simulate",
+      "Run a virtual-bench scenario (a simulated accelerometer on a simulated bench: static\n"
+      "poses and turntable runs, see scenarios/*.toml) and write the capture set it records,\n"
+      "as `accelcal fit` reads it, or one continuous hand-turned recording of its static poses.");
+  sub->footer(
+      "Examples:\n"
+      "  accelcal simulate scenarios/bench_default.toml -o captures.csv --truth truth.json\n"
+      "  accelcal simulate scenarios/bench_default.toml --seed 42 | head\n"
+      "  accelcal simulate static_only.toml --recording -o recording.txt");
+  sub->add_option("scenario", options->scenario_path, "Scenario file (TOML)")->required();
+  sub->add_option("-o,--output", options->output_path,
+                  "Output file; '-' or absent: standard output");
+  sub->add_flag("--recording", options->recording,
+                "Write one continuous recording (t ax ay az temp_c) of the static poses instead "
+                "of a capture set");
+  sub->add_option("--seed", options->seed, "Random seed, overriding the scenario's [bench] seed");
+  sub->add_option("--truth", options->truth_path,
+                  "Also write the true sensor parameters (JSON) to this file");
+  sub->callback([options] { RunSimulate(*options, std::cout); });
 }
 
 }  // namespace accelcal::cli

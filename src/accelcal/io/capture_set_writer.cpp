@@ -1,0 +1,88 @@
+#include "accelcal/io/capture_set_writer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+
+#include <fmt/format.h>
+
+#include "accelcal/error.h"
+
+namespace accelcal {
+namespace {
+
+// fmt's "{}" is the shortest text that reads back as the same double; 2048.0 prints "2048".
+std::string Number(double value) { return fmt::format("{}", value); }
+
+// Empty for NaN: the format's "unknown".
+std::string OptionalNumber(double value) {
+  return std::isnan(value) ? std::string() : Number(value);
+}
+
+void WriteRow(std::ostream& out, const Capture& c, const std::string& label, const Sample& s) {
+  const bool turntable = c.kind == CaptureKind::kTurntable;
+  out << c.id << ',' << CaptureKindToString(c.kind) << ',' << Number(s.t_s) << ','
+      << Number(s.raw_counts.x()) << ',' << Number(s.raw_counts.y()) << ','
+      << Number(s.raw_counts.z()) << ',' << OptionalNumber(s.temp_c) << ','
+      << (turntable ? OptionalNumber(c.radius_m) : "") << ','
+      << (turntable ? OptionalNumber(c.rpm) : "") << ',' << label << '\n';
+}
+
+}  // namespace
+
+std::string CsvField(const std::string& text) {
+  if (text.find_first_of(",\"") == std::string::npos) return text;
+  std::string quoted = "\"";
+  for (char ch : text) {
+    if (ch == '"') quoted += '"';
+    quoted += ch;
+  }
+  return quoted + '"';
+}
+
+void WriteCaptureSet(std::ostream& out, const CaptureSet& set) {
+  out << "# accelcal capture set\n";
+  if (set.adc_range) {
+    out << "# adc_range_counts = " << Number(set.adc_range->min_counts) << ','
+        << Number(set.adc_range->max_counts) << '\n';
+  }
+  out << "capture,kind,t,ax,ay,az,temp_c,radius_m,rpm,label\n";
+  for (const Capture& c : set.captures) {
+    // A line break would split a row: the format is one row per line.
+    if (c.label.find_first_of("\r\n") != std::string::npos) {
+      throw Error(fmt::format("capture {}: a label cannot hold a line break", c.id));
+    }
+    const std::string label = CsvField(c.label);
+    for (const Sample& s : c.samples) WriteRow(out, c, label, s);
+  }
+  if (!out) throw Error("cannot write the capture set");
+}
+
+void WriteCaptureSetFile(const std::string& path, const CaptureSet& set) {
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  if (!out) throw Error("cannot open '" + path + "' for writing");
+  try {
+    WriteCaptureSet(out, set);
+  } catch (const Error& e) {
+    throw Error("'" + path + "': " + e.what());
+  }
+  out.close();
+  if (!out) throw Error("cannot write '" + path + "'");
+}
+
+void WriteRecording(std::ostream& out, const std::vector<Sample>& samples) {
+  const bool has_temp = std::any_of(samples.begin(), samples.end(),
+                                    [](const Sample& s) { return !std::isnan(s.temp_c); });
+  out << "# accelcal recording: t in s, ax ay az in raw counts"
+      << (has_temp ? ", temp_c in degC" : "") << '\n';
+  out << (has_temp ? "# t ax ay az temp_c\n" : "# t ax ay az\n");
+  for (const Sample& s : samples) {
+    out << Number(s.t_s) << ' ' << Number(s.raw_counts.x()) << ' ' << Number(s.raw_counts.y())
+        << ' ' << Number(s.raw_counts.z());
+    if (has_temp) out << ' ' << Number(s.temp_c);
+    out << '\n';
+  }
+  if (!out) throw Error("cannot write the recording");
+}
+
+}  // namespace accelcal
