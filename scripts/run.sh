@@ -6,6 +6,7 @@ cd "$(dirname "$0")/.."
 ./scripts/setup.sh
 ./scripts/build.sh
 out=${ACCELCAL_DEMO_DIR:-$(mktemp -d)}
+mkdir -p "$out"
 ./build/accelcal simulate scenarios/bench_default.toml -o "$out/captures.csv" --truth "$out/truth.json"
 ./build/accelcal fit "$out/captures.csv" -o "$out/cal.json"
 echo

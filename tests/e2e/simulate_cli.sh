@@ -39,9 +39,9 @@ cmp -s "$work/default.csv" "$work/dash.csv" || fail "-o - differs from -o FILE"
 "$accelcal" simulate "$source_dir/scenarios/effects_demo.toml" -o "$work/effects.csv"
 [[ $(data_rows "$work/effects.csv") -eq 18000 ]] || fail "effects_demo row count"
 
-# A continuous recording: 30 s quiet start + 8 x (4 s move + 10 s hold) at 100 Hz.
+# A continuous recording: 60 s quiet start + 8 x (4 s move + 10 s hold) at 100 Hz.
 "$accelcal" simulate "$source_dir/scenarios/hand_recording.toml" --recording -o "$work/rec.txt"
-[[ $(grep -vc '^#' "$work/rec.txt") -eq 14200 ]] || fail "recording rows"
+[[ $(grep -vc '^#' "$work/rec.txt") -eq 17200 ]] || fail "recording rows"
 [[ $(grep -v '^#' "$work/rec.txt" | head -n 1 | wc -w) -eq 5 ]] || fail "recording columns"
 
 # A recording of a plan with turntable runs is refused (exit 1, one line).

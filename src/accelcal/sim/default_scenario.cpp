@@ -46,7 +46,7 @@ Scenario DefaultScenario() {
       StaticPose("z up", {0, 0, 1}),           StaticPose("z down", {0, 0, -1}),
       StaticPose("x up", {1, 0, 0}),           StaticPose("x down", {-1, 0, 0}),
       StaticPose("y up", {0, 1, 0}),           StaticPose("y down", {0, -1, 0}),
-      StaticPose("tilted +x+y+z", {1, 1, 1}),  StaticPose("tilted -x+y-z", {-1, 1, -1}),
+      StaticPose("tilted +x+y+z", {1, 1, 1}),  StaticPose("tilted +x+y-z", {1, 1, -1}),
       StaticPose("tilted +x-y+z", {1, -1, 1}),
   };
   const SensorAxis mountings[3][2] = {{SensorAxis::kPlusX, SensorAxis::kPlusZ},

@@ -1,0 +1,74 @@
+#!/usr/bin/env bash
+# End to end through the binary: simulate -> fit -> apply, and the exit codes and messages of
+# the failure paths. Called by ctest as: fit_cli.sh ACCELCAL SOURCE_DIR SHARED_DATA_DIR
+set -euo pipefail
+accelcal=$1 src=$2 data=$3
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+fail() { echo "FAIL: $*" >&2; exit 1; }
+
+# expect CODE CMD...: runs CMD, checks its exit status, keeps stdout/stderr in $work/out, err.
+expect() {
+  local want=$1; shift
+  set +e; "$@" >"$work/out" 2>"$work/err"; local got=$?; set -e
+  [ "$got" -eq "$want" ] || { cat "$work/err" >&2; fail "'$*' exited $got, expected $want"; }
+}
+
+# The happy path.
+expect 0 "$accelcal" simulate "$src/scenarios/bench_default.toml" -o "$work/c.csv" --truth "$work/truth.json"
+expect 0 "$accelcal" fit "$work/c.csv" -o "$work/cal.json"
+grep -q "fit converged: 18 captures" "$work/out" || fail "fit summary missing"
+grep -q "gravity: 9.80665 m/s^2 (standard gravity)" "$work/out" || fail "gravity not stated"
+grep -q '"format": "accelcal-calibration/1"' "$work/cal.json" || fail "calibration file format"
+grep -q '"effects": \[\]' "$work/cal.json" || fail "effects not listed"
+
+# Gravity from a location is stated in the output and the file.
+expect 0 "$accelcal" fit "$work/c.csv" --latitude -34.9 --altitude 43 -q -o "$work/cal2.json"
+[ ! -s "$work/out" ] || fail "--quiet printed something"
+grep -q '"source": "wgs84"' "$work/cal2.json" || fail "wgs84 gravity not recorded"
+
+# apply: a static pose's raw mean comes out near g.
+printf '# raw\n0 2051 2040 2400\n' | "$accelcal" apply "$work/cal.json" >"$work/applied"
+grep -q '^# raw$' "$work/applied" || fail "comment not passed through"
+[ "$(grep -vc '^#' "$work/applied")" -eq 1 ] || fail "apply output"
+
+# A malformed row: exit 1, one line naming file, line and column.
+sed '5s/^\([0-9]*\),static,\([^,]*\),[^,]*/\1,static,\2,12x/' "$work/c.csv" >"$work/bad.csv"
+expect 1 "$accelcal" fit "$work/bad.csv"
+[ "$(wc -l <"$work/err")" -eq 1 ] || fail "more than one line on stderr"
+grep -q "bad.csv:5:[0-9]*: column 'ax': '12x' is not a number" "$work/err" || { cat "$work/err"; fail "error text"; }
+
+# Too few captures: refused with the reason.
+head -n 4003 "$work/c.csv" >"$work/few.csv"
+expect 1 "$accelcal" fit "$work/few.csv"
+grep -q "no calibration: 4 usable captures; the nine parameters need at least 9" "$work/err" || { cat "$work/err"; fail "underdetermined text"; }
+
+# Bad usage: exit 2.
+expect 2 "$accelcal" fit
+expect 2 "$accelcal" fit "$work/c.csv" --gravity 9.8 --latitude 10
+expect 2 "$accelcal" fit "$work/c.csv" --recording "$work/c.csv"
+expect 2 "$accelcal" fit "$work/missing.csv"
+expect 2 "$accelcal" nonsense
+# A value that is surely a unit mistake: the job fails, saying why.
+expect 1 "$accelcal" fit "$work/c.csv" --gravity 980.665
+grep -q "gravity: gravity 980.665 m/s^2 is outside" "$work/err" || fail "gravity unit message"
+
+# apply with a damaged calibration file.
+head -c 200 "$work/cal.json" >"$work/broken.json"
+expect 1 "$accelcal" apply "$work/broken.json" </dev/null
+grep -q "broken.json:[0-9]*:[0-9]*: not valid JSON" "$work/err" || fail "broken calibration message"
+
+# The real recording (skipped when the shared data is absent).
+if [ -f "$data/imu_tk/xsens_acc.mat" ]; then
+  expect 0 "$accelcal" fit --recording "$data/imu_tk/xsens_acc.mat" --gravity 9.81744 -o "$work/imu.json"
+  grep -q "static intervals: 38 found" "$work/out" || fail "imu_tk intervals"
+fi
+
+# --help and --version.
+expect 0 "$accelcal" --version
+grep -q "^accelcal [0-9]" "$work/out" || fail "version"
+for sub in fit apply simulate; do
+  expect 0 "$accelcal" "$sub" --help
+  grep -q "Example" "$work/out" || fail "$sub --help has no example"
+done
+echo "fit_cli: all checks passed"
