@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include "test_support.h"
+
 #include "accelcal/error.h"
 
 namespace accelcal {
@@ -13,20 +15,12 @@ namespace {
 
 constexpr char kHeader[] = "capture,kind,t,ax,ay,az\n";
 
-// Parses `text` as "set.csv", expecting an InputError; returns it (a dummy after a failure).
+// Parses `text` expecting an InputError; returns it.
 InputError ParseFailure(const std::string& text) {
-  try {
-    ParseCaptureSet(text, "set.csv");
-  } catch (const InputError& e) {
-    return e;
-  }
-  ADD_FAILURE() << "no InputError for:\n" << text;
-  return InputError("", 0, 0, "");
+  return testing::ExpectInputError([&] { ParseCaptureSet(text, "set.csv"); }, text);
 }
 
-bool Contains(const std::string& text, const std::string& part) {
-  return text.find(part) != std::string::npos;
-}
+using testing::Contains;
 
 TEST(CaptureSetReader, ReadsCapturesInFileOrder) {
   const CaptureSet set = ParseCaptureSet(

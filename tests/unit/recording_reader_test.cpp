@@ -6,24 +6,19 @@
 
 #include <gtest/gtest.h>
 
+#include "test_support.h"
+
 #include "accelcal/error.h"
 
 namespace accelcal {
 namespace {
 
+// Parses `text` expecting an InputError; returns it.
 InputError ParseFailure(const std::string& text) {
-  try {
-    ParseRecording(text, "rec.txt");
-  } catch (const InputError& e) {
-    return e;
-  }
-  ADD_FAILURE() << "no InputError for:\n" << text;
-  return InputError("", 0, 0, "");
+  return testing::ExpectInputError([&] { ParseRecording(text, "rec.txt"); }, text);
 }
 
-bool Contains(const std::string& text, const std::string& part) {
-  return text.find(part) != std::string::npos;
-}
+using testing::Contains;
 
 TEST(RecordingReader, WhitespaceSeparatedAsImuTk) {
   const std::vector<Sample> s = ParseRecording(

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include "test_support.h"
+
 #include "accelcal/error.h"
 
 namespace accelcal::sim {
@@ -32,18 +34,10 @@ std::string Replace(std::string text, const std::string& from, const std::string
 
 // Parses `text` expecting an InputError; returns it.
 InputError ParseFails(const std::string& text) {
-  try {
-    ParseScenario(text, "test.toml");
-  } catch (const InputError& e) {
-    return e;
-  }
-  ADD_FAILURE() << "no InputError for:\n" << text;
-  return InputError("", 0, 0, "");
+  return testing::ExpectInputError([&] { ParseScenario(text, "test.toml"); }, text);
 }
 
-bool Contains(const std::string& text, const std::string& part) {
-  return text.find(part) != std::string::npos;
-}
+using testing::Contains;
 
 TEST(ScenarioParse, MinimalTakesTheDefaults) {
   const Scenario s = ParseScenario(kMinimal, "test.toml");

@@ -48,10 +48,14 @@ long ColumnAt(std::string_view line, size_t offset) {
   return column;
 }
 
-bool ParseDouble(std::string_view text, double* value) {
+namespace {
+
+// All of `text` as a number of type T. std::from_chars takes '-' but not '+'; a second sign
+// after '+' is still refused.
+template <typename T>
+bool ParseWhole(std::string_view text, T* value) {
   const char* first = text.data();
   const char* last = first + text.size();
-  // std::from_chars takes '-' but not '+'; a second sign after '+' is still refused below.
   if (first != last && *first == '+') {
     ++first;
     if (first != last && (*first == '+' || *first == '-')) return false;
@@ -61,17 +65,11 @@ bool ParseDouble(std::string_view text, double* value) {
   return ec == std::errc() && end == last;
 }
 
-bool ParseLong(std::string_view text, long* value) {
-  const char* first = text.data();
-  const char* last = first + text.size();
-  if (first != last && *first == '+') {
-    ++first;
-    if (first != last && (*first == '+' || *first == '-')) return false;
-  }
-  if (first == last) return false;
-  const auto [end, ec] = std::from_chars(first, last, *value);
-  return ec == std::errc() && end == last;
-}
+}  // namespace
+
+bool ParseDouble(std::string_view text, double* value) { return ParseWhole(text, value); }
+
+bool ParseLong(std::string_view text, long* value) { return ParseWhole(text, value); }
 
 std::string FormatNumber(double value) { return fmt::format("{}", value); }
 

@@ -164,16 +164,9 @@ CaptureRecord ReadCapture(const json& c, size_t index, const std::string& source
 
 }  // namespace
 
-Calibration MakeCalibration(const FitSummary& summary, const GravitySpec& gravity,
-                            const std::vector<Capture>& all, const std::string& source) {
-  Calibration cal;
-  cal.model = summary.Model();
-  cal.uncertainty = SensorModel::FromVector(summary.uncertainty.head(kNumBaseParameters));
-  cal.gravity = gravity;
-  cal.residual_rms_mps2 = summary.residual_rms_mps2;
-  cal.residual_max_abs_mps2 = summary.residual_max_abs_mps2;
-  cal.source = source;
-  cal.fit = FitJson(summary);
+std::vector<CaptureRecord> MakeCaptureRecords(const std::vector<Capture>& all,
+                                              const FitSummary& summary) {
+  std::vector<CaptureRecord> records;
   for (const Capture& c : all) {
     const CaptureStats stats = ComputeStats(c.samples);
     CaptureRecord r;
@@ -189,14 +182,28 @@ Calibration MakeCalibration(const FitSummary& summary, const GravitySpec& gravit
     r.t_end_s = c.samples.empty() ? kNaN : c.samples.back().t_s;
     r.mean_counts = stats.n > 0 ? stats.mean_counts : Eigen::Vector3d::Constant(kNaN);
     for (const CaptureResidual& res : summary.residuals) {
-      if (res.id == c.id && r.used) {
+      if (res.id == c.id && r.used && summary.IsUsable()) {
         r.residual_mps2 = res.residual_mps2;
         r.reference_mps2 = res.reference_mps2;
         r.sigma_mps2 = res.sigma_mps2;
       }
     }
-    cal.captures.push_back(r);
+    records.push_back(r);
   }
+  return records;
+}
+
+Calibration MakeCalibration(const FitSummary& summary, const GravitySpec& gravity,
+                            const std::vector<Capture>& all, const std::string& source) {
+  Calibration cal;
+  cal.model = summary.Model();
+  cal.uncertainty = SensorModel::FromVector(summary.uncertainty.head(kNumBaseParameters));
+  cal.gravity = gravity;
+  cal.residual_rms_mps2 = summary.residual_rms_mps2;
+  cal.residual_max_abs_mps2 = summary.residual_max_abs_mps2;
+  cal.source = source;
+  cal.fit = FitJson(summary);
+  cal.captures = MakeCaptureRecords(all, summary);
   return cal;
 }
 

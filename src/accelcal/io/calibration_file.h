@@ -51,6 +51,11 @@ struct Calibration {
   std::vector<CaptureRecord> captures;
 };
 
+// Every capture of `all` as a record: used ones with their residual from `summary` (when it is
+// usable), left-out ones with their reason.
+std::vector<CaptureRecord> MakeCaptureRecords(const std::vector<Capture>& all,
+                                              const FitSummary& summary);
+
 // The calibration that `summary` describes (must be usable), with every capture of `all`
 // listed: used ones with their residuals, left-out ones with their reason.
 Calibration MakeCalibration(const FitSummary& summary, const GravitySpec& gravity,

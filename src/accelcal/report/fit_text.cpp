@@ -52,29 +52,7 @@ std::string FormatCaptureTable(const std::vector<CaptureRecord>& captures) {
 }
 
 std::string FormatCaptureTable(const std::vector<Capture>& captures, const FitSummary& summary) {
-  std::vector<CaptureRecord> records;
-  for (const Capture& c : captures) {
-    CaptureRecord r;
-    r.id = c.id;
-    r.kind = c.kind;
-    r.label = c.label;
-    r.used = c.used();
-    r.reason = c.rejection_reason;
-    r.n_samples = static_cast<long>(c.samples.size());
-    r.radius_m = c.radius_m;
-    r.rpm = c.rpm;
-    if (!c.samples.empty()) {
-      r.t_start_s = c.samples.front().t_s;
-      r.t_end_s = c.samples.back().t_s;
-    }
-    for (const CaptureResidual& res : summary.residuals)
-      if (res.id == c.id && summary.IsUsable()) {
-        r.residual_mps2 = res.residual_mps2;
-        r.sigma_mps2 = res.sigma_mps2;
-      }
-    records.push_back(r);
-  }
-  return FormatCaptureTable(records);
+  return FormatCaptureTable(MakeCaptureRecords(captures, summary));
 }
 
 std::string FormatFitReport(const Calibration& cal, const FitSummary& summary) {
