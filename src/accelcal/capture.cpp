@@ -1,6 +1,7 @@
 #include "accelcal/capture.h"
 
 #include <algorithm>
+#include <array>
 
 namespace accelcal {
 
@@ -16,6 +17,25 @@ std::optional<CaptureKind> StringToCaptureKind(std::string_view text) {
   if (text == "static") return CaptureKind::kStatic;
   if (text == "turntable") return CaptureKind::kTurntable;
   return std::nullopt;
+}
+
+namespace {
+constexpr std::array<std::string_view, 6> kAxisNames = {"+x", "-x", "+y", "-y", "+z", "-z"};
+}  // namespace
+
+std::string_view SensorAxisToString(SensorAxis axis) { return kAxisNames[static_cast<int>(axis)]; }
+
+std::optional<SensorAxis> StringToSensorAxis(std::string_view text) {
+  for (std::size_t i = 0; i < kAxisNames.size(); ++i)
+    if (kAxisNames[i] == text) return static_cast<SensorAxis>(i);
+  return std::nullopt;
+}
+
+Eigen::Vector3d SensorAxisVector(SensorAxis axis) {
+  const int i = static_cast<int>(axis);
+  Eigen::Vector3d v = Eigen::Vector3d::Zero();
+  v(i / 2) = (i % 2 == 0) ? 1.0 : -1.0;
+  return v;
 }
 
 void CaptureStats::Add(const Sample& s) {

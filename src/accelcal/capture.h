@@ -25,6 +25,14 @@ std::string_view CaptureKindToString(CaptureKind kind);
 // Inverse of CaptureKindToString; nullopt for anything else.
 std::optional<CaptureKind> StringToCaptureKind(std::string_view text);
 
+// A signed sensor axis: "+x", "-x", "+y", "-y", "+z", "-z".
+enum class SensorAxis { kPlusX, kMinusX, kPlusY, kMinusY, kPlusZ, kMinusZ };
+
+std::string_view SensorAxisToString(SensorAxis axis);
+std::optional<SensorAxis> StringToSensorAxis(std::string_view text);
+// Unit vector of `axis` in sensor (platform) coordinates.
+Eigen::Vector3d SensorAxisVector(SensorAxis axis);
+
 struct Sample {
   double t_s = 0.0;
   Eigen::Vector3d raw_counts = Eigen::Vector3d::Zero();
@@ -64,6 +72,9 @@ struct Capture {
   std::string label;
   double radius_m = kNaN;  // turntable only: distance from the spin axis to the sensor, m
   double rpm = kNaN;       // turntable only: table speed, revolutions per minute
+  // Turntable only, when known: the sensor axis that pointed up (the others lie in the table's
+  // plane). Needed only by effects that depend on the mounting (the size effect).
+  std::optional<SensorAxis> up_axis;
   std::vector<Sample> samples;
 
   // When the capture was left out of the fit: why (set by screening); empty when usable.

@@ -13,7 +13,7 @@ fail() { echo "FAIL: $*" >&2; exit 1; }
 # Data rows of a capture set: every line that is neither a comment nor the header.
 data_rows() { grep -v '^#' "$1" | tail -n +2 | wc -l; }
 
-header='capture,kind,t,ax,ay,az,temp_c,radius_m,rpm,label'
+header='capture,kind,t,ax,ay,az,temp_c,radius_m,rpm,label,up_axis'
 
 # The default bench: 18 captures x 10 s x 100 Hz.
 "$accelcal" simulate "$source_dir/scenarios/bench_default.toml" -o "$work/default.csv" \

@@ -400,3 +400,40 @@ TEST(CaptureSetReader, ReadsAFile) {
 
 }  // namespace
 }  // namespace accelcal
+
+namespace accelcal {
+namespace {
+
+TEST(CaptureSetReader, ReadsTheTurntableUpAxis) {
+  const CaptureSet set = ParseCaptureSet(
+      "capture,kind,t,ax,ay,az,radius_m,rpm,up_axis\n"
+      "1,turntable,0,1,2,3,0.1,120,-y\n1,turntable,0.01,1,2,3,0.1,120,-y\n"
+      "2,turntable,1,1,2,3,0.1,120,\n", "set.csv");
+  ASSERT_EQ(set.captures.size(), 2u);
+  ASSERT_TRUE(set.captures[0].up_axis.has_value());
+  EXPECT_EQ(*set.captures[0].up_axis, SensorAxis::kMinusY);
+  EXPECT_FALSE(set.captures[1].up_axis.has_value());
+}
+
+TEST(CaptureSetReader, RefusesABadOrMisplacedUpAxis) {
+  InputError e = testing::ExpectInputError(
+      [] { ParseCaptureSet("capture,kind,t,ax,ay,az,radius_m,rpm,up_axis\n1,turntable,0,1,2,3,0.1,120,up\n", "s.csv"); },
+      "bad axis");
+  EXPECT_EQ(e.line(), 2);
+  EXPECT_EQ(e.column(), 30);
+  EXPECT_NE(std::string(e.what()).find("'up' is not one of +x"), std::string::npos) << e.what();
+  e = testing::ExpectInputError(
+      [] { ParseCaptureSet("capture,kind,t,ax,ay,az,up_axis\n1,static,0,1,2,3,+z\n", "s.csv"); },
+      "static row");
+  EXPECT_NE(std::string(e.what()).find("must be empty on a static row"), std::string::npos) << e.what();
+  e = testing::ExpectInputError(
+      [] {
+        ParseCaptureSet("capture,kind,t,ax,ay,az,radius_m,rpm,up_axis\n1,turntable,0,1,2,3,0.1,120,+z\n"
+                        "1,turntable,0.1,1,2,3,0.1,120,+x\n", "s.csv");
+      },
+      "differs");
+  EXPECT_NE(std::string(e.what()).find("column 'up_axis': '+x' differs from '+z'"), std::string::npos) << e.what();
+}
+
+}  // namespace
+}  // namespace accelcal

@@ -32,6 +32,7 @@ CaptureSet Example() {
   b.label = "+x radial, r = 0.1 m";
   b.radius_m = 0.1;
   b.rpm = 120.0;
+  b.up_axis = SensorAxis::kMinusY;
   b.samples = {At(30.0, 1500, 2040, 2400)};
   Capture c;
   c.id = 3;
@@ -49,11 +50,11 @@ TEST(CaptureSetWriter, WritesTheDocumentedFormatExactly) {
   EXPECT_EQ(out.str(),
             "# accelcal capture set\n"
             "# adc_range_counts = 0,4095\n"
-            "capture,kind,t,ax,ay,az,temp_c,radius_m,rpm,label\n"
-            "1,static,0,2048,2040,2389,25,,,z up\n"
-            "1,static,0.01,2049,2041.5,2390,25.125,,,z up\n"
-            "2,turntable,30,1500,2040,2400,,0.1,120,\"+x radial, r = 0.1 m\"\n"
-            "3,static,1e-07,-12,0,4095,24.5,,,\"the \"\"odd\"\" one\"\n");
+            "capture,kind,t,ax,ay,az,temp_c,radius_m,rpm,label,up_axis\n"
+            "1,static,0,2048,2040,2389,25,,,z up,\n"
+            "1,static,0.01,2049,2041.5,2390,25.125,,,z up,\n"
+            "2,turntable,30,1500,2040,2400,,0.1,120,\"+x radial, r = 0.1 m\",-y\n"
+            "3,static,1e-07,-12,0,4095,24.5,,,\"the \"\"odd\"\" one\",\n");
 }
 
 TEST(CaptureSetWriter, LeavesOutTheAdcRangeWhenUnknown) {

@@ -9,6 +9,7 @@ FitCapture MakeFitCapture(const Capture& capture) {
   c.kind = capture.kind;
   c.radius_m = capture.radius_m;
   c.rpm = capture.rpm;
+  c.up_axis = capture.up_axis;
   c.n_samples = stats.n;
   c.mean_counts = stats.mean_counts;
   c.mean_t_s = stats.mean_t_s;

@@ -19,6 +19,7 @@ struct FitCapture {
   long n_samples = 0;
   double radius_m = kNaN;  // turntable only, as stated by the operator
   double rpm = kNaN;       // turntable only, as stated by the operator
+  std::optional<SensorAxis> up_axis;  // turntable only, when known: the axis that pointed up
   double mean_t_s = kNaN;
   double mean_temp_c = kNaN;
 };

@@ -18,9 +18,11 @@ namespace {
 
 using detail::CsvField;
 
-enum Column : int { kCapture, kKind, kT, kAx, kAy, kAz, kTempC, kRadiusM, kRpm, kLabel, kNumColumns };
+enum Column : int {
+  kCapture, kKind, kT, kAx, kAy, kAz, kTempC, kRadiusM, kRpm, kLabel, kUpAxis, kNumColumns
+};
 constexpr std::array<std::string_view, kNumColumns> kColumnNames = {
-    "capture", "kind", "t", "ax", "ay", "az", "temp_c", "radius_m", "rpm", "label"};
+    "capture", "kind", "t", "ax", "ay", "az", "temp_c", "radius_m", "rpm", "label", "up_axis"};
 constexpr int kNumRequiredColumns = kTempC;  // the columns before temp_c are required
 
 constexpr std::string_view kAdcRangeKey = "adc_range_counts";
@@ -33,6 +35,7 @@ struct Row {
   double radius_m = kNaN;
   double rpm = kNaN;
   std::string label;
+  std::optional<SensorAxis> up_axis;
 };
 
 // Line span of a capture already read, to report a non-contiguous id.
@@ -156,7 +159,7 @@ void CaptureSetParser::ParseHeader() {
     if (c == kNumColumns) {
       FailAt(fields_[i].offset,
              fmt::format("unknown column '{}' in the header (known: capture, kind, t, ax, ay, "
-                         "az, temp_c, radius_m, rpm, label)", name));
+                         "az, temp_c, radius_m, rpm, label, up_axis)", name));
     }
     if (column_index_[c] >= 0) {
       FailAt(fields_[i].offset, fmt::format("column '{}' appears twice in the header", name));
@@ -244,6 +247,7 @@ Row CaptureSetParser::ParseRow() const {
   } else {
     CheckStaticColumnEmpty(kRadiusM);
     CheckStaticColumnEmpty(kRpm);
+    CheckStaticColumnEmpty(kUpAxis);
   }
   if (const CsvField* label = Field(kLabel)) row.label = label->value;
   return row;
@@ -263,6 +267,13 @@ void CaptureSetParser::ParseTurntableColumns(Row* row) const {
   }
   row->radius_m = PositiveNumber(kRadiusM);
   row->rpm = PositiveNumber(kRpm);
+  if (const CsvField* up = Field(kUpAxis); up != nullptr && !up->value.empty()) {
+    row->up_axis = StringToSensorAxis(up->value);
+    if (!row->up_axis) {
+      FailAt(up->offset, fmt::format("column 'up_axis': '{}' is not one of +x, -x, +y, -y, +z, -z",
+                                     up->value));
+    }
+  }
 }
 
 void CaptureSetParser::CheckStaticColumnEmpty(Column c) const {
@@ -308,6 +319,7 @@ void CaptureSetParser::StartCapture(Row row) {
   capture.label = row.label;
   capture.radius_m = row.radius_m;
   capture.rpm = row.rpm;
+  capture.up_axis = row.up_axis;
   capture.samples.push_back(row.sample);
   first_row_ = std::move(row);
   first_row_line_ = lines_.line_number();
@@ -316,8 +328,8 @@ void CaptureSetParser::StartCapture(Row row) {
 void CaptureSetParser::CheckSameAsFirstRow(const Row& row) const {
   const auto differs = [&](Column c, const std::string& here, const std::string& first) {
     FailAtField(c, fmt::format("column '{}': '{}' differs from '{}' on line {}, the first row of "
-                               "capture {} (kind, radius_m, rpm and label must be the same on "
-                               "all rows of a capture)",
+                               "capture {} (kind, radius_m, rpm, label and up_axis must be the "
+                               "same on all rows of a capture)",
                                kColumnNames[c], here, first, first_row_line_, row.id));
   };
   if (row.kind != first_row_.kind) {
@@ -332,6 +344,12 @@ void CaptureSetParser::CheckSameAsFirstRow(const Row& row) const {
     differs(kRpm, Field(kRpm)->value, detail::FormatNumber(first_row_.rpm));
   }
   if (row.label != first_row_.label) differs(kLabel, row.label, first_row_.label);
+  if (row.up_axis != first_row_.up_axis) {
+    const auto name = [](const std::optional<SensorAxis>& a) {
+      return a ? std::string(SensorAxisToString(*a)) : std::string();
+    };
+    differs(kUpAxis, name(row.up_axis), name(first_row_.up_axis));
+  }
 }
 
 }  // namespace

@@ -5,7 +5,7 @@
 //
 //   # adc_range_counts = 0,4095          <- optional metadata (sets CaptureSet::adc_range)
 //   # any other comment
-//   capture,kind,t,ax,ay,az,temp_c,radius_m,rpm,label
+//   capture,kind,t,ax,ay,az,temp_c,radius_m,rpm,label,up_axis
 //   1,static,0.00,2051,2013,2934,24.1,,,"z up, on the granite"
 //   1,static,0.01,2050,2012,2935,24.1,,,"z up, on the granite"
 //   2,turntable,12.50,2040,2790,2930,,0.15,60,spin 60 rpm
@@ -15,10 +15,10 @@
 //   around each token; MIN < MAX, finite, counts, inclusive) is metadata; a malformed one, or a
 //   second one, is an error.
 // - The first other line is the header. It names the columns in any order. Required:
-//   capture, kind, t, ax, ay, az. Optional: temp_c, radius_m, rpm, label. Unknown and
+//   capture, kind, t, ax, ay, az. Optional: temp_c, radius_m, rpm, label, up_axis. Unknown and
 //   repeated names are errors.
 // - capture: integer id (0 .. INT_MAX). The rows of one capture are contiguous.
-// - kind: "static" or "turntable"; kind, radius_m, rpm and label are the same on all rows of
+// - kind: "static" or "turntable"; kind, radius_m, rpm, label and up_axis are the same on all rows of
 //   a capture.
 // - t: seconds, finite, never decreasing down the file (one session clock).
 // - ax, ay, az: raw readings, ADC counts. "nan" and "inf" are accepted (any case): they are
@@ -27,6 +27,7 @@
 // - temp_c: degC; empty or "nan" means unknown (NaN).
 // - radius_m (m) and rpm (revolutions per minute): required on turntable rows (finite, > 0);
 //   empty or absent on static rows.
+// - up_axis: turntable rows only, optional: the sensor axis that pointed up ("+x" ... "-z").
 // - label: free text. RFC 4180 quoting when it holds commas: "a, b" and "say ""hi""".
 //   A quoted field cannot span lines.
 // - Blanks around fields are ignored. Line endings may be LF or CRLF; a UTF-8 byte-order mark

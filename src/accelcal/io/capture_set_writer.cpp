@@ -25,7 +25,8 @@ void WriteRow(std::ostream& out, const Capture& c, const std::string& label, con
       << Number(s.raw_counts.x()) << ',' << Number(s.raw_counts.y()) << ','
       << Number(s.raw_counts.z()) << ',' << OptionalNumber(s.temp_c) << ','
       << (turntable ? OptionalNumber(c.radius_m) : "") << ','
-      << (turntable ? OptionalNumber(c.rpm) : "") << ',' << label << '\n';
+      << (turntable ? OptionalNumber(c.rpm) : "") << ',' << label << ','
+      << (turntable && c.up_axis ? SensorAxisToString(*c.up_axis) : "") << '\n';
 }
 
 }  // namespace
@@ -46,7 +47,7 @@ void WriteCaptureSet(std::ostream& out, const CaptureSet& set) {
     out << "# adc_range_counts = " << Number(set.adc_range->min_counts) << ','
         << Number(set.adc_range->max_counts) << '\n';
   }
-  out << "capture,kind,t,ax,ay,az,temp_c,radius_m,rpm,label\n";
+  out << "capture,kind,t,ax,ay,az,temp_c,radius_m,rpm,label,up_axis\n";
   for (const Capture& c : set.captures) {
     // A line break would split a row: the format is one row per line.
     if (c.label.find_first_of("\r\n") != std::string::npos) {

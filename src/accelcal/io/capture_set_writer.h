@@ -3,7 +3,7 @@
 // Capture-set format (the reader follows it exactly):
 //   # accelcal capture set
 //   # adc_range_counts = MIN,MAX                    (only when the set carries an ADC range)
-//   capture,kind,t,ax,ay,az,temp_c,radius_m,rpm,label
+//   capture,kind,t,ax,ay,az,temp_c,radius_m,rpm,label,up_axis
 //   1,static,0,2051,2040,2403,25,,,z up
 //   ...
 // Lines starting with '#' are comments. One row per sample; the rows of a capture are

@@ -8,7 +8,6 @@
 namespace accelcal::sim {
 namespace {
 
-constexpr std::array<std::string_view, 6> kAxisNames = {"+x", "-x", "+y", "-y", "+z", "-z"};
 
 bool AllFinite(const Eigen::Vector3d& v) { return v.allFinite(); }
 
@@ -54,21 +53,6 @@ std::string ValidateCapture(const CapturePlan& c, int i) {
 
 }  // namespace
 
-std::string_view SensorAxisToString(SensorAxis axis) { return kAxisNames[static_cast<int>(axis)]; }
-
-std::optional<SensorAxis> StringToSensorAxis(std::string_view text) {
-  for (std::size_t i = 0; i < kAxisNames.size(); ++i) {
-    if (kAxisNames[i] == text) return static_cast<SensorAxis>(i);
-  }
-  return std::nullopt;
-}
-
-Eigen::Vector3d SensorAxisVector(SensorAxis axis) {
-  const int i = static_cast<int>(axis);
-  Eigen::Vector3d v = Eigen::Vector3d::Zero();
-  v(i / 2) = (i % 2 == 0) ? 1.0 : -1.0;
-  return v;
-}
 
 double AdcSpec::MinCounts() const { return is_signed ? -std::ldexp(1.0, bits - 1) : 0.0; }
 

@@ -24,13 +24,11 @@
 
 namespace accelcal::sim {
 
-// A signed sensor axis, as typed in TOML: "+x", "-x", "+y", "-y", "+z", "-z".
-enum class SensorAxis { kPlusX, kMinusX, kPlusY, kMinusY, kPlusZ, kMinusZ };
-
-std::string_view SensorAxisToString(SensorAxis axis);
-std::optional<SensorAxis> StringToSensorAxis(std::string_view text);
-// Unit vector of `axis` in sensor (platform) coordinates.
-Eigen::Vector3d SensorAxisVector(SensorAxis axis);
+// Signed sensor axes ("+x" ... "-z") live in capture.h; the bench uses the same names.
+using accelcal::SensorAxis;
+using accelcal::SensorAxisToString;
+using accelcal::StringToSensorAxis;
+using accelcal::SensorAxisVector;
 
 // [sensor]: the true parameters the calibration should recover, plus noise and rate.
 struct SensorSpec {
@@ -62,11 +60,15 @@ struct BenchSpec {
   double move_s = 4.0;                    // continuous recording: time to turn between poses, s
 };
 
-// Temperature of the sensor over the session: a linear ramp from start_c (t = 0) to end_c
-// (end of the session), degC.
+// Temperature of the sensor over the session, degC: from start_c at t = 0 towards end_c.
+// With warmup_tau_s = 0 a linear ramp that reaches end_c at the end of the session; with
+// warmup_tau_s > 0 the exponential approach of a part warming up after power-on,
+// start + (end - start)(1 - exp(-t / tau)): not linear in time, so a temperature effect can be
+// told apart from a drift in time.
 struct TemperatureRamp {
   double start_c = 25.0;
   double end_c = 25.0;
+  double warmup_tau_s = 0.0;
 };
 
 // [[effects.bump]]: a half-sine acceleration pulse in a random horizontal direction.

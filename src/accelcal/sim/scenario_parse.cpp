@@ -75,7 +75,8 @@ EffectsSpec ReadEffects(TomlTableReader& r, const std::string& source, double am
   e.scale_temp_coeff_per_c = r.Vector3("scale_temp_coeff_per_c", zero);
   if (const toml::table* t = r.Table("temperature")) {
     TomlTableReader tr(*t, "effects.temperature", source);
-    e.temperature = TemperatureRamp{tr.Number("start_c", ambient_c), tr.Number("end_c", ambient_c)};
+    e.temperature = TemperatureRamp{tr.Number("start_c", ambient_c), tr.Number("end_c", ambient_c),
+                                    tr.Number("warmup_tau_s", 0.0, NumberRange::kNonNegative)};
     tr.Finish();
   }
   e.bias_drift_counts_per_s = r.Vector3("bias_drift_counts_per_s", zero);

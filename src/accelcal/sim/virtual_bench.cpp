@@ -134,6 +134,8 @@ Eigen::Matrix3d VirtualBench::SpecificForcePerAxis(const Mounting& mounting, dou
 double VirtualBench::TemperatureC(double t_s) const {
   const std::optional<TemperatureRamp>& ramp = scenario_.effects.temperature;
   if (!ramp) return scenario_.bench.temperature_c;
+  if (ramp->warmup_tau_s > 0.0)
+    return ramp->start_c + (ramp->end_c - ramp->start_c) * (1.0 - std::exp(-std::max(t_s, 0.0) / ramp->warmup_tau_s));
   const double fraction =
       session_duration_s_ > 0.0 ? std::clamp(t_s / session_duration_s_, 0.0, 1.0) : 0.0;
   return ramp->start_c + (ramp->end_c - ramp->start_c) * fraction;
@@ -191,6 +193,7 @@ std::vector<Capture> VirtualBench::SimulateCaptureSet() {
     if (plan.kind == CaptureKind::kTurntable) {
       c.radius_m = plan.radius_m;  // as stated on the bench, not the true radius
       c.rpm = plan.rpm;
+      c.up_axis = plan.up_axis;
     }
     const long n = std::lround(duration_s * rate_hz);
     c.samples.reserve(static_cast<std::size_t>(n));
