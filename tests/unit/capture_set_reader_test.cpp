@@ -420,7 +420,7 @@ TEST(CaptureSetReader, RefusesABadOrMisplacedUpAxis) {
       [] { ParseCaptureSet("capture,kind,t,ax,ay,az,radius_m,rpm,up_axis\n1,turntable,0,1,2,3,0.1,120,up\n", "s.csv"); },
       "bad axis");
   EXPECT_EQ(e.line(), 2);
-  EXPECT_EQ(e.column(), 30);
+  EXPECT_EQ(e.column(), 29);
   EXPECT_NE(std::string(e.what()).find("'up' is not one of +x"), std::string::npos) << e.what();
   e = testing::ExpectInputError(
       [] { ParseCaptureSet("capture,kind,t,ax,ay,az,up_axis\n1,static,0,1,2,3,+z\n", "s.csv"); },

@@ -84,7 +84,7 @@ TEST(CaptureSetWriter, NumbersRoundTrip) {
   std::vector<std::string> fields;
   std::stringstream row(line);
   for (std::string f; std::getline(row, f, ',');) fields.push_back(f);
-  ASSERT_EQ(fields.size(), 9u) << line;  // the empty label leaves no tenth field
+  ASSERT_EQ(fields.size(), 10u) << line;  // empty label, empty up_axis: no eleventh field
   EXPECT_EQ(std::stod(fields[2]), 123.456789012345);
   EXPECT_EQ(std::stod(fields[3]), 1.0 / 7.0);
   EXPECT_EQ(std::stod(fields[5]), 1e300);
