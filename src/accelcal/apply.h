@@ -1,23 +1,49 @@
-// Applying a calibration to raw samples: a^p = T K^-1 (raw - b), m/s^2 (sensor_model.h).
+// Applying a calibration to raw samples: a^p = T K^-1 (raw' - b), m/s^2 (sensor_model.h), where
+// raw' is the reading with the calibration's sensor effects removed (quadratic nonlinearity,
+// temperature effects; effect.h). Effects of the bench during calibration (radius, speed, size
+// effect) and the session's bias drift are not properties of later readings: they are listed
+// in the file for the record and not applied.
 #pragma once
 
 #include <functional>
 #include <iosfwd>
 #include <string>
+#include <vector>
 
 #include <Eigen/Core>
 
+#include "accelcal/diagnosis/effect.h"
 #include "accelcal/error.h"
 #include "accelcal/io/calibration_file.h"
 
 namespace accelcal {
 
-// Throws accelcal::Error when `cal` lists an effect this version cannot apply: applying the
-// base model alone would give silently wrong numbers.
-void CheckApplicable(const Calibration& cal);
+class CalibrationApplier {
+ public:
+  // Throws accelcal::Error for an effect this version does not know or whose parameters are
+  // malformed: applying the base model alone would give silently wrong numbers.
+  explicit CalibrationApplier(const Calibration& cal);
 
-// The calibrated specific force of one raw reading, m/s^2 (platform frame).
-Eigen::Vector3d ApplyCalibration(const Calibration& cal, const Sample& sample);
+  // True when an applied effect depends on temperature (readings must carry temp_c).
+  bool needs_temperature() const { return needs_temperature_; }
+  // Effects listed in the file but not applied to readings, with why (for the user).
+  const std::vector<std::string>& not_applied() const { return not_applied_; }
+
+  // The calibrated specific force of one reading, m/s^2 (platform frame). Throws
+  // accelcal::Error when the sample lacks a temperature the calibration needs.
+  Eigen::Vector3d Apply(const Sample& sample) const;
+
+ private:
+  struct AppliedEffect {
+    const Effect* effect;  // static, from AllEffects()
+    std::vector<double> theta;
+  };
+  SensorModel model_;
+  EffectContext context_;
+  std::vector<AppliedEffect> effects_;
+  std::vector<std::string> not_applied_;
+  bool needs_temperature_ = false;
+};
 
 struct ApplyStreamResult {
   long lines = 0;      // lines read
@@ -27,8 +53,9 @@ struct ApplyStreamResult {
 
 // Reads lines `t ax ay az [temp_c]` (the sample protocol: blanks or commas, '#' comments) from
 // `in` and writes `t ax ay az [temp_c]` with ax ay az in m/s^2 to `out`; comments are passed
-// through. A malformed line goes to `on_error` and is skipped; the stream goes on.
-ApplyStreamResult ApplyStream(std::istream& in, std::ostream& out, const Calibration& cal,
+// through. A malformed line (or one without the temperature the calibration needs) goes to
+// `on_error` and is skipped; the stream goes on.
+ApplyStreamResult ApplyStream(std::istream& in, std::ostream& out, const CalibrationApplier& applier,
                               const std::string& source_name,
                               const std::function<void(const InputError&)>& on_error);
 

@@ -122,7 +122,7 @@ TEST(Pipeline, CalibrationFileRoundTripsAndApplies) {
   std::istringstream in(fmt::format("# header\n1.5 {} {} {}\n", mean.x(), mean.y(), mean.z()));
   std::ostringstream out;
   int errors = 0;
-  const ApplyStreamResult r = ApplyStream(in, out, back, "in", [&](const InputError&) { ++errors; });
+  const ApplyStreamResult r = ApplyStream(in, out, CalibrationApplier(back), "in", [&](const InputError&) { ++errors; });
   EXPECT_EQ(r.samples, 1);
   EXPECT_EQ(errors, 0);
   double t, ax, ay, az;
@@ -139,7 +139,7 @@ TEST(Pipeline, ApplyReportsMalformedLinesAndGoesOn) {
   std::istringstream in("0 2048 2048 2448\n0.1 2048 x 2448\n0.2 2048 2048 nan\n0.3,2088,2048,2048\n");
   std::ostringstream out;
   std::vector<std::string> errors;
-  const ApplyStreamResult r = ApplyStream(in, out, cal, "in", [&](const InputError& e) { errors.push_back(e.what()); });
+  const ApplyStreamResult r = ApplyStream(in, out, CalibrationApplier(cal), "in", [&](const InputError& e) { errors.push_back(e.what()); });
   EXPECT_EQ(r.samples, 2);
   EXPECT_EQ(r.malformed, 2);
   ASSERT_EQ(errors.size(), 2u);
@@ -150,10 +150,10 @@ TEST(Pipeline, ApplyReportsMalformedLinesAndGoesOn) {
 
 TEST(Pipeline, ApplyRefusesEffectsItCannotApply) {
   Calibration cal;
-  cal.effects = nlohmann::json::array({{{"name", "quadratic_nonlinearity"}}});
-  std::istringstream in("0 1 2 3\n");
-  std::ostringstream out;
-  EXPECT_THROW(ApplyStream(in, out, cal, "in", [](const InputError&) {}), Error);
+  cal.effects = nlohmann::json::array({{{"name", "flux_capacitor"}}});
+  EXPECT_THROW(CalibrationApplier{cal}, Error);
+  cal.effects = nlohmann::json::array({{{"name", "quadratic_nonlinearity"}, {"parameters", {{"q_x", 0.1}}}}});
+  EXPECT_THROW(CalibrationApplier{cal}, Error);  // q_y, q_z missing
 }
 
 }  // namespace

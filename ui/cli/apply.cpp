@@ -19,10 +19,13 @@ struct ApplyCommandOptions {
 
 void RunApply(const ApplyCommandOptions& o) {
   const Calibration cal = ReadCalibrationFile(o.calibration_path);
+  const CalibrationApplier applier(cal);
+  for (const std::string& n : applier.not_applied())
+    fmt::print(stderr, "accelcal: note: not applied to readings: {}\n", n);
   std::ios::sync_with_stdio(false);
   long reported = 0;
   const ApplyStreamResult r =
-      ApplyStream(std::cin, std::cout, cal, "<stdin>", [&](const InputError& e) {
+      ApplyStream(std::cin, std::cout, applier, "<stdin>", [&](const InputError& e) {
         if (reported++ < o.max_reported) fmt::print(stderr, "accelcal: skipped {}\n", e.what());
       });
   std::cout.flush();

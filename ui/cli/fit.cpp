@@ -5,6 +5,7 @@
 #include <fmt/core.h>
 
 #include "accelcal/capture_screening.h"
+#include "accelcal/diagnosis/diagnosis.h"
 #include "accelcal/error.h"
 #include "accelcal/fit/calibration_fit.h"
 #include "accelcal/io/calibration_file.h"
@@ -26,6 +27,7 @@ struct FitCommandOptions {
   int min_samples = ScreeningOptions{}.min_samples;
   StaticDetectorOptions detector;
   bool quiet = false;
+  bool no_diagnose = false;
   GravityFlags gravity;
 };
 
@@ -63,7 +65,13 @@ void RunFit(const FitCommandOptions& o) {
 
   FitOptions fit;
   fit.gravity = gravity;
-  const FitSummary summary = FitCalibration(loaded.captures, fit);
+  std::vector<FitCapture> used;
+  for (const Capture& c : loaded.captures)
+    if (c.used()) used.push_back(MakeFitCapture(c));
+  DiagnosisOptions diagnosis_options;
+  diagnosis_options.max_effects = o.no_diagnose ? 0 : diagnosis_options.max_effects;
+  const DiagnosisReport diagnosis = Diagnose(used, fit, diagnosis_options);
+  const FitSummary& summary = diagnosis.final_fit;
 
   if (!o.quiet) {
     std::cout << fmt::format("source: {}\ngravity: {}\n", loaded.source, gravity.Describe());
@@ -73,8 +81,17 @@ void RunFit(const FitCommandOptions& o) {
     if (!o.quiet) std::cout << FormatCaptureTable(loaded.captures, summary);
     throw Error(fmt::format("no calibration: {}", summary.message));
   }
-  const Calibration cal = MakeCalibration(summary, gravity, loaded.captures, loaded.source);
-  if (!o.quiet) std::cout << FormatFitReport(cal, summary);
+  Calibration cal = MakeCalibration(summary, gravity, loaded.captures, loaded.source);
+  cal.effects = EffectsToJson(diagnosis);
+  cal.fit["diagnosis"] = {{"ran", !o.no_diagnose},
+                          {"base_residual_rms_mps2", diagnosis.base.residual_rms_mps2},
+                          {"noise_rms_mps2", diagnosis.noise_rms_mps2},
+                          {"consistent_with_noise", diagnosis.consistent},
+                          {"conclusion", diagnosis.conclusion}};
+  if (!o.quiet) {
+    if (!o.no_diagnose) std::cout << "\n" << FormatDiagnosis(diagnosis);
+    std::cout << FormatFitReport(cal, summary);
+  }
   if (!o.output_path.empty()) {
     WriteCalibrationFile(o.output_path, cal);
     if (!o.quiet) std::cout << fmt::format("calibration written to {}\n", o.output_path);
@@ -89,7 +106,9 @@ void SetupFitCommand(CLI::App& app) {
       "fit",
       "Fit the nine calibration parameters (bias, scale, misalignment) to a capture set or to a\n"
       "continuous recording of static poses, print them with their 1-sigma uncertainties and every\n"
-      "capture's residual, and write the calibration file.\n\n"
+      "capture's residual, and write the calibration file. When the residuals exceed what the\n"
+      "captures' noise explains, find the effect the model lacks (nonlinearity, temperature, drift,\n"
+      "radius offset, speed error, size effect), add it, and report before and after.\n\n"
       "Examples:\n"
       "  accelcal fit captures.csv -o cal.json\n"
       "  accelcal fit --recording imu.txt --gravity 9.81744 -o cal.json\n"
@@ -119,6 +138,8 @@ void SetupFitCommand(CLI::App& app) {
   sub->add_option("--window-samples", opts->detector.window_samples,
                   "Recordings: centred variance window, samples (odd)")
       ->capture_default_str();
+  sub->add_flag("--no-diagnose", opts->no_diagnose,
+                "Fit the seed's nine-parameter model only: do not look for missing effects");
   sub->add_flag("-q,--quiet", opts->quiet, "Print nothing but errors");
   sub->callback([opts, captures, recording] {
     if (captures->count() == 0 && recording->count() == 0)

@@ -159,16 +159,22 @@ bool RanksBefore(const CandidateScore& a, const CandidateScore& b) {
   return a.bic < b.bic;
 }
 
-// The runner-up when it comes close to the best (BIC within 6: "strong" evidence on the
-// Kass & Raftery scale is beyond that), for the evidence text.
-std::string CloseRunnerUp(const std::vector<Trial>& trials, int best) {
+// Other candidates worth naming beside the adopted one: those within 6 of its BIC (closer than
+// "strong" evidence on the Kass & Raftery scale), and those that fit these captures more closely
+// by BIC but predicted the left-out captures worse.
+std::string RunnersUp(const std::vector<Trial>& trials, int best) {
+  const CandidateScore& b = trials[best].score;
   std::string out;
   for (size_t i = 0; i < trials.size(); ++i) {
     const CandidateScore& c = trials[i].score;
     if (static_cast<int>(i) == best || !c.skipped_reason.empty()) continue;
-    if (c.bic - trials[best].score.bic < 6.0)
-      out += fmt::format("; {} explains the captures almost as well (BIC {:+.1f})", c.effect,
-                         c.bic - trials[best].score.bic);
+    const double diff = c.bic - b.bic;
+    if (std::fabs(diff) < 6.0)
+      out += fmt::format("; {} explains the captures almost as well (BIC {:+.1f})", c.effect, diff);
+    else if (diff < 0.0 && c.loo_rms_mps2 >= 0.0)
+      out += fmt::format("; {} fits these captures more closely (BIC {:+.1f}) but predicts left-out "
+                         "captures worse ({:.5f} against {:.5f} m/s^2)",
+                         c.effect, diff, c.loo_rms_mps2, b.loo_rms_mps2);
   }
   return out;
 }
@@ -233,6 +239,7 @@ DiagnosisReport Diagnose(const std::vector<FitCapture>& captures, const FitOptio
   }
   report.noise_rms_mps2 = NoiseRms(report.base);
   const EffectContext ctx = MakeEffectContext(captures, fit_options.gravity.gravity_mps2);
+  report.context = ctx;
   std::vector<const Effect*> adopted;
   while (true) {
     DiagnosisRound round;
@@ -257,7 +264,7 @@ DiagnosisReport Diagnose(const std::vector<FitCapture>& captures, const FitOptio
     const ExtendedResidualModel model(adopted, ctx);
     report.adopted.push_back(Adopt(trials[best], model, static_cast<int>(adopted.size()) - 1,
                                    report.final_fit, captures));
-    report.adopted.back().evidence += CloseRunnerUp(trials, best);
+    report.adopted.back().evidence += RunnersUp(trials, best);
     report.final_fit = trials[best].fit;
   }
   const ResidualStats last = StatsOf(report.final_fit);
@@ -273,6 +280,32 @@ DiagnosisReport Diagnose(const std::vector<FitCapture>& captures, const FitOptio
                         report.consistent ? "the residuals are now what noise explains"
                                           : "the residuals still exceed the noise");
   return report;
+}
+
+nlohmann::json EffectsToJson(const DiagnosisReport& report) {
+  nlohmann::json list = nlohmann::json::array();
+  for (const AdoptedEffect& a : report.adopted) {
+    nlohmann::json parameters = nlohmann::json::object(), uncertainty = nlohmann::json::object(),
+                   units = nlohmann::json::object();
+    for (size_t i = 0; i < a.parameters.size(); ++i) {
+      parameters[a.parameter_names[i]] = a.parameters[i];
+      uncertainty[a.parameter_names[i]] = a.uncertainty[i];
+      units[a.parameter_names[i]] = a.parameter_units[i];
+    }
+    const Effect* effect = FindEffect(a.name);
+    list.push_back({{"name", a.name},
+                    {"parameters", parameters},
+                    {"uncertainty", uncertainty},
+                    {"units", units},
+                    {"rms_before_mps2", a.before.rms_mps2},
+                    {"rms_after_mps2", a.after.rms_mps2},
+                    {"chi2_per_dof_before", a.before.Chi2PerDof()},
+                    {"chi2_per_dof_after", a.after.Chi2PerDof()},
+                    {"reference", {{"temp_c", report.context.temp_ref_c}, {"t_s", report.context.t_ref_s}}},
+                    {"corrects_readings", effect != nullptr && effect->CorrectsReadings()},
+                    {"evidence", a.evidence}});
+  }
+  return list;
 }
 
 std::string FormatDiagnosis(const DiagnosisReport& report) {

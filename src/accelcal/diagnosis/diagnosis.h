@@ -21,6 +21,8 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "accelcal/diagnosis/effect.h"
 #include "accelcal/fit/calibration_fit.h"
 #include "accelcal/fit/fit_summary.h"
@@ -77,6 +79,7 @@ struct DiagnosisReport {
   FitSummary final_fit;                  // with the adopted effects (== base when none)
   std::vector<AdoptedEffect> adopted;    // in the order adopted
   std::vector<DiagnosisRound> rounds;
+  EffectContext context;                 // reference temperature and time of the effects
   double noise_rms_mps2 = 0.0;           // RMS of the captures' own sigma_i: what noise explains
   bool consistent = false;               // the final residuals pass the chi-square test
   std::string conclusion;                // one paragraph
@@ -87,6 +90,11 @@ struct DiagnosisReport {
 // not usable, the report's base says why and nothing else is done.
 DiagnosisReport Diagnose(const std::vector<FitCapture>& captures, const FitOptions& fit_options,
                          const DiagnosisOptions& options);
+
+// The calibration file's "effects" list (README): name, parameters, uncertainty, units,
+// rms_before_mps2, rms_after_mps2, reference conditions, evidence, and whether `accelcal apply`
+// corrects readings with it.
+nlohmann::json EffectsToJson(const DiagnosisReport& report);
 
 // Several lines: before/after per adopted effect, parameters, evidence, candidates of each round.
 std::string FormatDiagnosis(const DiagnosisReport& report);

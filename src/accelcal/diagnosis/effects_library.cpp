@@ -2,6 +2,7 @@
 #include <array>
 #include <cmath>
 
+#include <Eigen/SVD>
 #include <fmt/core.h>
 
 #include "accelcal/diagnosis/effect.h"
@@ -44,6 +45,28 @@ double Spread(const std::vector<FitCapture>& captures, Get get) {
 }
 
 
+// True when axis j's capture means, scaled to -1..1 over their range and kept where they are
+// clearly non-zero (|x| > 0.2), support a quadratic: the design [1, x, x^2] is well conditioned.
+bool SeesThreeLevels(const std::vector<FitCapture>& captures, int j) {
+  double lo = INFINITY, hi = -INFINITY;
+  for (const FitCapture& c : captures) {
+    lo = std::min(lo, c.mean_counts(j));
+    hi = std::max(hi, c.mean_counts(j));
+  }
+  if (!(hi > lo)) return false;
+  std::vector<double> xs;
+  for (const FitCapture& c : captures) {
+    const double x = (2.0 * c.mean_counts(j) - lo - hi) / (hi - lo);
+    if (std::fabs(x) > 0.2) xs.push_back(x);
+  }
+  if (xs.size() < 3) return false;
+  Eigen::MatrixXd design(xs.size(), 3);
+  for (size_t i = 0; i < xs.size(); ++i) design.row(i) << 1.0, xs[i], xs[i] * xs[i];
+  for (int k = 0; k < 3; ++k) design.col(k).normalize();
+  const Eigen::Vector3d sv = Eigen::JacobiSVD<Eigen::MatrixXd>(design).singularValues();
+  return sv(2) > 0.05 * sv(0);
+}
+
 // --- quadratic_nonlinearity ----------------------------------------------------------------
 // raw_j = b_j + k_j u_j + q_j u_j^2 per axis (u = a^a, m/s^2): the seed assumed a linear
 // response; the MMA7260Q datasheet allows +-1 % of full scale.
@@ -60,10 +83,13 @@ class QuadraticNonlinearity final : public Effect {
     return base.scale_counts_per_mps2(i) * 1e-5;  // ~1e-3 m/s^2 of error at 10 m/s^2
   }
   std::string WhyNotIdentifiable(const std::vector<FitCapture>& captures) const override {
-    // A term in u^2 is told from scale only if the captures reach several input levels;
-    // +-g alone gives just two, and the quadratic then looks like a bias.
-    if (CountTurntable(captures) < 2)
-      return "needs turntable captures: static poses give each axis only +-g and tilted values";
+    // A term in u^2 is told from bias and scale only where an axis sees three or more distinct
+    // input levels that move the magnitude: +-g alone (plus the zero of the other faces, which
+    // a magnitude fit barely feels) makes the quadratic look like a bias shift.
+    for (int j = 0; j < 3; ++j)
+      if (!SeesThreeLevels(captures, j))
+        return fmt::format("axis {} sees fewer than three distinct non-zero input levels (tilted "
+                           "poses or turntable runs give more)", kAxes[j]);
     return {};
   }
   void Correct(const double* q, const SensorModel& base, const FitCapture&, const EffectContext&,
