@@ -1,5 +1,6 @@
 #include "accelcal/apply.h"
 
+#include <algorithm>
 #include <cmath>
 #include <istream>
 #include <ostream>
@@ -59,6 +60,9 @@ CalibrationApplier::CalibrationApplier(const Calibration& cal) : model_(cal.mode
     }
     effects_.push_back({effect, std::move(theta)});
   }
+  std::stable_sort(effects_.begin(), effects_.end(), [](const AppliedEffect& a, const AppliedEffect& b) {
+    return a.effect->CorrectionStage() < b.effect->CorrectionStage();
+  });
 }
 
 Eigen::Vector3d CalibrationApplier::Apply(const Sample& sample) const {

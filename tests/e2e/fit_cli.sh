@@ -22,6 +22,18 @@ grep -q "gravity: 9.80665 m/s^2 (standard gravity)" "$work/out" || fail "gravity
 grep -q '"format": "accelcal-calibration/1"' "$work/cal.json" || fail "calibration file format"
 grep -q '"effects": \[\]' "$work/cal.json" || fail "effects not listed"
 
+# The effects demo: the diagnosis names the injected effects and the file lists them; apply
+# applies the sensor's own (quadratic) and notes the bench's (radius offset).
+expect 0 "$accelcal" simulate "$src/scenarios/effects_demo.toml" -o "$work/fx.csv"
+expect 0 "$accelcal" fit "$work/fx.csv" -o "$work/fx.json"
+grep -q "+ quadratic_nonlinearity" "$work/out" || fail "quadratic not named"
+grep -q "+ radius_offset" "$work/out" || fail "radius offset not named"
+grep -q '"name": "quadratic_nonlinearity"' "$work/fx.json" || fail "effect not in the file"
+printf '0 2051 2040 2400\n' | "$accelcal" apply "$work/fx.json" >"$work/applied" 2>"$work/err"
+grep -q "not applied to readings: radius_offset" "$work/err" || fail "radius offset not noted"
+expect 0 "$accelcal" fit "$work/fx.csv" --no-diagnose -o "$work/base.json"
+grep -q '"effects": \[\]' "$work/base.json" || fail "--no-diagnose still added effects"
+
 # Gravity from a location is stated in the output and the file.
 expect 0 "$accelcal" fit "$work/c.csv" --latitude -34.9 --altitude 43 -q -o "$work/cal2.json"
 [ ! -s "$work/out" ] || fail "--quiet printed something"

@@ -158,3 +158,53 @@ TEST(Pipeline, ApplyRefusesEffectsItCannotApply) {
 
 }  // namespace
 }  // namespace accelcal
+
+namespace accelcal {
+namespace {
+
+// A calibration with a quadratic and a temperature-bias effect must invert the forward model:
+// raw = b + tc (T - Tref) + k u + q u^2 (no misalignment here) gives back u.
+TEST(Pipeline, ApplierInvertsSensorEffects) {
+  Calibration cal;
+  cal.model.bias_counts = {2048, 2040, 2060};
+  cal.model.scale_counts_per_mps2 = {35, 34, 36};
+  cal.effects = nlohmann::json::array(
+      {{{"name", "quadratic_nonlinearity"}, {"parameters", {{"q_x", 0.01}, {"q_y", -0.02}, {"q_z", 0.005}}}},
+       {{"name", "temperature_bias"},
+        {"parameters", {{"tc_bias_x", 0.5}, {"tc_bias_y", -0.25}, {"tc_bias_z", 0.1}}},
+        {"reference", {{"temp_c", 25.0}, {"t_s", 100.0}}}},
+       {{"name", "radius_offset"}, {"parameters", {{"dr", 0.003}}}}});
+  const CalibrationApplier applier(cal);
+  EXPECT_TRUE(applier.needs_temperature());
+  ASSERT_EQ(applier.not_applied().size(), 1u);
+  EXPECT_NE(applier.not_applied()[0].find("radius_offset"), std::string::npos);
+
+  const Eigen::Vector3d u(3.0, -9.0, 20.0);
+  const Eigen::Vector3d q(0.01, -0.02, 0.005), tc(0.5, -0.25, 0.1);
+  Sample s;
+  s.temp_c = 31.0;
+  for (int j = 0; j < 3; ++j)
+    s.raw_counts(j) = cal.model.bias_counts(j) + tc(j) * (s.temp_c - 25.0) +
+                      cal.model.scale_counts_per_mps2(j) * u(j) + q(j) * u(j) * u(j);
+  EXPECT_LT((applier.Apply(s) - u).norm(), 1e-9);
+  s.temp_c = kNaN;
+  EXPECT_THROW(applier.Apply(s), Error);
+}
+
+TEST(Pipeline, ApplyStreamNamesLinesWithoutTheNeededTemperature) {
+  Calibration cal;
+  cal.model.scale_counts_per_mps2 = {35, 34, 36};
+  cal.effects = nlohmann::json::array(
+      {{{"name", "temperature_scale"},
+        {"parameters", {{"tc_scale_x", 1e-4}, {"tc_scale_y", 1e-4}, {"tc_scale_z", 1e-4}}},
+        {"reference", {{"temp_c", 25.0}, {"t_s", 0.0}}}}});
+  std::istringstream in("0 1 2 3\n");
+  std::ostringstream out;
+  std::vector<std::string> errors;
+  ApplyStream(in, out, CalibrationApplier(cal), "in", [&](const InputError& e) { errors.push_back(e.what()); });
+  ASSERT_EQ(errors.size(), 1u);
+  EXPECT_NE(errors[0].find("in:1: this calibration corrects for temperature"), std::string::npos) << errors[0];
+}
+
+}  // namespace
+}  // namespace accelcal

@@ -54,10 +54,17 @@ class Effect {
   // Applies the effect with parameters `theta` (NumParameters() values) to capture `c`.
   virtual void Correct(const double* theta, const SensorModel& base, const FitCapture& c,
                        const EffectContext& ctx, CorrectedCapture* out) const = 0;
+  // Corrections run in stage order, inverting the forward model from the outside in:
+  // 0 additive shifts of the reading (temperature bias, drift), 1 scale changes, 2 the
+  // nonlinearity (solved on the shifted, rescaled reading), 3 the bench's geometry.
+  virtual int CorrectionStage() const = 0;
   // True for properties of the sensor itself, which `accelcal apply` corrects in every reading;
   // false for errors of the bench during calibration (radius, speed), which it does not.
   virtual bool CorrectsReadings() const = 0;
 };
+
+// `effects` sorted by CorrectionStage (stable): the order in which corrections are applied.
+std::vector<const Effect*> InCorrectionOrder(std::vector<const Effect*> effects);
 
 // The library, in a fixed order. Ownership: the returned effects are static; never freed.
 const std::vector<const Effect*>& AllEffects();

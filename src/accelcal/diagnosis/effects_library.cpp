@@ -1,4 +1,5 @@
 // The effects of effect.h. Parameters per axis are in axis order x, y, z.
+#include <algorithm>
 #include <array>
 #include <cmath>
 
@@ -103,6 +104,7 @@ class QuadraticNonlinearity final : public Effect {
       out->raw_counts(j) = base.bias_counts(j) + k * u;
     }
   }
+  int CorrectionStage() const override { return 2; }
   bool CorrectsReadings() const override { return true; }
 };
 
@@ -130,6 +132,7 @@ class TemperatureBias final : public Effect {
     const double dt_c = c.mean_temp_c - ctx.temp_ref_c;
     for (int j = 0; j < 3; ++j) out->raw_counts(j) -= tc[j] * dt_c;
   }
+  int CorrectionStage() const override { return 0; }
   bool CorrectsReadings() const override { return true; }
 };
 
@@ -158,6 +161,7 @@ class TemperatureScale final : public Effect {
       out->raw_counts(j) = base.bias_counts(j) +
                            (out->raw_counts(j) - base.bias_counts(j)) / (1.0 + tc[j] * dt_c);
   }
+  int CorrectionStage() const override { return 1; }
   bool CorrectsReadings() const override { return true; }
 };
 
@@ -186,6 +190,7 @@ class BiasDrift final : public Effect {
     const double dt_s = c.mean_t_s - ctx.t_ref_s;
     for (int j = 0; j < 3; ++j) out->raw_counts(j) -= drift[j] * dt_s;
   }
+  int CorrectionStage() const override { return 0; }
   bool CorrectsReadings() const override { return false; }  // a session artifact, see README
 };
 
@@ -209,6 +214,7 @@ class RadiusOffset final : public Effect {
                CorrectedCapture* out) const override {
     if (c.kind == CaptureKind::kTurntable) out->radius_m += dr[0];
   }
+  int CorrectionStage() const override { return 3; }
   bool CorrectsReadings() const override { return false; }
 };
 
@@ -231,6 +237,7 @@ class RpmScale final : public Effect {
                CorrectedCapture* out) const override {
     if (c.kind == CaptureKind::kTurntable) out->omega_rad_per_s *= 1.0 + s[0];
   }
+  int CorrectionStage() const override { return 3; }
   bool CorrectsReadings() const override { return false; }
 };
 
@@ -274,6 +281,7 @@ class SizeEffect final : public Effect {
       out->raw_counts(j) += base.scale_counts_per_mps2(j) * w2 * d[j] * in_plane;
     }
   }
+  int CorrectionStage() const override { return 3; }
   bool CorrectsReadings() const override { return false; }
 };
 
@@ -291,6 +299,13 @@ const std::vector<const Effect*>& AllEffects() {
                                                  &bias_drift, &radius_offset,    &rpm_scale,
                                                  &size_effect};
   return all;
+}
+
+std::vector<const Effect*> InCorrectionOrder(std::vector<const Effect*> effects) {
+  std::stable_sort(effects.begin(), effects.end(), [](const Effect* a, const Effect* b) {
+    return a->CorrectionStage() < b->CorrectionStage();
+  });
+  return effects;
 }
 
 const Effect* FindEffect(std::string_view name) {

@@ -1,5 +1,6 @@
 #include "accelcal/diagnosis/extended_model.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace accelcal {
@@ -11,6 +12,8 @@ ExtendedResidualModel::ExtendedResidualModel(std::vector<const Effect*> effects,
     offsets_.push_back(num_parameters_);
     num_parameters_ += e->NumParameters();
   }
+  for (const Effect* e : InCorrectionOrder(effects_))
+    correction_order_.push_back(static_cast<int>(std::find(effects_.begin(), effects_.end(), e) - effects_.begin()));
 }
 
 std::string ExtendedResidualModel::ParameterLabel(int i) const {
@@ -34,8 +37,7 @@ CorrectedCapture ExtendedResidualModel::Corrected(const Eigen::VectorXd& p,
   const SensorModel base = SensorModel::FromVector(p.head(kNumBaseParameters));
   CorrectedCapture out{c.mean_counts, c.radius_m,
                        c.kind == CaptureKind::kTurntable ? RpmToRadPerS(c.rpm) : 0.0};
-  for (size_t e = 0; e < effects_.size(); ++e)
-    effects_[e]->Correct(p.data() + offsets_[e], base, c, context_, &out);
+  for (int e : correction_order_) effects_[e]->Correct(p.data() + offsets_[e], base, c, context_, &out);
   return out;
 }
 

@@ -38,6 +38,7 @@ class ExtendedResidualModel final : public ResidualModel {
 
   std::vector<const Effect*> effects_;
   std::vector<int> offsets_;
+  std::vector<int> correction_order_;  // indices into effects_, by CorrectionStage
   int num_parameters_ = kNumBaseParameters;
   EffectContext context_;
 };
