@@ -99,6 +99,48 @@ Trial TryCandidate(const Effect* effect, const std::vector<const Effect*>& adopt
   return t;
 }
 
+double Correlation(const std::vector<double>& x, const std::vector<double>& y) {
+  const double n = static_cast<double>(x.size());
+  double mx = 0, my = 0;
+  for (size_t i = 0; i < x.size(); ++i) { mx += x[i] / n; my += y[i] / n; }
+  double sxy = 0, sxx = 0, syy = 0;
+  for (size_t i = 0; i < x.size(); ++i) {
+    sxy += (x[i] - mx) * (y[i] - my);
+    sxx += (x[i] - mx) * (x[i] - mx);
+    syy += (y[i] - my) * (y[i] - my);
+  }
+  return sxx > 0 && syy > 0 ? sxy / std::sqrt(sxx * syy) : 0.0;
+}
+
+// How the residuals before the effect relate to its physical variable, by capture kind.
+std::string RegressorEvidence(const Effect& effect, const FitSummary& before,
+                              const std::vector<FitCapture>& captures) {
+  if (effect.RegressorName().empty()) return {};
+  std::vector<double> x, y;
+  int static_without = 0;
+  double static_rms = 0.0;
+  for (size_t i = 0; i < captures.size(); ++i) {
+    const double v = effect.Regressor(captures[i]);
+    const double r = before.residuals[i].residual_mps2;
+    if (std::isfinite(v)) {
+      x.push_back(v);
+      y.push_back(r);
+    } else if (captures[i].kind == CaptureKind::kStatic) {
+      ++static_without;
+      static_rms += r * r;
+    }
+  }
+  if (x.size() < 3 || *std::max_element(x.begin(), x.end()) == *std::min_element(x.begin(), x.end()))
+    return {};
+  const double rho = Correlation(x, y);
+  std::string out = fmt::format("the residuals before it {} with {} (correlation {:+.2f} over {} captures)",
+                                rho >= 0 ? "grow" : "fall", effect.RegressorName(), rho, x.size());
+  if (static_without > 0)
+    out += fmt::format("; static captures, which have no {}, show an RMS of {:.4f} m/s^2",
+                       effect.RegressorName(), std::sqrt(static_rms / static_without));
+  return out;
+}
+
 // Where the adopted effect changed the residuals: by capture kind, and how well that change
 // matches the residuals it explains.
 std::string Evidence(const Effect& effect, const FitSummary& before, const FitSummary& after,
@@ -114,18 +156,13 @@ std::string Evidence(const Effect& effect, const FitSummary& before, const FitSu
     syy += r * r;
   }
   const double share = syy > 0.0 ? 1.0 - (syy - 2 * sxy + sxx) / syy : 0.0;
-  std::string where;
-  if (max_turntable > 3.0 * max_static)
-    where = fmt::format("turntable residuals change by up to {:.4f} m/s^2 with it, static ones by "
-                        "{:.4f} at most", max_turntable, max_static);
-  else if (max_static > 3.0 * max_turntable)
-    where = fmt::format("static residuals change by up to {:.4f} m/s^2 with it, turntable ones by "
-                        "{:.4f} at most", max_static, max_turntable);
-  else
-    where = fmt::format("static and turntable residuals both change with it (up to {:.4f} and "
-                        "{:.4f} m/s^2)", max_static, max_turntable);
-  return fmt::format("{}: {}; it accounts for {:.0f} % of the residual sum of squares",
-                     effect.Story(), where, 100.0 * std::clamp(share, 0.0, 1.0));
+  std::string out = std::string(effect.Story());
+  if (std::string by_variable = RegressorEvidence(effect, before, captures); !by_variable.empty())
+    out += ": " + by_variable;
+  out += fmt::format("; adding it changes turntable residuals by up to {:.4f} m/s^2 and static ones "
+                     "by up to {:.4f}, and accounts for {:.0f} % of the residual sum of squares",
+                     max_turntable, max_static, 100.0 * std::clamp(share, 0.0, 1.0));
+  return out;
 }
 
 AdoptedEffect Adopt(const Trial& best, const ExtendedResidualModel& model, int effect_index,

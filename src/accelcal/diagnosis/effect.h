@@ -54,6 +54,11 @@ class Effect {
   // Applies the effect with parameters `theta` (NumParameters() values) to capture `c`.
   virtual void Correct(const double* theta, const SensorModel& base, const FitCapture& c,
                        const EffectContext& ctx, CorrectedCapture* out) const = 0;
+  // The physical variable the effect grows with, for the evidence in words ("temperature",
+  // "w^2 r", ...), and its value for a capture (NaN where it does not apply). Empty name: none
+  // (the quadratic depends on each axis's input, not on one variable).
+  virtual std::string_view RegressorName() const { return {}; }
+  virtual double Regressor(const FitCapture&) const { return kNaN; }
   // Corrections run in stage order, inverting the forward model from the outside in:
   // 0 additive shifts of the reading (temperature bias, drift), 1 scale changes, 2 the
   // nonlinearity (solved on the shifted, rescaled reading), 3 the bench's geometry.

@@ -68,6 +68,13 @@ bool SeesThreeLevels(const std::vector<FitCapture>& captures, int j) {
   return sv(2) > 0.05 * sv(0);
 }
 
+// The stated centripetal acceleration of a turntable capture, m/s^2; NaN for a static one.
+double CentripetalMps2(const FitCapture& c) {
+  if (c.kind != CaptureKind::kTurntable) return kNaN;
+  const double w = RpmToRadPerS(c.rpm);
+  return w * w * c.radius_m;
+}
+
 // --- quadratic_nonlinearity ----------------------------------------------------------------
 // raw_j = b_j + k_j u_j + q_j u_j^2 per axis (u = a^a, m/s^2): the seed assumed a linear
 // response; the MMA7260Q datasheet allows +-1 % of full scale.
@@ -132,6 +139,8 @@ class TemperatureBias final : public Effect {
     const double dt_c = c.mean_temp_c - ctx.temp_ref_c;
     for (int j = 0; j < 3; ++j) out->raw_counts(j) -= tc[j] * dt_c;
   }
+  std::string_view RegressorName() const override { return "temperature"; }
+  double Regressor(const FitCapture& c) const override { return c.mean_temp_c; }
   int CorrectionStage() const override { return 0; }
   bool CorrectsReadings() const override { return true; }
 };
@@ -161,6 +170,8 @@ class TemperatureScale final : public Effect {
       out->raw_counts(j) = base.bias_counts(j) +
                            (out->raw_counts(j) - base.bias_counts(j)) / (1.0 + tc[j] * dt_c);
   }
+  std::string_view RegressorName() const override { return "temperature"; }
+  double Regressor(const FitCapture& c) const override { return c.mean_temp_c; }
   int CorrectionStage() const override { return 1; }
   bool CorrectsReadings() const override { return true; }
 };
@@ -190,6 +201,8 @@ class BiasDrift final : public Effect {
     const double dt_s = c.mean_t_s - ctx.t_ref_s;
     for (int j = 0; j < 3; ++j) out->raw_counts(j) -= drift[j] * dt_s;
   }
+  std::string_view RegressorName() const override { return "time"; }
+  double Regressor(const FitCapture& c) const override { return c.mean_t_s; }
   int CorrectionStage() const override { return 0; }
   bool CorrectsReadings() const override { return false; }  // a session artifact, see README
 };
@@ -214,6 +227,8 @@ class RadiusOffset final : public Effect {
                CorrectedCapture* out) const override {
     if (c.kind == CaptureKind::kTurntable) out->radius_m += dr[0];
   }
+  std::string_view RegressorName() const override { return "w^2 r"; }
+  double Regressor(const FitCapture& c) const override { return CentripetalMps2(c); }
   int CorrectionStage() const override { return 3; }
   bool CorrectsReadings() const override { return false; }
 };
@@ -237,6 +252,8 @@ class RpmScale final : public Effect {
                CorrectedCapture* out) const override {
     if (c.kind == CaptureKind::kTurntable) out->omega_rad_per_s *= 1.0 + s[0];
   }
+  std::string_view RegressorName() const override { return "w^2 r"; }
+  double Regressor(const FitCapture& c) const override { return CentripetalMps2(c); }
   int CorrectionStage() const override { return 3; }
   bool CorrectsReadings() const override { return false; }
 };
@@ -281,6 +298,8 @@ class SizeEffect final : public Effect {
       out->raw_counts(j) += base.scale_counts_per_mps2(j) * w2 * d[j] * in_plane;
     }
   }
+  std::string_view RegressorName() const override { return "w^2 r"; }
+  double Regressor(const FitCapture& c) const override { return CentripetalMps2(c); }
   int CorrectionStage() const override { return 3; }
   bool CorrectsReadings() const override { return false; }
 };
