@@ -1,6 +1,7 @@
 // `accelcal record`: samples from a live source (the simulated bench, a serial port, a TCP
 // sample server, standard input, a recording replayed) into a continuous recording file, with
 // the source's status on stderr once a second.
+#include <chrono>
 #include <csignal>
 #include <fstream>
 #include <iostream>
@@ -18,9 +19,9 @@ namespace {
 
 struct RecordCommandOptions {
   std::string source_spec = "sim";
-  std::string output_path;     // recording; "-" = standard output
-  double duration_s = 0.0;     // span of t to record, s; 0 = until the end or Ctrl-C
-  double status_every_s = 1.0; // status line period (wall clock), s
+  std::string output_path;      // recording; "-" = standard output
+  double duration_s = 0.0;      // span of t to record, s; 0 = until the end or Ctrl-C
+  double status_every_s = 1.0;  // status line period (wall clock), s
   bool quiet = false;
   SourceOptions source;
 };
@@ -90,8 +91,10 @@ void RunRecord(const RecordCommandOptions& o) {
   std::unique_ptr<SampleSource> source = OpenSource(o.source_spec, o.source);
   SigintGuard sigint;
   std::vector<Sample> samples;
-  double next_status_s = o.status_every_s;
-  double waited_s = 0.0;
+  using Clock = std::chrono::steady_clock;
+  const auto status_every = std::chrono::duration_cast<Clock::duration>(
+      std::chrono::duration<double>(o.status_every_s));
+  auto next_status = Clock::now() + status_every;
   constexpr double kReadTimeoutS = 0.1;
   std::string why_stopped = "interrupted";
   while (!g_interrupted) {
@@ -105,11 +108,9 @@ void RunRecord(const RecordCommandOptions& o) {
       why_stopped = "end of input";
       break;
     }
-    // Status about once a second of wall time (a Read returns early when data comes).
-    waited_s += r.samples > 0 ? kReadTimeoutS / 4 : kReadTimeoutS;
-    if (!o.quiet && waited_s >= next_status_s) {
+    if (!o.quiet && Clock::now() >= next_status) {
       fmt::print(stderr, "{}", StatusLine(*source));
-      next_status_s = waited_s + o.status_every_s;
+      next_status = Clock::now() + status_every;
     }
   }
   WriteOutput(o.output_path, samples);
