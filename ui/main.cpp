@@ -22,6 +22,7 @@ int main(int argc, char** argv) {
   accelcal::cli::SetupFitCommand(app);
   accelcal::cli::SetupApplyCommand(app);
   accelcal::cli::SetupSimulateCommand(app);
+  accelcal::cli::SetupRecordCommand(app);
 
   try {
     app.parse(argc, argv);

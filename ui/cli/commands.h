@@ -13,5 +13,6 @@ namespace accelcal::cli {
 void SetupFitCommand(CLI::App& app);
 void SetupApplyCommand(CLI::App& app);
 void SetupSimulateCommand(CLI::App& app);
+void SetupRecordCommand(CLI::App& app);
 
 }  // namespace accelcal::cli

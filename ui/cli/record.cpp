@@ -1,0 +1,162 @@
+// `accelcal record`: samples from a live source (the simulated bench, a serial port, a TCP
+// sample server, standard input, a recording replayed) into a continuous recording file, with
+// the source's status on stderr once a second.
+#include <chrono>
+#include <csignal>
+#include <fstream>
+#include <iostream>
+#include <memory>
+
+#include <fmt/core.h>
+
+#include "accelcal/error.h"
+#include "accelcal/io/capture_set_writer.h"
+#include "accelcal/source/source_spec.h"
+#include "cli/commands.h"
+
+namespace accelcal::cli {
+namespace {
+
+struct RecordCommandOptions {
+  std::string source_spec = "sim";
+  std::string output_path;      // recording; "-" = standard output
+  double duration_s = 0.0;      // span of t to record, s; 0 = until the end or Ctrl-C
+  double status_every_s = 1.0;  // status line period (wall clock), s
+  bool quiet = false;
+  SourceOptions source;
+};
+
+volatile std::sig_atomic_t g_interrupted = 0;
+extern "C" void OnSigint(int) { g_interrupted = 1; }
+
+// Ctrl-C ends the recording cleanly while this lives; the previous handler comes back after.
+class SigintGuard {
+ public:
+  SigintGuard() {
+    struct sigaction action {};
+    action.sa_handler = OnSigint;
+    sigemptyset(&action.sa_mask);
+    sigaction(SIGINT, &action, &previous_);
+    g_interrupted = 0;
+  }
+  ~SigintGuard() { sigaction(SIGINT, &previous_, nullptr); }
+  SigintGuard(const SigintGuard&) = delete;
+  SigintGuard& operator=(const SigintGuard&) = delete;
+
+ private:
+  struct sigaction previous_ {};
+};
+
+std::string StatusLine(const SampleSource& source) {
+  return fmt::format("accelcal record: {}: {}\n", source.Describe(), source.status().BriefReport());
+}
+
+// One line per event, as it happens, so none is lost between status lines.
+void ReportEvents(const SampleSource& source, const ReadResult& r, bool quiet) {
+  if (quiet) return;
+  const SourceStatus& s = source.status();
+  if (r.malformed > 0)
+    fmt::print(stderr, "accelcal record: {} malformed line{} skipped; latest: {}\n", r.malformed,
+               r.malformed == 1 ? "" : "s", s.last_malformed);
+  if (r.gaps > 0)
+    fmt::print(stderr, "accelcal record: gap in t: {:.6g} s -> {:.6g} s ({:.3g} s missing)\n",
+               s.last_gap.t_before_s, s.last_gap.t_after_s, s.last_gap.missing_s);
+  if (r.went_dead) fmt::print(stderr, "accelcal record: link dead: {}\n", s.link_error);
+  if (r.reconnected) fmt::print(stderr, "accelcal record: link back up\n");
+}
+
+// True when the samples span duration_s; drops those beyond it.
+bool ReachedDuration(std::vector<Sample>* samples, double duration_s) {
+  if (duration_s <= 0.0 || samples->empty()) return false;
+  const double end_s = samples->front().t_s + duration_s;
+  if (samples->back().t_s < end_s) return false;
+  while (!samples->empty() && samples->back().t_s >= end_s) samples->pop_back();
+  return true;
+}
+
+void WriteOutput(const std::string& path, const std::vector<Sample>& samples) {
+  if (path == "-") {
+    WriteRecording(std::cout, samples);
+    std::cout.flush();
+    return;
+  }
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  if (!out) throw Error("cannot open '" + path + "' for writing");
+  WriteRecording(out, samples);
+  out.close();
+  if (!out) throw Error("cannot write '" + path + "'");
+}
+
+void RunRecord(const RecordCommandOptions& o) {
+  std::unique_ptr<SampleSource> source = OpenSource(o.source_spec, o.source);
+  SigintGuard sigint;
+  std::vector<Sample> samples;
+  using Clock = std::chrono::steady_clock;
+  const auto status_every = std::chrono::duration_cast<Clock::duration>(
+      std::chrono::duration<double>(o.status_every_s));
+  auto next_status = Clock::now() + status_every;
+  constexpr double kReadTimeoutS = 0.1;
+  std::string why_stopped = "interrupted";
+  while (!g_interrupted) {
+    const ReadResult r = source->Read(kReadTimeoutS, &samples);
+    ReportEvents(*source, r, o.quiet);
+    if (ReachedDuration(&samples, o.duration_s)) {
+      why_stopped = "duration reached";
+      break;
+    }
+    if (source->status().link == LinkState::kEnded) {
+      why_stopped = "end of input";
+      break;
+    }
+    if (!o.quiet && Clock::now() >= next_status) {
+      fmt::print(stderr, "{}", StatusLine(*source));
+      next_status = Clock::now() + status_every;
+    }
+  }
+  WriteOutput(o.output_path, samples);
+  if (!o.quiet)
+    fmt::print(stderr, "{}accelcal record: {}; {} samples written to {}\n", StatusLine(*source),
+               why_stopped, samples.size(), o.output_path);
+}
+
+}  // namespace
+
+void SetupRecordCommand(CLI::App& app) {
+  auto opts = std::make_shared<RecordCommandOptions>();
+  CLI::App* sub = app.add_subcommand(
+      "record",
+      "Record samples from a live source into a continuous recording (lines 't ax ay az\n"
+      "[temp_c]', as 'accelcal fit --recording' reads it). The source's status (link, rate,\n"
+      "samples, malformed lines, gaps in t) goes to stderr once a second. Stops after --duration\n"
+      "seconds of samples, at the end of a file or of standard input, or on Ctrl-C (what was\n"
+      "received is written, exit status 0).\n\n"
+      "Sources (--source): sim (the virtual bench), file:PATH, serial:DEVICE@BAUD,\n"
+      "tcp:HOST:PORT, - (standard input). Line protocol in README.md, 'Sample sources'.");
+  sub->footer(
+      "Examples:\n"
+      "  accelcal record --source serial:/dev/ttyUSB0@115200 -o board.txt\n"
+      "  accelcal record --source tcp:192.168.7.2:5000 --duration 600 -o board.txt\n"
+      "  accelcal record --source sim --speed 50 --duration 120 -o sim.txt\n"
+      "  accelcal fit --recording board.txt -o cal.json");
+  sub->add_option("--source", opts->source_spec, "Sample source spec")->capture_default_str();
+  sub->add_option("-o,--output", opts->output_path, "Recording to write ('-': standard output)")
+      ->required();
+  sub->add_option("--duration", opts->duration_s,
+                  "Seconds of samples (span of t) to record; 0: until the end or Ctrl-C")
+      ->check(CLI::NonNegativeNumber)->capture_default_str();
+  sub->add_option("--speed", opts->source.sim.speed,
+                  "sim: simulated seconds per wall second (1 real time; 0 as fast as possible)")
+      ->capture_default_str();
+  sub->add_option("--scenario", opts->source.scenario_path,
+                  "sim: scenario file (TOML); default: the built-in bench_default");
+  sub->add_option("--seed", opts->source.seed, "sim: random seed, overriding the scenario's");
+  sub->add_flag("--realtime", opts->source.realtime,
+                "file: replay paced by t instead of as fast as possible");
+  sub->add_option("--dead-after", opts->source.dead_after_s,
+                  "Report the link dead after this long without a sample, s")
+      ->capture_default_str();
+  sub->add_flag("-q,--quiet", opts->quiet, "Print nothing but errors");
+  sub->callback([opts] { RunRecord(*opts); });
+}
+
+}  // namespace accelcal::cli
