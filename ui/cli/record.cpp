@@ -2,10 +2,12 @@
 // sample server, standard input, a recording replayed) into a continuous recording file, with
 // the source's status on stderr once a second.
 #include <chrono>
+#include <cmath>
 #include <csignal>
 #include <fstream>
 #include <iostream>
 #include <memory>
+#include <optional>
 
 #include <fmt/core.h>
 
@@ -65,32 +67,32 @@ void ReportEvents(const SampleSource& source, const ReadResult& r, bool quiet) {
   if (r.reconnected) fmt::print(stderr, "accelcal record: link back up\n");
 }
 
-// True when the samples span duration_s; drops those beyond it.
-bool ReachedDuration(std::vector<Sample>* samples, double duration_s) {
-  if (duration_s <= 0.0 || samples->empty()) return false;
-  const double end_s = samples->front().t_s + duration_s;
-  if (samples->back().t_s < end_s) return false;
-  while (!samples->empty() && samples->back().t_s >= end_s) samples->pop_back();
-  return true;
+// Drops the samples at or beyond end_s; true when any was (the duration is reached).
+bool TrimToEnd(std::vector<Sample>* samples, double end_s) {
+  bool reached = false;
+  while (!samples->empty() && samples->back().t_s >= end_s) {
+    samples->pop_back();
+    reached = true;
+  }
+  return reached;
 }
 
-void WriteOutput(const std::string& path, const std::vector<Sample>& samples) {
-  if (path == "-") {
-    WriteRecording(std::cout, samples);
-    std::cout.flush();
-    return;
-  }
-  std::ofstream out(path, std::ios::binary | std::ios::trunc);
-  if (!out) throw Error("cannot open '" + path + "' for writing");
-  WriteRecording(out, samples);
-  out.close();
-  if (!out) throw Error("cannot write '" + path + "'");
+// The output stream: stdout for "-", else the file (owned by `file`).
+std::ostream& OpenOutput(const std::string& path, std::ofstream* file) {
+  if (path == "-") return std::cout;
+  file->open(path, std::ios::binary | std::ios::trunc);
+  if (!*file) throw Error("cannot open '" + path + "' for writing");
+  return *file;
 }
 
 void RunRecord(const RecordCommandOptions& o) {
   std::unique_ptr<SampleSource> source = OpenSource(o.source_spec, o.source);
   SigintGuard sigint;
-  std::vector<Sample> samples;
+  std::ofstream file;
+  std::ostream& out = OpenOutput(o.output_path, &file);
+  std::optional<RecordingWriter> writer;  // created with the first samples (temperature or not)
+  std::vector<Sample> chunk;              // one Read's samples; written, then cleared
+  double end_s = INFINITY;
   using Clock = std::chrono::steady_clock;
   const auto status_every = std::chrono::duration_cast<Clock::duration>(
       std::chrono::duration<double>(o.status_every_s));
@@ -98,9 +100,16 @@ void RunRecord(const RecordCommandOptions& o) {
   constexpr double kReadTimeoutS = 0.1;
   std::string why_stopped = "interrupted";
   while (!g_interrupted) {
-    const ReadResult r = source->Read(kReadTimeoutS, &samples);
+    chunk.clear();
+    const ReadResult r = source->Read(kReadTimeoutS, &chunk);
     ReportEvents(*source, r, o.quiet);
-    if (ReachedDuration(&samples, o.duration_s)) {
+    if (!chunk.empty() && !writer) {
+      writer.emplace(out, std::isfinite(chunk.front().temp_c));
+      if (o.duration_s > 0.0) end_s = chunk.front().t_s + o.duration_s;
+    }
+    const bool reached = TrimToEnd(&chunk, end_s);
+    if (writer) writer->Write(chunk);
+    if (reached) {
       why_stopped = "duration reached";
       break;
     }
@@ -108,15 +117,18 @@ void RunRecord(const RecordCommandOptions& o) {
       why_stopped = "end of input";
       break;
     }
-    if (!o.quiet && Clock::now() >= next_status) {
-      fmt::print(stderr, "{}", StatusLine(*source));
+    if (Clock::now() >= next_status) {
+      // Flushing once a second bounds what an interruption (or kill -9) can lose.
+      if (writer) writer->Flush();
+      if (!o.quiet) fmt::print(stderr, "{}", StatusLine(*source));
       next_status = Clock::now() + status_every;
     }
   }
-  WriteOutput(o.output_path, samples);
+  if (!writer) writer.emplace(out, false);
+  writer->Flush();
   if (!o.quiet)
     fmt::print(stderr, "{}accelcal record: {}; {} samples written to {}\n", StatusLine(*source),
-               why_stopped, samples.size(), o.output_path);
+               why_stopped, writer->written(), o.output_path);
 }
 
 }  // namespace

@@ -71,19 +71,35 @@ void WriteCaptureSetFile(const std::string& path, const CaptureSet& set) {
   if (!out) throw Error("cannot write '" + path + "'");
 }
 
+RecordingWriter::RecordingWriter(std::ostream& out, bool with_temperature)
+    : out_(out), with_temperature_(with_temperature) {
+  out_ << "# accelcal recording: t in s, ax ay az in raw counts"
+       << (with_temperature_ ? ", temp_c in degC" : "") << '\n';
+  out_ << (with_temperature_ ? "# t ax ay az temp_c\n" : "# t ax ay az\n");
+  if (!out_) throw Error("cannot write the recording");
+}
+
+void RecordingWriter::Write(const std::vector<Sample>& samples) {
+  for (const Sample& s : samples) {
+    out_ << Number(s.t_s) << ' ' << Number(s.raw_counts.x()) << ' ' << Number(s.raw_counts.y())
+         << ' ' << Number(s.raw_counts.z());
+    if (with_temperature_) out_ << ' ' << Number(s.temp_c);
+    out_ << '\n';
+  }
+  written_ += static_cast<long>(samples.size());
+  if (!out_) throw Error("cannot write the recording");
+}
+
+void RecordingWriter::Flush() {
+  out_.flush();
+  if (!out_) throw Error("cannot write the recording");
+}
+
 void WriteRecording(std::ostream& out, const std::vector<Sample>& samples) {
   const bool has_temp = std::any_of(samples.begin(), samples.end(),
                                     [](const Sample& s) { return !std::isnan(s.temp_c); });
-  out << "# accelcal recording: t in s, ax ay az in raw counts"
-      << (has_temp ? ", temp_c in degC" : "") << '\n';
-  out << (has_temp ? "# t ax ay az temp_c\n" : "# t ax ay az\n");
-  for (const Sample& s : samples) {
-    out << Number(s.t_s) << ' ' << Number(s.raw_counts.x()) << ' ' << Number(s.raw_counts.y())
-        << ' ' << Number(s.raw_counts.z());
-    if (has_temp) out << ' ' << Number(s.temp_c);
-    out << '\n';
-  }
-  if (!out) throw Error("cannot write the recording");
+  RecordingWriter writer(out, has_temp);
+  writer.Write(samples);
 }
 
 }  // namespace accelcal

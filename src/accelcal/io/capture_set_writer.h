@@ -32,6 +32,23 @@ void WriteCaptureSet(std::ostream& out, const CaptureSet& set);
 void WriteCaptureSetFile(const std::string& path, const CaptureSet& set);
 
 // Throws accelcal::Error when the stream fails.
+// Writes a continuous recording as it arrives (the same format as WriteRecording), so a long
+// record streams to disk with bounded memory. Does NOT take ownership of `out`, which must
+// outlive the writer. Throws accelcal::Error when the stream fails.
+class RecordingWriter {
+ public:
+  // Writes the header; `with_temperature` decides whether lines carry temp_c (NaN otherwise).
+  RecordingWriter(std::ostream& out, bool with_temperature);
+  void Write(const std::vector<Sample>& samples);
+  void Flush();
+  long written() const { return written_; }
+
+ private:
+  std::ostream& out_;
+  bool with_temperature_;
+  long written_ = 0;
+};
+
 void WriteRecording(std::ostream& out, const std::vector<Sample>& samples);
 
 // A label as a CSV field: quoted (quotes doubled) when it holds a comma or a quote.
