@@ -1,0 +1,41 @@
+#include <fmt/core.h>
+
+#include "accelcal/error.h"
+#include "accelcal/wizard/session_journal.h"
+
+namespace accelcal {
+namespace {
+
+class MemoryJournal final : public SessionJournal {
+ public:
+  void RecordInput(const std::string& step_id, const std::string& key,
+                   const std::string& value) override {
+    inputs_[step_id][key] = value;
+  }
+  void RecordCapture(const std::string& step_id, const Capture& capture) override {
+    for (const JournalCapture& c : captures_)
+      if (c.step_id == step_id)
+        throw Error(fmt::format("step '{}' already has an accepted capture", step_id));
+    captures_.push_back({step_id, capture});
+  }
+  void RecordStepDone(const std::string& step_id, const std::string& outcome) override {
+    done_[step_id] = outcome;
+  }
+  void RecordResult(const nlohmann::json& calibration) override { result_ = calibration; }
+  std::vector<JournalCapture> Captures() const override { return captures_; }
+  std::map<std::string, std::map<std::string, std::string>> Inputs() const override { return inputs_; }
+  std::map<std::string, std::string> DoneSteps() const override { return done_; }
+  std::optional<nlohmann::json> Result() const override { return result_; }
+
+ private:
+  std::vector<JournalCapture> captures_;
+  std::map<std::string, std::map<std::string, std::string>> inputs_;
+  std::map<std::string, std::string> done_;
+  std::optional<nlohmann::json> result_;
+};
+
+}  // namespace
+
+std::unique_ptr<SessionJournal> MakeMemoryJournal() { return std::make_unique<MemoryJournal>(); }
+
+}  // namespace accelcal
