@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include <Eigen/Geometry>
 #include <fmt/format.h>
 
 namespace accelcal {
