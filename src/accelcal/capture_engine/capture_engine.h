@@ -16,7 +16,8 @@
 //               itself when the sensor is still again. The failed samples are dropped.
 //   kAccepted   the capture passed screening (capture_screening.h: NaN, clipping, out of
 //               range), stability and orientation. Final.
-//   kTimedOut   no capture accepted within timeout_s of the first sample:
+//   kTimedOut   no capture accepted within timeout_s of the first sample (a capture already
+//               running when the time is up may finish):
 //               "no stable capture within 60 s: last problem: moving: x std 4.1 counts, limit 2.5"
 //               Final (Restart() tries again).
 //   kRejected   a problem waiting cannot fix: a NaN or clipped reading, the wrong face, a pose
