@@ -79,6 +79,16 @@ fi
 # --help and --version.
 expect 0 "$accelcal" --version
 grep -q "^accelcal [0-9]" "$work/out" || fail "version"
+# A knock during a static capture: left out with its reason, unless the check is turned off.
+cp "$src/scenarios/bench_default.toml" "$work/bump.toml"
+printf '\n[[effects.bump]]\ncapture = 2\nat_s = 4.0\npeak_mps2 = 3.0\nduration_s = 0.05\n' >>"$work/bump.toml"
+expect 0 "$accelcal" simulate "$work/bump.toml" -o "$work/bump.csv"
+expect 0 "$accelcal" fit "$work/bump.csv" -o "$work/bump.json"
+grep -q "fit converged: 17 captures" "$work/out" || fail "bumped capture not left out"
+grep -q '"reason": "not still: .*spike: ' "$work/bump.json" || fail "stability reason not in the file"
+expect 0 "$accelcal" fit "$work/bump.csv" --no-stability-check
+grep -q "fit converged: 18 captures" "$work/out" || fail "--no-stability-check"
+
 for sub in fit apply simulate; do
   expect 0 "$accelcal" "$sub" --help
   grep -q "Example" "$work/out" || fail "$sub --help has no example"

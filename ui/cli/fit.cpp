@@ -4,6 +4,7 @@
 
 #include <fmt/core.h>
 
+#include "accelcal/capture_engine/offline_stability.h"
 #include "accelcal/capture_screening.h"
 #include "accelcal/diagnosis/diagnosis.h"
 #include "accelcal/error.h"
@@ -26,6 +27,8 @@ struct FitCommandOptions {
   std::vector<double> adc_range;
   int min_samples = ScreeningOptions{}.min_samples;
   StaticDetectorOptions detector;
+  bool no_stability_check = false;
+  std::vector<double> noise_floor;  // counts per axis; empty: estimated from the set
   bool quiet = false;
   bool no_diagnose = false;
   GravityFlags gravity;
@@ -62,6 +65,16 @@ void RunFit(const FitCommandOptions& o) {
   if (o.adc_range.size() == 2) screening.adc_range = AdcRange{o.adc_range[0], o.adc_range[1]};
   if (std::string e = screening.Validate(); !e.empty()) throw Error(e);
   ScreenCaptures(loaded.captures, screening);
+  // Recordings' intervals are already static by the detector's own test; a capture set's
+  // captures get the static stability check here.
+  if (o.recording_path.empty() && !o.no_stability_check) {
+    OfflineStabilityOptions stability;
+    if (o.noise_floor.size() == 3) {
+      stability.noise_floor_counts = Eigen::Vector3d(o.noise_floor[0], o.noise_floor[1],
+                                                     o.noise_floor[2]);
+    }
+    ScreenStaticStability(loaded.captures, stability);
+  }
 
   FitOptions fit;
   fit.gravity = gravity;
@@ -127,6 +140,13 @@ void SetupFitCommand(CLI::App& app) {
                   "ADC output range MIN,MAX in counts (readings at either end count as clipped); "
                   "overrides the file's '# adc_range_counts'")
       ->expected(2)->delimiter(',');
+  sub->add_flag("--no-stability-check", opts->no_stability_check,
+                "Capture sets: keep static captures that were not still (a bump, drift); by "
+                "default they are left out with their reason");
+  sub->add_option("--noise-floor", opts->noise_floor,
+                  "Capture sets: noise std X,Y,Z in counts for the stability check; by default "
+                  "the median over the static captures")
+      ->expected(3)->delimiter(',');
   sub->add_option("--min-samples", opts->min_samples, "Shortest usable capture, samples")
       ->capture_default_str();
   sub->add_option("--init-static-s", opts->detector.init_static_s,

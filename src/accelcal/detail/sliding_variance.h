@@ -14,9 +14,8 @@ namespace accelcal::detail {
 // counts^2. Samples closer than h to either end get NaN. window_samples must be odd and >= 3;
 // the samples must be finite.
 //
-// Running sums of x and x^2 suffer cancellation when |x| is large against its spread (raw
-// counts near 33000 with a spread of a few counts): the sums are kept relative to a shifted
-// origin (a sample of the current window), and recomputed from scratch every few thousand
+// The window statistics are detail::WindowSums (shared with the stability check of captures),
+// kept relative to a sample of the current window and rebuilt from scratch every few thousand
 // steps so that neither rounding drift nor a far-moved signal can build up.
 std::vector<Eigen::Vector3d> SlidingWindowVariance(const std::vector<Sample>& samples,
                                                    int window_samples);
