@@ -3,16 +3,7 @@
 # the failure paths. Called by ctest as: fit_cli.sh ACCELCAL SOURCE_DIR SHARED_DATA_DIR
 set -euo pipefail
 accelcal=$1 src=$2 data=$3
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-fail() { echo "FAIL: $*" >&2; exit 1; }
-
-# expect CODE CMD...: runs CMD, checks its exit status, keeps stdout/stderr in $work/out, err.
-expect() {
-  local want=$1; shift
-  set +e; "$@" >"$work/out" 2>"$work/err"; local got=$?; set -e
-  [ "$got" -eq "$want" ] || { cat "$work/err" >&2; fail "'$*' exited $got, expected $want"; }
-}
+source "$(dirname "$0")/lib/common.bash"
 
 # The happy path.
 expect 0 "$accelcal" simulate "$src/scenarios/bench_default.toml" -o "$work/c.csv" --truth "$work/truth.json"

@@ -4,15 +4,7 @@
 # Called by ctest as: record_cli.sh ACCELCAL SOURCE_DIR SHARED_DATA_DIR
 set -euo pipefail
 accelcal=$1 src=$2 data=$3
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-fail() { echo "FAIL: $*" >&2; exit 1; }
-
-expect() {
-  local want=$1; shift
-  set +e; "$@" >"$work/out" 2>"$work/err"; local got=$?; set -e
-  [ "$got" -eq "$want" ] || { cat "$work/err" >&2; fail "'$*' exited $got, expected $want"; }
-}
+source "$(dirname "$0")/lib/common.bash"
 
 # A recording replayed from a file, then fitted: the imu_tk tool's 38 intervals.
 if [ -f "$data/imu_tk/xsens_acc.mat" ]; then

@@ -5,10 +5,7 @@ set -euo pipefail
 
 accelcal=$1
 source_dir=$2
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-
-fail() { echo "FAIL: $*" >&2; exit 1; }
+source "$(dirname "$0")/lib/common.bash"
 
 # Data rows of a capture set: every line that is neither a comment nor the header.
 data_rows() { grep -v '^#' "$1" | tail -n +2 | wc -l; }
