@@ -23,6 +23,9 @@ int main(int argc, char** argv) {
   accelcal::cli::SetupApplyCommand(app);
   accelcal::cli::SetupSimulateCommand(app);
   accelcal::cli::SetupRecordCommand(app);
+  accelcal::cli::SetupSessionsCommand(app);
+  accelcal::cli::SetupExportCommand(app);
+  accelcal::cli::SetupReportCommand(app);
 
   try {
     app.parse(argc, argv);
