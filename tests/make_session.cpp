@@ -10,6 +10,7 @@
 
 #include <fmt/core.h>
 
+#include "accelcal/error.h"
 #include "accelcal/fit/calibration_fit.h"
 #include "accelcal/io/calibration_file.h"
 #include "accelcal/session/session_store.h"

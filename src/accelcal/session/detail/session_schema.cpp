@@ -37,7 +37,12 @@ CREATE TABLE results (seq INTEGER PRIMARY KEY AUTOINCREMENT, calibration_json TE
 }  // namespace
 
 bool IsEmptyDatabase(SqliteDb& db) {
-  return db.QueryInt("SELECT count(*) FROM sqlite_schema") == 0;
+  // The first read tells a file that is not SQLite at all ("file is not a database").
+  try {
+    return db.QueryInt("SELECT count(*) FROM sqlite_schema") == 0;
+  } catch (const Error& e) {
+    throw Error(fmt::format("{} is not an accelcal session ({})", db.path(), e.what()));
+  }
 }
 
 void CreateSessionSchema(SqliteDb& db, const std::string& name, const std::string& procedure,
@@ -55,13 +60,8 @@ void CreateSessionSchema(SqliteDb& db, const std::string& name, const std::strin
 }
 
 void CheckSessionSchema(SqliteDb& db) {
-  // The first read also tells a file that is not SQLite at all ("file is not a database").
-  std::int64_t application_id = 0;
-  try {
-    application_id = db.QueryInt("PRAGMA application_id");
-  } catch (const Error& e) {
-    throw Error(fmt::format("{} is not an accelcal session ({})", db.path(), e.what()));
-  }
+  IsEmptyDatabase(db);  // throws for a file that is not SQLite
+  const std::int64_t application_id = db.QueryInt("PRAGMA application_id");
   const std::int64_t version = db.QueryInt("PRAGMA user_version");
   if (application_id != kSessionApplicationId)
     throw Error(fmt::format("{} is not an accelcal session (a SQLite file of another program)",
