@@ -252,6 +252,25 @@ TEST_F(SessionStoreTest, TheLockDiesWithItsHolder) {
   }
 }
 
+// The statistics columns agree with the samples: n, mean and time range of every row.
+void ExpectStoredStatsMatchSamples(const std::string& path) {
+  sqlite3* db = nullptr;
+  ASSERT_EQ(sqlite3_open_v2(path.c_str(), &db, SQLITE_OPEN_READONLY, nullptr), SQLITE_OK);
+  sqlite3_stmt* row = nullptr;
+  ASSERT_EQ(sqlite3_prepare_v2(db, "SELECT capture_id, n, mean_x_counts, mean_z_counts, t_last_s "
+                                   "FROM captures", -1, &row, nullptr), SQLITE_OK);
+  while (sqlite3_step(row) == SQLITE_ROW) {
+    const int id = sqlite3_column_int(row, 0);
+    const CaptureStats stats = ComputeStats(MakeCapture(id, 1000, static_cast<unsigned>(id)).samples);
+    EXPECT_EQ(sqlite3_column_int64(row, 1), 1000) << id;
+    EXPECT_EQ(sqlite3_column_double(row, 2), stats.mean_counts.x()) << id;
+    EXPECT_EQ(sqlite3_column_double(row, 3), stats.mean_counts.z()) << id;
+    EXPECT_EQ(sqlite3_column_double(row, 4), stats.t_last_s) << id;
+  }
+  sqlite3_finalize(row);
+  sqlite3_close(db);
+}
+
 std::set<int> ReadReportedSteps(int fd) {
   std::string text;
   char buffer[256];
@@ -280,6 +299,7 @@ TEST_F(SessionStoreTest, KillNineAtRandomInstantsLosesNothingCommitted) {
       next_step = std::max(next_step, c.capture.id + 1);
     }
     for (int step : committed) EXPECT_TRUE(seen.count("step_" + std::to_string(step))) << "lost " << step;
+    ExpectStoredStatsMatchSamples(path_);
     return next_step;
   };
   for (int round = 0; round < 20; ++round) {

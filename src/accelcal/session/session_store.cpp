@@ -86,7 +86,16 @@ SessionStore::SessionStore(std::string path, std::unique_ptr<detail::SessionLock
                            std::unique_ptr<detail::SqliteDb> db, bool read_only)
     : path_(std::move(path)), lock_(std::move(lock)), db_(std::move(db)), read_only_(read_only) {}
 
-SessionStore::~SessionStore() = default;
+SessionStore::~SessionStore() {
+  if (read_only_) return;
+  // Back to a rollback journal on a clean close: the file then stands alone (no -wal/-shm
+  // beside it, which read-only readers would otherwise recreate and leave). Best effort: it
+  // fails harmlessly while a reader has the file open, and the next writer sets WAL again.
+  try {
+    db_->Exec("PRAGMA journal_mode = DELETE");
+  } catch (const Error&) {
+  }
+}
 
 void SessionStore::RequireWritable() const {
   if (read_only_) throw Error(fmt::format("session {} was opened read-only", path_));
