@@ -17,5 +17,6 @@ void SetupRecordCommand(CLI::App& app);
 void SetupSessionsCommand(CLI::App& app);
 void SetupExportCommand(CLI::App& app);
 void SetupReportCommand(CLI::App& app);
+void SetupWizardCommand(CLI::App& app);
 
 }  // namespace accelcal::cli
