@@ -1,11 +1,15 @@
 #include "cli/wizard_journal.h"
 
+#include "accelcal/session/session_store.h"
+
 namespace accelcal::cli {
 
-// Replaced by the SQLite store at merge (src/accelcal/session/session_store.h): until then a
-// session lives only as long as the process, and `session_path` is only its name.
-std::unique_ptr<SessionJournal> OpenWizardJournal(const std::string& /*session_path*/) {
-  return MakeMemoryJournal();
+// The SQLite store: created when absent, resumed when present; refused (with the holder's pid)
+// while another accelcal has it open.
+std::unique_ptr<SessionJournal> OpenWizardJournal(const std::string& session_path) {
+  SessionOpenOptions options;
+  options.procedure = "wizard";
+  return SessionStore::Open(session_path, options);
 }
 
 }  // namespace accelcal::cli

@@ -45,7 +45,8 @@ void TouchSession(detail::SqliteDb& db, const std::string& now) {
   touch.Bind(1, now).Run();
 }
 
-// The inputs that name the device and the operator also fill the session row (and devices).
+// The inputs that name the device and the operator (keys "device", "operator", at whichever
+// step asks for them) also fill the session row (and devices).
 void RecordSessionInput(detail::SqliteDb& db, const std::string& key, const std::string& value,
                         const std::string& now) {
   if (key == kDeviceKey) {
@@ -109,7 +110,7 @@ void SessionStore::RecordInput(const std::string& step_id, const std::string& ke
   SqliteStatement(*db_, "INSERT OR REPLACE INTO inputs (step_id, key, value, recorded_utc) "
                         "VALUES (?, ?, ?, ?)")
       .Bind(1, step_id).Bind(2, key).Bind(3, value).Bind(4, now).Run();
-  if (step_id == kSessionStep) RecordSessionInput(*db_, key, value, now);
+  RecordSessionInput(*db_, key, value, now);
   TouchSession(*db_, now);
   transaction.Commit();
 }

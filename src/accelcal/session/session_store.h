@@ -49,8 +49,8 @@ struct SessionInfo {
   std::string name;          // the file's stem
   std::string procedure;
   std::string source;
-  std::string device;        // serial, from the input step "session" key "device"; may be empty
-  std::string operator_name; // from the input step "session" key "operator"; may be empty
+  std::string device;        // serial, from the input key "device"; may be empty
+  std::string operator_name; // from the input key "operator"; may be empty
   std::string created_utc;   // ISO 8601
   std::string updated_utc;
   SessionState state = SessionState::kOpen;
@@ -60,7 +60,8 @@ struct SessionInfo {
   bool has_result = false;
 };
 
-// The step and keys whose inputs also fill the session's device and operator.
+// The input keys that also fill the session's device and operator, at whichever step records
+// them ("session" by convention; the wizard asks at "welcome").
 inline constexpr const char* kSessionStep = "session";
 inline constexpr const char* kDeviceKey = "device";
 inline constexpr const char* kOperatorKey = "operator";
