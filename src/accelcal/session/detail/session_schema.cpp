@@ -1,0 +1,76 @@
+#include "accelcal/session/detail/session_schema.h"
+
+#include <fmt/core.h>
+
+#include "accelcal/error.h"
+#include "accelcal/session/detail/utc_time.h"
+
+namespace accelcal::detail {
+namespace {
+
+constexpr const char* kTables = R"sql(
+CREATE TABLE session (
+  id INTEGER PRIMARY KEY CHECK (id = 1),
+  name TEXT NOT NULL, procedure TEXT NOT NULL, source TEXT NOT NULL,
+  device TEXT NOT NULL DEFAULT '', operator TEXT NOT NULL DEFAULT '',
+  created_utc TEXT NOT NULL, updated_utc TEXT NOT NULL,
+  state TEXT NOT NULL CHECK (state IN ('open', 'done')));
+CREATE TABLE devices (serial TEXT PRIMARY KEY, first_seen_utc TEXT NOT NULL);
+CREATE TABLE captures (
+  seq INTEGER PRIMARY KEY AUTOINCREMENT,
+  step_id TEXT NOT NULL UNIQUE,
+  capture_id INTEGER NOT NULL, kind TEXT NOT NULL CHECK (kind IN ('static', 'turntable')),
+  label TEXT NOT NULL, radius_m REAL, rpm REAL, up_axis TEXT, rejection_reason TEXT NOT NULL,
+  n INTEGER NOT NULL,
+  mean_x_counts REAL, mean_y_counts REAL, mean_z_counts REAL,
+  cov_xx_counts2 REAL, cov_xy_counts2 REAL, cov_xz_counts2 REAL,
+  cov_yy_counts2 REAL, cov_yz_counts2 REAL, cov_zz_counts2 REAL,
+  t_first_s REAL, t_last_s REAL, mean_temp_c REAL,
+  samples BLOB NOT NULL, recorded_utc TEXT NOT NULL);
+CREATE TABLE inputs (step_id TEXT NOT NULL, key TEXT NOT NULL, value TEXT NOT NULL,
+  recorded_utc TEXT NOT NULL, PRIMARY KEY (step_id, key));
+CREATE TABLE steps_done (step_id TEXT PRIMARY KEY, outcome TEXT NOT NULL, recorded_utc TEXT NOT NULL);
+CREATE TABLE results (seq INTEGER PRIMARY KEY AUTOINCREMENT, calibration_json TEXT NOT NULL,
+  recorded_utc TEXT NOT NULL);
+)sql";
+
+}  // namespace
+
+bool IsEmptyDatabase(SqliteDb& db) {
+  // The first read tells a file that is not SQLite at all ("file is not a database").
+  try {
+    return db.QueryInt("SELECT count(*) FROM sqlite_schema") == 0;
+  } catch (const Error& e) {
+    throw Error(fmt::format("{} is not an accelcal session ({})", db.path(), e.what()));
+  }
+}
+
+void CreateSessionSchema(SqliteDb& db, const std::string& name, const std::string& procedure,
+                         const std::string& source) {
+  SqliteTransaction transaction(db);
+  db.Exec(kTables);
+  const std::string now = UtcNowIso8601();
+  SqliteStatement insert(db,
+                         "INSERT INTO session (id, name, procedure, source, created_utc, "
+                         "updated_utc, state) VALUES (1, ?, ?, ?, ?, ?, 'open')");
+  insert.Bind(1, name).Bind(2, procedure).Bind(3, source).Bind(4, now).Bind(5, now).Run();
+  db.Exec(fmt::format("PRAGMA application_id = {}; PRAGMA user_version = {}",
+                      kSessionApplicationId, kSessionSchemaVersion));
+  transaction.Commit();
+}
+
+void CheckSessionSchema(SqliteDb& db) {
+  IsEmptyDatabase(db);  // throws for a file that is not SQLite
+  const std::int64_t application_id = db.QueryInt("PRAGMA application_id");
+  const std::int64_t version = db.QueryInt("PRAGMA user_version");
+  if (application_id != kSessionApplicationId)
+    throw Error(fmt::format("{} is not an accelcal session (a SQLite file of another program)",
+                            db.path()));
+  if (version > kSessionSchemaVersion)
+    throw Error(fmt::format("session {} has schema version {}, newer than this accelcal reads "
+                            "({}): use a newer accelcal", db.path(), version, kSessionSchemaVersion));
+  if (version < 1)
+    throw Error(fmt::format("session {} has an unknown schema version {}", db.path(), version));
+}
+
+}  // namespace accelcal::detail

@@ -1,0 +1,135 @@
+#include "accelcal/session/detail/sqlite_db.h"
+
+#include <cmath>
+
+#include <fmt/core.h>
+#include <sqlite3.h>
+
+#include "accelcal/error.h"
+
+namespace accelcal::detail {
+
+SqliteDb::SqliteDb(const std::string& path, bool read_only) : path_(path) {
+  const int flags = read_only ? SQLITE_OPEN_READONLY : (SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE);
+  const int rc = sqlite3_open_v2(path.c_str(), &db_, flags | SQLITE_OPEN_NOMUTEX, nullptr);
+  if (rc != SQLITE_OK) {
+    const std::string message = db_ ? sqlite3_errmsg(db_) : sqlite3_errstr(rc);
+    sqlite3_close(db_);
+    db_ = nullptr;
+    throw Error(fmt::format("session {}: cannot open: {}", path, message));
+  }
+  sqlite3_extended_result_codes(db_, 1);
+  // A reader may meet a writer's checkpoint; wait for it rather than fail at once.
+  sqlite3_busy_timeout(db_, 5000);
+}
+
+SqliteDb::~SqliteDb() { sqlite3_close(db_); }
+
+std::string SqliteDb::Describe(const std::string& what) const {
+  return fmt::format("session {}: {}: {}", path_, what, sqlite3_errmsg(db_));
+}
+
+void SqliteDb::Exec(const std::string& sql) {
+  char* message = nullptr;
+  if (sqlite3_exec(db_, sql.c_str(), nullptr, nullptr, &message) != SQLITE_OK) {
+    const std::string text = message ? message : "unknown error";
+    sqlite3_free(message);
+    throw Error(fmt::format("session {}: {}", path_, text));
+  }
+}
+
+std::int64_t SqliteDb::QueryInt(const std::string& sql) {
+  SqliteStatement statement(*this, sql);
+  return statement.Step() ? statement.ColumnInt(0) : 0;
+}
+
+SqliteStatement::SqliteStatement(SqliteDb& db, const std::string& sql) : db_(db) {
+  if (sqlite3_prepare_v2(db.handle(), sql.c_str(), -1, &stmt_, nullptr) != SQLITE_OK)
+    throw Error(db_.Describe("cannot prepare a query"));
+}
+
+SqliteStatement::~SqliteStatement() { sqlite3_finalize(stmt_); }
+
+namespace {
+void Check(int rc, const SqliteDb& db) {
+  if (rc != SQLITE_OK) throw Error(db.Describe("cannot bind a value"));
+}
+}  // namespace
+
+SqliteStatement& SqliteStatement::Bind(int index, double value) {
+  if (std::isnan(value)) return BindNull(index);
+  Check(sqlite3_bind_double(stmt_, index, value), db_);
+  return *this;
+}
+
+SqliteStatement& SqliteStatement::Bind(int index, std::int64_t value) {
+  Check(sqlite3_bind_int64(stmt_, index, value), db_);
+  return *this;
+}
+
+SqliteStatement& SqliteStatement::Bind(int index, const std::string& value) {
+  Check(sqlite3_bind_text(stmt_, index, value.data(), static_cast<int>(value.size()),
+                          SQLITE_TRANSIENT), db_);
+  return *this;
+}
+
+SqliteStatement& SqliteStatement::BindBlob(int index, const std::vector<unsigned char>& bytes) {
+  // A zero-length blob, not NULL, for an empty vector.
+  Check(sqlite3_bind_blob64(stmt_, index, bytes.empty() ? "" : static_cast<const void*>(bytes.data()),
+                            bytes.size(), SQLITE_TRANSIENT), db_);
+  return *this;
+}
+
+SqliteStatement& SqliteStatement::BindNull(int index) {
+  Check(sqlite3_bind_null(stmt_, index), db_);
+  return *this;
+}
+
+bool SqliteStatement::Step() {
+  const int rc = sqlite3_step(stmt_);
+  if (rc == SQLITE_ROW) return true;
+  if (rc == SQLITE_DONE) return false;
+  throw Error(db_.Describe("query failed"));
+}
+
+void SqliteStatement::Run() {
+  while (Step()) {
+  }
+}
+
+double SqliteStatement::ColumnDouble(int index) const {
+  return ColumnIsNull(index) ? std::nan("") : sqlite3_column_double(stmt_, index);
+}
+
+std::int64_t SqliteStatement::ColumnInt(int index) const { return sqlite3_column_int64(stmt_, index); }
+
+std::string SqliteStatement::ColumnText(int index) const {
+  const unsigned char* text = sqlite3_column_text(stmt_, index);
+  if (!text) return {};
+  return std::string(reinterpret_cast<const char*>(text),
+                     static_cast<size_t>(sqlite3_column_bytes(stmt_, index)));
+}
+
+std::vector<unsigned char> SqliteStatement::ColumnBlob(int index) const {
+  const auto* data = static_cast<const unsigned char*>(sqlite3_column_blob(stmt_, index));
+  const int size = sqlite3_column_bytes(stmt_, index);
+  if (!data || size <= 0) return {};
+  return std::vector<unsigned char>(data, data + size);
+}
+
+bool SqliteStatement::ColumnIsNull(int index) const {
+  return sqlite3_column_type(stmt_, index) == SQLITE_NULL;
+}
+
+SqliteTransaction::SqliteTransaction(SqliteDb& db) : db_(db) { db_.Exec("BEGIN IMMEDIATE"); }
+
+SqliteTransaction::~SqliteTransaction() {
+  if (!done_) sqlite3_exec(db_.handle(), "ROLLBACK", nullptr, nullptr, nullptr);
+}
+
+void SqliteTransaction::Commit() {
+  db_.Exec("COMMIT");
+  done_ = true;
+}
+
+}  // namespace accelcal::detail

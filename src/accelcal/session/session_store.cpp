@@ -1,0 +1,205 @@
+#include "accelcal/session/session_store.h"
+
+#include <filesystem>
+
+#include <fmt/core.h>
+
+#include "accelcal/error.h"
+#include "accelcal/session/detail/capture_rows.h"
+#include "accelcal/session/detail/session_lock.h"
+#include "accelcal/session/detail/session_schema.h"
+#include "accelcal/session/detail/sqlite_db.h"
+#include "accelcal/session/detail/utc_time.h"
+
+namespace accelcal {
+
+using detail::SqliteStatement;
+using detail::SqliteTransaction;
+
+std::string SessionOpenOptions::Validate() const {
+  if (read_only && (!procedure.empty() || !source.empty()))
+    return "a read-only open cannot set the procedure or the source";
+  return "";
+}
+
+std::string_view SessionStateToString(SessionState state) {
+  return state == SessionState::kDone ? "done" : "open";
+}
+
+std::optional<SessionState> StringToSessionState(std::string_view text) {
+  if (text == "open") return SessionState::kOpen;
+  if (text == "done") return SessionState::kDone;
+  return std::nullopt;
+}
+
+namespace {
+
+void ConfigureWriter(detail::SqliteDb& db) {
+  // WAL: readers (sessions, export, report) never block the wizard; FULL: each commit is
+  // fsynced, so it survives a power loss as well as a kill -9.
+  db.Exec("PRAGMA journal_mode = WAL; PRAGMA synchronous = FULL; PRAGMA foreign_keys = ON");
+}
+
+void TouchSession(detail::SqliteDb& db, const std::string& now) {
+  SqliteStatement touch(db, "UPDATE session SET updated_utc = ? WHERE id = 1");
+  touch.Bind(1, now).Run();
+}
+
+// The inputs that name the device and the operator (keys "device", "operator", at whichever
+// step asks for them) also fill the session row (and devices).
+void RecordSessionInput(detail::SqliteDb& db, const std::string& key, const std::string& value,
+                        const std::string& now) {
+  if (key == kDeviceKey) {
+    SqliteStatement(db, "UPDATE session SET device = ? WHERE id = 1").Bind(1, value).Run();
+    SqliteStatement(db, "INSERT OR IGNORE INTO devices (serial, first_seen_utc) VALUES (?, ?)")
+        .Bind(1, value).Bind(2, now).Run();
+  } else if (key == kOperatorKey) {
+    SqliteStatement(db, "UPDATE session SET operator = ? WHERE id = 1").Bind(1, value).Run();
+  }
+}
+
+std::string StemOf(const std::string& path) { return std::filesystem::path(path).stem().string(); }
+
+}  // namespace
+
+std::unique_ptr<SessionStore> SessionStore::Open(const std::string& path,
+                                                 const SessionOpenOptions& options) {
+  if (std::string e = options.Validate(); !e.empty()) throw Error("session options: " + e);
+  const bool exists = std::filesystem::exists(path);
+  if (!exists && (options.read_only || !options.create_if_missing))
+    throw Error(fmt::format("no session at {}", path));
+  // The lock comes first, so that two processes never create or check the schema at once.
+  std::unique_ptr<detail::SessionLock> lock;
+  if (!options.read_only) lock = std::make_unique<detail::SessionLock>(path);
+  auto db = std::make_unique<detail::SqliteDb>(path, options.read_only);
+  if (!options.read_only && detail::IsEmptyDatabase(*db)) {
+    ConfigureWriter(*db);
+    detail::CreateSessionSchema(*db, StemOf(path), options.procedure, options.source);
+  } else {
+    detail::CheckSessionSchema(*db);
+    if (!options.read_only) ConfigureWriter(*db);
+  }
+  return std::unique_ptr<SessionStore>(
+      new SessionStore(path, std::move(lock), std::move(db), options.read_only));
+}
+
+SessionStore::SessionStore(std::string path, std::unique_ptr<detail::SessionLock> lock,
+                           std::unique_ptr<detail::SqliteDb> db, bool read_only)
+    : path_(std::move(path)), lock_(std::move(lock)), db_(std::move(db)), read_only_(read_only) {}
+
+SessionStore::~SessionStore() {
+  if (read_only_) return;
+  // Back to a rollback journal on a clean close: the file then stands alone (no -wal/-shm
+  // beside it, which read-only readers would otherwise recreate and leave). Best effort: it
+  // fails harmlessly while a reader has the file open, and the next writer sets WAL again.
+  try {
+    db_->Exec("PRAGMA journal_mode = DELETE");
+  } catch (const Error&) {
+  }
+}
+
+void SessionStore::RequireWritable() const {
+  if (read_only_) throw Error(fmt::format("session {} was opened read-only", path_));
+}
+
+void SessionStore::RecordInput(const std::string& step_id, const std::string& key,
+                               const std::string& value) {
+  RequireWritable();
+  const std::string now = detail::UtcNowIso8601();
+  SqliteTransaction transaction(*db_);
+  SqliteStatement(*db_, "INSERT OR REPLACE INTO inputs (step_id, key, value, recorded_utc) "
+                        "VALUES (?, ?, ?, ?)")
+      .Bind(1, step_id).Bind(2, key).Bind(3, value).Bind(4, now).Run();
+  RecordSessionInput(*db_, key, value, now);
+  TouchSession(*db_, now);
+  transaction.Commit();
+}
+
+void SessionStore::RecordCapture(const std::string& step_id, const Capture& capture) {
+  RequireWritable();
+  const std::string now = detail::UtcNowIso8601();
+  SqliteTransaction transaction(*db_);
+  detail::InsertCaptureRow(*db_, step_id, capture, now);
+  TouchSession(*db_, now);
+  transaction.Commit();
+}
+
+void SessionStore::RecordStepDone(const std::string& step_id, const std::string& outcome) {
+  RequireWritable();
+  const std::string now = detail::UtcNowIso8601();
+  SqliteTransaction transaction(*db_);
+  SqliteStatement(*db_, "INSERT OR REPLACE INTO steps_done (step_id, outcome, recorded_utc) "
+                        "VALUES (?, ?, ?)")
+      .Bind(1, step_id).Bind(2, outcome).Bind(3, now).Run();
+  TouchSession(*db_, now);
+  transaction.Commit();
+}
+
+void SessionStore::RecordResult(const nlohmann::json& calibration) {
+  RequireWritable();
+  const std::string now = detail::UtcNowIso8601();
+  SqliteTransaction transaction(*db_);
+  // Earlier results stay as history; Result() is the latest.
+  SqliteStatement(*db_, "INSERT INTO results (calibration_json, recorded_utc) VALUES (?, ?)")
+      .Bind(1, calibration.dump()).Bind(2, now).Run();
+  TouchSession(*db_, now);
+  transaction.Commit();
+}
+
+void SessionStore::MarkDone() {
+  RequireWritable();
+  const std::string now = detail::UtcNowIso8601();
+  SqliteTransaction transaction(*db_);
+  SqliteStatement(*db_, "UPDATE session SET state = 'done' WHERE id = 1").Run();
+  TouchSession(*db_, now);
+  transaction.Commit();
+}
+
+std::vector<JournalCapture> SessionStore::Captures() const { return detail::ReadCaptureRows(*db_); }
+
+std::map<std::string, std::map<std::string, std::string>> SessionStore::Inputs() const {
+  std::map<std::string, std::map<std::string, std::string>> out;
+  SqliteStatement rows(*db_, "SELECT step_id, key, value FROM inputs");
+  while (rows.Step()) out[rows.ColumnText(0)][rows.ColumnText(1)] = rows.ColumnText(2);
+  return out;
+}
+
+std::map<std::string, std::string> SessionStore::DoneSteps() const {
+  std::map<std::string, std::string> out;
+  SqliteStatement rows(*db_, "SELECT step_id, outcome FROM steps_done");
+  while (rows.Step()) out[rows.ColumnText(0)] = rows.ColumnText(1);
+  return out;
+}
+
+std::optional<nlohmann::json> SessionStore::Result() const {
+  SqliteStatement row(*db_, "SELECT calibration_json FROM results ORDER BY seq DESC LIMIT 1");
+  if (!row.Step()) return std::nullopt;
+  try {
+    return nlohmann::json::parse(row.ColumnText(0));
+  } catch (const nlohmann::json::exception& e) {
+    throw Error(fmt::format("session {}: the stored calibration is damaged: {}", path_, e.what()));
+  }
+}
+
+SessionInfo SessionStore::Info() const {
+  SessionInfo info;
+  info.path = path_;
+  SqliteStatement row(*db_, "SELECT name, procedure, source, device, operator, created_utc, "
+                            "updated_utc, state FROM session WHERE id = 1");
+  if (!row.Step()) throw Error(fmt::format("session {} is damaged: no session row", path_));
+  info.name = row.ColumnText(0);
+  info.procedure = row.ColumnText(1);
+  info.source = row.ColumnText(2);
+  info.device = row.ColumnText(3);
+  info.operator_name = row.ColumnText(4);
+  info.created_utc = row.ColumnText(5);
+  info.updated_utc = row.ColumnText(6);
+  info.state = StringToSessionState(row.ColumnText(7)).value_or(SessionState::kOpen);
+  info.num_captures = static_cast<long>(db_->QueryInt("SELECT count(*) FROM captures"));
+  info.num_inputs = static_cast<long>(db_->QueryInt("SELECT count(*) FROM inputs"));
+  info.num_done_steps = static_cast<long>(db_->QueryInt("SELECT count(*) FROM steps_done"));
+  info.has_result = db_->QueryInt("SELECT count(*) FROM results") > 0;
+  return info;
+}
+
+}  // namespace accelcal

@@ -1,0 +1,104 @@
+// The session store: a SessionJournal kept in one SQLite file per session (the file IS the
+// session). Schema: detail/session_schema.h.
+//
+// Durability: WAL journal with synchronous=FULL, and every Record* is one transaction that has
+// committed when the call returns, so a kill -9 (or a power loss) at any instant loses nothing
+// that was recorded; a transaction cut short leaves no trace.
+//
+// One writer: a read-write Open takes an advisory lock (detail/session_lock.h) that the OS
+// releases when the process dies, so a second wizard is refused while the first lives and a
+// session left by a killed one opens at once. Read-only opens take no lock and work while a
+// wizard writes.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "accelcal/wizard/session_journal.h"
+
+namespace accelcal {
+
+namespace detail {
+class SqliteDb;
+class SessionLock;
+}  // namespace detail
+
+struct SessionOpenOptions {
+  // Open without writing and without the lock (sessions, export, report). The file must exist.
+  bool read_only = false;
+  // Read-write only: create the session when the file does not exist (else it must exist).
+  bool create_if_missing = true;
+  // Stored when the session is created (ignored when it exists): the procedure's name and the
+  // sample source's spec (e.g. "sim", "serial:/dev/ttyUSB0").
+  std::string procedure;
+  std::string source;
+
+  // Empty when valid, else the problem.
+  std::string Validate() const;
+};
+
+enum class SessionState { kOpen, kDone };
+std::string_view SessionStateToString(SessionState state);       // "open" / "done"
+std::optional<SessionState> StringToSessionState(std::string_view text);
+
+struct SessionInfo {
+  std::string path;
+  std::string name;          // the file's stem
+  std::string procedure;
+  std::string source;
+  std::string device;        // serial, from the input key "device"; may be empty
+  std::string operator_name; // from the input key "operator"; may be empty
+  std::string created_utc;   // ISO 8601
+  std::string updated_utc;
+  SessionState state = SessionState::kOpen;
+  long num_captures = 0;
+  long num_inputs = 0;
+  long num_done_steps = 0;
+  bool has_result = false;
+};
+
+// The input keys that also fill the session's device and operator, at whichever step records
+// them ("session" by convention; the wizard asks at "welcome").
+inline constexpr const char* kSessionStep = "session";
+inline constexpr const char* kDeviceKey = "device";
+inline constexpr const char* kOperatorKey = "operator";
+
+class SessionStore final : public SessionJournal {
+ public:
+  // Opens (or creates) the session at `path`. Throws accelcal::Error: another accelcal holds it
+  // ("session PATH is open in another accelcal (pid N)"), it is missing (read-only or
+  // !create_if_missing), not an accelcal session, or of a newer schema version.
+  static std::unique_ptr<SessionStore> Open(const std::string& path, const SessionOpenOptions& options);
+  ~SessionStore() override;
+
+  void RecordInput(const std::string& step_id, const std::string& key,
+                   const std::string& value) override;
+  void RecordCapture(const std::string& step_id, const Capture& capture) override;
+  void RecordStepDone(const std::string& step_id, const std::string& outcome) override;
+  void RecordResult(const nlohmann::json& calibration) override;
+
+  std::vector<JournalCapture> Captures() const override;
+  std::map<std::string, std::map<std::string, std::string>> Inputs() const override;
+  std::map<std::string, std::string> DoneSteps() const override;
+  std::optional<nlohmann::json> Result() const override;
+
+  SessionInfo Info() const;
+  // The session is finished (state 'done'); one transaction.
+  void MarkDone();
+  const std::string& path() const { return path_; }
+
+ private:
+  SessionStore(std::string path, std::unique_ptr<detail::SessionLock> lock,
+               std::unique_ptr<detail::SqliteDb> db, bool read_only);
+  void RequireWritable() const;
+
+  std::string path_;
+  std::unique_ptr<detail::SessionLock> lock_;  // owned; null when read-only. Released after db_.
+  std::unique_ptr<detail::SqliteDb> db_;       // owned
+  bool read_only_ = false;
+};
+
+}  // namespace accelcal

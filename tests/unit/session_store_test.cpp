@@ -1,0 +1,328 @@
+// The SQLite session store: round trips, refusals, the lock, and durability under kill -9.
+#include "accelcal/session/session_store.h"
+
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <set>
+#include <string>
+
+#include <gtest/gtest.h>
+#include <sqlite3.h>
+
+#include "accelcal/error.h"
+#include "test_support.h"
+
+namespace accelcal {
+namespace {
+
+namespace fs = std::filesystem;
+using testing::Contains;
+
+class SessionStoreTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() /
+           ("accelcal_store_" + std::to_string(getpid()) + "_" +
+            ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+    path_ = (dir_ / "s.db").string();
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  static SessionOpenOptions Writer() {
+    SessionOpenOptions o;
+    o.procedure = "bench_default";
+    o.source = "sim";
+    return o;
+  }
+  static SessionOpenOptions Reader() {
+    SessionOpenOptions o;
+    o.read_only = true;
+    return o;
+  }
+
+  fs::path dir_;
+  std::string path_;
+};
+
+// A capture with awkward values: fractions, a NaN temperature, negative zero.
+Capture MakeCapture(int id, int n, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::normal_distribution<double> noise(0.0, 1.3);
+  Capture c;
+  c.id = id;
+  c.kind = id % 2 ? CaptureKind::kTurntable : CaptureKind::kStatic;
+  c.label = "pose, \"" + std::to_string(id) + "\"";
+  if (c.kind == CaptureKind::kTurntable) {
+    c.radius_m = 0.05 + 0.001 * id;
+    c.rpm = 120.0;
+    c.up_axis = SensorAxis::kMinusY;
+  }
+  for (int k = 0; k < n; ++k) {
+    Sample s;
+    s.t_s = 10.0 * id + k / 100.0;
+    s.raw_counts = Eigen::Vector3d(2048 + noise(rng), 2047.5 + noise(rng), k == 0 ? -0.0 : 2400 + noise(rng));
+    s.temp_c = k % 3 == 0 ? kNaN : 25.0 + 0.001 * k;
+    c.samples.push_back(s);
+  }
+  return c;
+}
+
+bool SameBits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+
+void ExpectSameCapture(const Capture& a, const Capture& b) {
+  EXPECT_EQ(a.id, b.id);
+  EXPECT_EQ(a.kind, b.kind);
+  EXPECT_EQ(a.label, b.label);
+  EXPECT_TRUE(SameBits(a.radius_m, b.radius_m) || (std::isnan(a.radius_m) && std::isnan(b.radius_m)));
+  EXPECT_TRUE(SameBits(a.rpm, b.rpm) || (std::isnan(a.rpm) && std::isnan(b.rpm)));
+  EXPECT_EQ(a.up_axis, b.up_axis);
+  EXPECT_EQ(a.rejection_reason, b.rejection_reason);
+  ASSERT_EQ(a.samples.size(), b.samples.size());
+  for (size_t i = 0; i < a.samples.size(); ++i) {
+    EXPECT_TRUE(SameBits(a.samples[i].t_s, b.samples[i].t_s));
+    for (int j = 0; j < 3; ++j)
+      EXPECT_TRUE(SameBits(a.samples[i].raw_counts(j), b.samples[i].raw_counts(j))) << i << " " << j;
+    EXPECT_TRUE(SameBits(a.samples[i].temp_c, b.samples[i].temp_c)) << i;
+  }
+}
+
+TEST_F(SessionStoreTest, RoundTripsEverythingThroughAReopen) {
+  const Capture first = MakeCapture(1, 500, 1);
+  Capture second = MakeCapture(2, 300, 2);
+  second.rejection_reason = "not still: moving";
+  const nlohmann::json result = {{"format", "accelcal-calibration/1"}, {"x", 0.1 + 0.2}};
+  {
+    auto store = SessionStore::Open(path_, Writer());
+    store->RecordInput("session", "device", "SN-42");
+    store->RecordInput("session", "operator", "Ada");
+    store->RecordInput("mount", "radius_m", "0.05");
+    store->RecordInput("mount", "radius_m", "0.051");  // replaces
+    store->RecordCapture("face_1", first);
+    store->RecordStepDone("level", "leveled");
+    store->RecordCapture("table_1", second);
+    store->RecordResult(result);
+    store->MarkDone();
+  }
+  auto store = SessionStore::Open(path_, Reader());
+  const std::vector<JournalCapture> captures = store->Captures();
+  ASSERT_EQ(captures.size(), 2u);
+  EXPECT_EQ(captures[0].step_id, "face_1");
+  EXPECT_EQ(captures[1].step_id, "table_1");
+  ExpectSameCapture(captures[0].capture, first);
+  ExpectSameCapture(captures[1].capture, second);
+  EXPECT_EQ(store->Inputs().at("mount").at("radius_m"), "0.051");
+  EXPECT_EQ(store->Inputs().at("session").at("device"), "SN-42");
+  EXPECT_EQ(store->DoneSteps().at("level"), "leveled");
+  ASSERT_TRUE(store->Result().has_value());
+  EXPECT_EQ(*store->Result(), result);
+  const SessionInfo info = store->Info();
+  EXPECT_EQ(info.name, "s");
+  EXPECT_EQ(info.procedure, "bench_default");
+  EXPECT_EQ(info.source, "sim");
+  EXPECT_EQ(info.device, "SN-42");
+  EXPECT_EQ(info.operator_name, "Ada");
+  EXPECT_EQ(info.state, SessionState::kDone);
+  EXPECT_EQ(info.num_captures, 2);
+  EXPECT_EQ(info.num_inputs, 3);
+  EXPECT_EQ(info.num_done_steps, 1);
+  EXPECT_TRUE(info.has_result);
+  EXPECT_FALSE(info.created_utc.empty());
+  EXPECT_GE(info.updated_utc, info.created_utc);
+}
+
+TEST_F(SessionStoreTest, ASecondCaptureForAStepIsRefusedAndChangesNothing) {
+  auto store = SessionStore::Open(path_, Writer());
+  store->RecordCapture("face_1", MakeCapture(1, 50, 1));
+  try {
+    store->RecordCapture("face_1", MakeCapture(7, 60, 2));
+    FAIL() << "no error";
+  } catch (const Error& e) {
+    EXPECT_TRUE(Contains(e.what(), "step 'face_1' already has an accepted capture")) << e.what();
+  }
+  const std::vector<JournalCapture> captures = store->Captures();
+  ASSERT_EQ(captures.size(), 1u);
+  EXPECT_EQ(captures[0].capture.id, 1);
+  EXPECT_EQ(captures[0].capture.samples.size(), 50u);
+  store->RecordCapture("face_2", MakeCapture(2, 10, 3));  // the store still works
+  EXPECT_EQ(store->Captures().size(), 2u);
+}
+
+TEST_F(SessionStoreTest, RefusesANewerSchemaAndForeignFiles) {
+  SessionStore::Open(path_, Writer()).reset();
+  sqlite3* db = nullptr;
+  ASSERT_EQ(sqlite3_open(path_.c_str(), &db), SQLITE_OK);
+  ASSERT_EQ(sqlite3_exec(db, "PRAGMA user_version = 99", nullptr, nullptr, nullptr), SQLITE_OK);
+  sqlite3_close(db);
+  try {
+    SessionStore::Open(path_, Reader());
+    FAIL() << "no error";
+  } catch (const Error& e) {
+    EXPECT_TRUE(Contains(e.what(), "schema version 99, newer than this accelcal reads (1)")) << e.what();
+  }
+  const std::string text_file = (dir_ / "notes.db").string();
+  { std::ofstream(text_file) << "this is not a database, just text long enough to be read\n"; }
+  try {
+    SessionStore::Open(text_file, Writer());
+    FAIL() << "no error";
+  } catch (const Error& e) {
+    EXPECT_TRUE(Contains(e.what(), "is not an accelcal session")) << e.what();
+  }
+  EXPECT_THROW(SessionStore::Open((dir_ / "missing.db").string(), Reader()), Error);
+}
+
+TEST_F(SessionStoreTest, ReadOnlyOpenCannotWrite) {
+  SessionStore::Open(path_, Writer()).reset();
+  auto store = SessionStore::Open(path_, Reader());
+  EXPECT_THROW(store->RecordStepDone("x", "done"), Error);
+}
+
+// Runs `fn` in a child process; returns its exit status (or 128 + signal).
+template <typename Fn>
+int InChild(Fn&& fn) {
+  const pid_t pid = fork();
+  if (pid == 0) _exit(fn());
+  int status = 0;
+  waitpid(pid, &status, 0);
+  return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+}
+
+TEST_F(SessionStoreTest, ASecondWriterIsRefusedWithThePidAndReadersStillWork) {
+  auto store = SessionStore::Open(path_, Writer());
+  store->RecordCapture("face_1", MakeCapture(1, 20, 1));
+  const std::string pid = std::to_string(getpid());
+  const std::string want = "session " + path_ + " is open in another accelcal (pid " + pid + ")";
+  const int status = InChild([&] {
+    try {
+      SessionStore::Open(path_, Writer());
+      return 2;
+    } catch (const Error& e) {
+      if (std::string(e.what()) != want) return 3;
+    }
+    try {
+      return SessionStore::Open(path_, Reader())->Captures().size() == 1 ? 0 : 4;
+    } catch (const Error&) {
+      return 5;
+    }
+  });
+  EXPECT_EQ(status, 0) << "2: not refused, 3: wrong message, 4/5: reader failed";
+  // Within one process, too (flock is per open file).
+  EXPECT_THROW(SessionStore::Open(path_, Writer()), Error);
+}
+
+TEST_F(SessionStoreTest, TheLockDiesWithItsHolder) {
+  int ready[2];
+  ASSERT_EQ(pipe(ready), 0);
+  const pid_t pid = fork();
+  if (pid == 0) {
+    auto store = SessionStore::Open(path_, Writer());
+    store->RecordStepDone("level", "leveled");
+    char c = 1;
+    if (write(ready[1], &c, 1) != 1) _exit(1);
+    pause();  // holds the lock until killed
+    _exit(0);
+  }
+  char c = 0;
+  ASSERT_EQ(read(ready[0], &c, 1), 1);
+  EXPECT_THROW(SessionStore::Open(path_, Writer()), Error);
+  kill(pid, SIGKILL);
+  waitpid(pid, nullptr, 0);
+  close(ready[0]);
+  close(ready[1]);
+  auto store = SessionStore::Open(path_, Writer());  // the stale lock file does not block
+  EXPECT_EQ(store->DoneSteps().at("level"), "leveled");
+}
+
+// The child records captures in a loop from `first_step`, reporting each step id on `fd` only
+// after RecordCapture returned (so whatever the parent read must be in the store).
+[[noreturn]] void RecordForever(const std::string& path, int first_step, int fd) {
+  SessionOpenOptions o;
+  auto store = SessionStore::Open(path, o);
+  for (int step = first_step;; ++step) {
+    store->RecordCapture("step_" + std::to_string(step), MakeCapture(step, 1000, static_cast<unsigned>(step)));
+    const std::string line = std::to_string(step) + "\n";
+    if (write(fd, line.data(), line.size()) < 0) _exit(1);
+  }
+}
+
+// The statistics columns agree with the samples: n, mean and time range of every row.
+void ExpectStoredStatsMatchSamples(const std::string& path) {
+  sqlite3* db = nullptr;
+  ASSERT_EQ(sqlite3_open_v2(path.c_str(), &db, SQLITE_OPEN_READONLY, nullptr), SQLITE_OK);
+  sqlite3_stmt* row = nullptr;
+  ASSERT_EQ(sqlite3_prepare_v2(db, "SELECT capture_id, n, mean_x_counts, mean_z_counts, t_last_s "
+                                   "FROM captures", -1, &row, nullptr), SQLITE_OK);
+  while (sqlite3_step(row) == SQLITE_ROW) {
+    const int id = sqlite3_column_int(row, 0);
+    const CaptureStats stats = ComputeStats(MakeCapture(id, 1000, static_cast<unsigned>(id)).samples);
+    EXPECT_EQ(sqlite3_column_int64(row, 1), 1000) << id;
+    EXPECT_EQ(sqlite3_column_double(row, 2), stats.mean_counts.x()) << id;
+    EXPECT_EQ(sqlite3_column_double(row, 3), stats.mean_counts.z()) << id;
+    EXPECT_EQ(sqlite3_column_double(row, 4), stats.t_last_s) << id;
+  }
+  sqlite3_finalize(row);
+  sqlite3_close(db);
+}
+
+std::set<int> ReadReportedSteps(int fd) {
+  std::string text;
+  char buffer[256];
+  for (ssize_t n; (n = read(fd, buffer, sizeof buffer)) > 0;) text.append(buffer, static_cast<size_t>(n));
+  std::set<int> steps;
+  size_t start = 0;
+  for (size_t end; (end = text.find('\n', start)) != std::string::npos; start = end + 1)
+    steps.insert(std::stoi(text.substr(start, end - start)));
+  return steps;
+}
+
+TEST_F(SessionStoreTest, KillNineAtRandomInstantsLosesNothingCommitted) {
+  std::mt19937 rng(20240601);
+  std::uniform_int_distribution<int> delay_us(0, 60000);
+  std::set<int> committed;  // every step a child reported
+  // Opens after a kill (no stale lock) and checks: every capture whole, no step twice, every
+  // reported step there. Returns the next step to record.
+  auto check = [&]() {
+    int next_step = 1;
+    auto store = SessionStore::Open(path_, Writer());
+    std::set<std::string> seen;
+    for (const JournalCapture& c : store->Captures()) {
+      EXPECT_TRUE(seen.insert(c.step_id).second) << "duplicate " << c.step_id;
+      EXPECT_EQ(c.capture.samples.size(), 1000u) << c.step_id;
+      ExpectSameCapture(c.capture, MakeCapture(c.capture.id, 1000, static_cast<unsigned>(c.capture.id)));
+      next_step = std::max(next_step, c.capture.id + 1);
+    }
+    for (int step : committed) EXPECT_TRUE(seen.count("step_" + std::to_string(step))) << "lost " << step;
+    ExpectStoredStatsMatchSamples(path_);
+    return next_step;
+  };
+  for (int round = 0; round < 20; ++round) {
+    const int next_step = check();
+    if (::testing::Test::HasFailure()) return;
+    int fds[2];
+    ASSERT_EQ(pipe(fds), 0);
+    const pid_t pid = fork();
+    if (pid == 0) {
+      close(fds[0]);
+      RecordForever(path_, next_step, fds[1]);
+    }
+    close(fds[1]);
+    usleep(static_cast<useconds_t>(delay_us(rng)));
+    kill(pid, SIGKILL);
+    waitpid(pid, nullptr, 0);
+    const std::set<int> reported = ReadReportedSteps(fds[0]);
+    close(fds[0]);
+    committed.insert(reported.begin(), reported.end());
+  }
+  check();
+  EXPECT_GT(committed.size(), 5u) << "the children hardly recorded anything; the test proves little";
+}
+
+}  // namespace
+}  // namespace accelcal

@@ -1,0 +1,53 @@
+// `accelcal export`: a session's accepted captures as a capture-set file (CSV), which
+// `accelcal fit` reads.
+#include <iostream>
+#include <memory>
+
+#include <fmt/core.h>
+
+#include "accelcal/error.h"
+#include "accelcal/io/capture_set_writer.h"
+#include "accelcal/session/session_paths.h"
+#include "accelcal/session/session_store.h"
+#include "cli/commands.h"
+
+namespace accelcal::cli {
+namespace {
+
+struct ExportCommandOptions {
+  std::string session;      // path or name in the default directory
+  std::string output_path;
+};
+
+void RunExport(const ExportCommandOptions& o) {
+  SessionOpenOptions read_only;
+  read_only.read_only = true;
+  const std::string path = ResolveSessionPath(o.session);
+  const std::unique_ptr<SessionStore> store = SessionStore::Open(path, read_only);
+  CaptureSet set;
+  set.source_name = path;
+  for (JournalCapture& c : store->Captures()) set.captures.push_back(std::move(c.capture));
+  if (set.captures.empty()) throw Error(fmt::format("session {} has no accepted captures yet", path));
+  WriteCaptureSetFile(o.output_path, set);
+  std::cout << fmt::format("{} captures of session {} written to {}\n", set.captures.size(), path,
+                           o.output_path);
+}
+
+}  // namespace
+
+void SetupExportCommand(CLI::App& app) {
+  auto opts = std::make_shared<ExportCommandOptions>();
+  CLI::App* sub = app.add_subcommand(
+      "export",
+      "Write a session's accepted captures (every sample, with up_axis) as a capture-set file\n"
+      "(CSV, format in README.md) that `accelcal fit` reads. Works while a wizard is running.\n\n"
+      "Examples:\n"
+      "  accelcal export 20250301T140509Z -o captures.csv\n"
+      "  accelcal export /tmp/s.db -o captures.csv && accelcal fit captures.csv");
+  sub->add_option("session", opts->session, "Session file, or a session's name in the default directory")
+      ->required();
+  sub->add_option("-o,--output", opts->output_path, "Capture-set file to write")->required();
+  sub->callback([opts] { RunExport(*opts); });
+}
+
+}  // namespace accelcal::cli

@@ -1,0 +1,97 @@
+// `accelcal sessions`: lists the sessions in the default directory or in the given
+// directories and files, one line each.
+#include <algorithm>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+
+#include <fmt/core.h>
+
+#include "accelcal/error.h"
+#include "accelcal/session/session_paths.h"
+#include "accelcal/session/session_store.h"
+#include "cli/commands.h"
+
+namespace accelcal::cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct SessionsCommandOptions {
+  std::vector<std::string> paths;  // directories or session files; empty: the default directory
+};
+
+constexpr const char* kRowFormat = "{:<22} {:<20} {:<14} {:<12} {:<14} {:>8} {:<5} {}\n";
+
+// The *.db files of `dir`, sorted by name (= by creation time for default names).
+std::vector<std::string> SessionFilesIn(const fs::path& dir) {
+  std::vector<std::string> files;
+  for (const fs::directory_entry& entry : fs::directory_iterator(dir))
+    if (entry.is_regular_file() && entry.path().extension() == ".db") files.push_back(entry.path().string());
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+// One line for a session; one line with the reason for a file that cannot be read as one.
+std::string Row(const std::string& path) {
+  SessionOpenOptions read_only;
+  read_only.read_only = true;
+  try {
+    const SessionInfo info = SessionStore::Open(path, read_only)->Info();
+    // "2025-03-01T14:05:09.123Z" -> "2025-03-01 14:05:09"
+    const std::string created = info.created_utc.substr(0, 19).replace(10, 1, " ");
+    return fmt::format(kRowFormat, info.name, created, info.device.empty() ? "-" : info.device,
+                       info.operator_name.empty() ? "-" : info.operator_name,
+                       info.procedure.empty() ? "-" : info.procedure, info.num_captures,
+                       SessionStateToString(info.state), info.has_result ? "yes" : "no");
+  } catch (const Error& e) {
+    return fmt::format("{:<22} unreadable: {}\n", fs::path(path).stem().string(), e.what());
+  }
+}
+
+void RunSessions(const SessionsCommandOptions& o) {
+  std::vector<std::string> args = o.paths;
+  if (args.empty()) {
+    args.push_back(DefaultSessionDir());
+    if (!fs::is_directory(args[0])) {
+      std::cout << fmt::format("no sessions yet (they go to {})\n", args[0]);
+      return;
+    }
+  }
+  std::vector<std::string> files;
+  for (const std::string& arg : args) {
+    if (fs::is_directory(arg)) {
+      for (const std::string& f : SessionFilesIn(arg)) files.push_back(f);
+    } else if (fs::is_regular_file(arg)) {
+      files.push_back(arg);
+    } else {
+      throw Error(fmt::format("no session or directory {}", arg));
+    }
+  }
+  if (files.empty()) {
+    std::cout << "no sessions\n";
+    return;
+  }
+  std::cout << fmt::format(kRowFormat, "name", "created (UTC)", "device", "operator", "procedure",
+                           "captures", "state", "calibration");
+  for (const std::string& f : files) std::cout << Row(f);
+}
+
+}  // namespace
+
+void SetupSessionsCommand(CLI::App& app) {
+  auto opts = std::make_shared<SessionsCommandOptions>();
+  CLI::App* sub = app.add_subcommand(
+      "sessions",
+      "List calibration sessions: name, creation time, device, operator, procedure, captures\n"
+      "accepted, state (open/done) and whether it has a calibration. By default the sessions in\n"
+      "$XDG_DATA_HOME/accelcal/sessions (~/.local/share/accelcal/sessions); works while a wizard\n"
+      "is running.\n\n"
+      "Examples:\n"
+      "  accelcal sessions\n"
+      "  accelcal sessions /mnt/bench/sessions s.db");
+  sub->add_option("paths", opts->paths, "Session directories or session files");
+  sub->callback([opts] { RunSessions(*opts); });
+}
+
+}  // namespace accelcal::cli
