@@ -10,7 +10,8 @@ SOURCE_DIR=$2
 fail() { echo "FAIL: $*"; [ -n "${last_screen:-}" ] && printf '%s\n' "--- screen:" "$last_screen"; exit 1; }
 
 command -v tmux >/dev/null || { echo "SKIP: tmux not installed"; exit 0; }
-if ! "$ACCELCAL" wizard --help >/dev/null 2>&1; then
+# An unknown subcommand's --help prints the main help (status 0), so look at the usage line.
+if ! "$ACCELCAL" wizard --help 2>/dev/null | grep -q '^Usage: .*wizard'; then
   echo "SKIP: accelcal wizard not available"
   exit 0
 fi
@@ -59,6 +60,7 @@ deadline=$((SECONDS + 120))
 seen_step=0 seen_prism=0 seen_keys=0 resized=0 done=0
 while [ $SECONDS -lt $deadline ]; do
   sleep 0.5
+  [ -s "$work/full.exit" ] && fail "the wizard left before its final screen: $(cat "$work/full.exit")"
   s=$(screen_of full)
   echo "$s" | head -1 | grep -q 'Step [0-9]* of [0-9]*' && seen_step=1
   echo "$s" | grep -q -- '+--------+\|o---->' && seen_prism=1
@@ -74,7 +76,7 @@ while [ $SECONDS -lt $deadline ]; do
     resized=1
   fi
   if echo "$s" | grep -q 'any key leave'; then done=1; break; fi
-  tmx send-keys -t full Enter
+  tmx send-keys -t full Enter 2>/dev/null
 done
 [ $seen_step = 1 ] || fail "never saw 'Step k of n' in the header"
 [ $seen_prism = 1 ] || fail "never saw the prism drawing"
