@@ -7,25 +7,31 @@
 
 #include "accelcal/error.h"
 #include "cli/commands.h"
+#include "cli/wizard.h"
 
 int main(int argc, char** argv) {
   CLI::App app{
       "accelcal: calibrate the three-axis accelerometer of an IMU (the nine-parameter model of\n"
       "scale K, bias b and misalignment T) from static poses and turntable runs.\n\n"
+      "With no subcommand: the guided wizard on the virtual bench, in a new session.\n\n"
       "Example:\n"
+      "  accelcal wizard --source serial:/dev/ttyUSB0@115200 --session bench.db\n"
       "  accelcal simulate scenarios/bench_default.toml -o captures.csv\n"
       "  accelcal fit captures.csv -o cal.json\n"
       "  accelcal apply cal.json < raw.txt > calibrated.txt",
       "accelcal"};
   app.set_version_flag("--version", std::string("accelcal ") + ACCELCAL_VERSION);
-  app.require_subcommand(1);
+  app.require_subcommand(0, 1);
   accelcal::cli::SetupFitCommand(app);
   accelcal::cli::SetupApplyCommand(app);
   accelcal::cli::SetupSimulateCommand(app);
   accelcal::cli::SetupRecordCommand(app);
+  accelcal::cli::SetupWizardCommand(app);
 
   try {
     app.parse(argc, argv);
+    // No subcommand: the wizard on the virtual bench with its defaults, in a new session.
+    if (app.get_subcommands().empty()) return accelcal::cli::RunWizard({});
   } catch (const CLI::ParseError& e) {
     // CLI11 prints help/version itself (exit 0) and usage errors (we map them to 2).
     const int code = app.exit(e);

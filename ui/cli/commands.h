@@ -14,5 +14,6 @@ void SetupFitCommand(CLI::App& app);
 void SetupApplyCommand(CLI::App& app);
 void SetupSimulateCommand(CLI::App& app);
 void SetupRecordCommand(CLI::App& app);
+void SetupWizardCommand(CLI::App& app);
 
 }  // namespace accelcal::cli

@@ -1,0 +1,74 @@
+// A calibration procedure as data: the steps a wizard session walks through, read from TOML at
+// run time (procedures/*.toml; the format is in README.md, "Procedures").
+//
+// Units: deg for tolerances shown to the operator, s for durations, m and rpm for the turntable,
+// g for the accelerometer's range, counts and counts per m/s^2 for the nominal model.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "accelcal/capture.h"
+#include "accelcal/capture_set.h"
+#include "accelcal/sensor_model.h"
+
+namespace accelcal {
+
+enum class StepKind {
+  kLevel,      // level the table (reversal method)
+  kStatic,     // a static pose on the prism
+  kTurntable,  // a turntable run
+  kRecord,     // a long static record (noise, drift): a static capture of its own duration
+  kFit,        // the nine-parameter fit over the accepted captures
+  kDiagnosis,  // the diagnosis; asks before adopting an effect
+  kReport,     // the calibration report; the session's result is recorded
+};
+
+// "level", "static", "turntable", "record", "fit", "diagnosis", "report".
+std::string_view StepKindToString(StepKind kind);
+std::optional<StepKind> StringToStepKind(std::string_view text);
+
+struct ProcedureStep {
+  std::string id;     // unique in the procedure; the journal's step id
+  StepKind kind = StepKind::kStatic;
+  std::string title;  // shown to the operator
+  // kStatic / kRecord / kLevel: "up" in the platform frame (normalized), and its name.
+  Eigen::Vector3d up = Eigen::Vector3d::UnitZ();
+  std::string pose_name;
+  // kTurntable: the defaults offered to the operator, and the mounting.
+  double radius_m = kNaN;
+  double rpm = kNaN;
+  SensorAxis radial_axis = SensorAxis::kPlusX;
+  SensorAxis up_axis = SensorAxis::kPlusZ;
+  double duration_s = 10.0;  // capture length, s
+  double timeout_s = 60.0;   // give up after this long without an accepted capture, s
+  double tolerance_deg = 1.5;  // kLevel: largest accepted tilt per axis, deg
+};
+
+struct Procedure {
+  std::string title;
+  std::string source_name;  // the file it came from
+  double range_g = 6.0;     // the accelerometer's full-scale range, +- g
+  SensorModel nominal;      // datasheet scale and bias (no misalignment): the rough model
+  AdcRange adc_range{0.0, 4095.0};  // the ADC's output range, counts
+  double orientation_tolerance_deg = 15.0;
+  double std_multiplier = 1.5;        // static stability: std limit in noise-floor sigmas
+  double trend_multiplier = 2.0;      // static stability: trend limit in noise-floor sigmas
+  double turntable_tolerance = 0.10;  // relative centripetal mismatch accepted
+  std::vector<ProcedureStep> steps;
+
+  // The poses of the static steps other than the six faces (to name a wrong pose).
+  std::vector<Eigen::Vector3d> TiltedPoses() const;
+};
+
+// Throws accelcal::InputError "FILE:LINE:COLUMN: what" for malformed TOML, an unknown key, a
+// wrong type or value, a duplicate step id.
+Procedure ParseProcedure(std::string_view toml_text, const std::string& source_name);
+// Reads and parses `path`; throws accelcal::Error when it cannot be read.
+Procedure LoadProcedure(const std::string& path);
+
+}  // namespace accelcal

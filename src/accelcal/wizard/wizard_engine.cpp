@@ -1,0 +1,689 @@
+#include "accelcal/wizard/wizard_engine.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include <fmt/core.h>
+#include <fmt/format.h>
+
+#include "accelcal/capture_screening.h"
+#include "accelcal/error.h"
+#include "accelcal/fit/calibration_fit.h"
+#include "accelcal/io/calibration_file.h"
+#include "accelcal/report/fit_text.h"
+#include "accelcal/source/bench_control.h"
+#include "accelcal/wizard/leveling.h"
+#include "accelcal/wizard/quantity_input.h"
+
+namespace accelcal {
+namespace {
+
+constexpr const char* kWelcomeId = "welcome";
+
+std::vector<std::string> SplitLines(const std::string& text) {
+  std::vector<std::string> out;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) out.push_back(line);
+  return out;
+}
+
+bool IsCaptureStep(StepKind kind) {
+  return kind == StepKind::kStatic || kind == StepKind::kRecord || kind == StepKind::kTurntable;
+}
+
+bool NeedsSensor(StepKind kind) { return IsCaptureStep(kind) || kind == StepKind::kLevel; }
+
+// Measured "up" of a capture through the rough model (platform frame, unit).
+Eigen::Vector3d MeasuredUp(const Capture& c, const SensorModel& rough) {
+  return rough.Calibrate(ComputeStats(c.samples).mean_counts).normalized();
+}
+
+}  // namespace
+
+std::string WizardOptions::Validate() const {
+  if (!(quiet_period_s > 0.0)) return "quiet_period_s must be positive";
+  if (!(gravity.gravity_mps2 > 0.0)) return "gravity must be positive";
+  return "";
+}
+
+WizardEngine::WizardEngine(Procedure procedure, SampleSource& source, SessionJournal& journal,
+                           WizardOptions options)
+    : procedure_(std::move(procedure)), source_(source), journal_(journal),
+      options_(std::move(options)) {
+  if (std::string why = options_.Validate(); !why.empty()) throw Error("wizard options: " + why);
+  if (procedure_.steps.empty()) throw Error("the procedure has no steps");
+  ReadJournal();
+}
+
+WizardEngine::~WizardEngine() = default;
+
+// ---- resume ---------------------------------------------------------------------------------
+
+bool WizardEngine::StepRecorded(const std::string& id) const {
+  if (journal_.DoneSteps().count(id) != 0) return true;
+  for (const JournalCapture& c : journal_.Captures())
+    if (c.step_id == id) return true;
+  return false;
+}
+
+void WizardEngine::ReadJournal() {
+  const std::vector<JournalCapture> captures = journal_.Captures();
+  const std::map<std::string, std::string> done = journal_.DoneSteps();
+  for (const JournalCapture& c : captures) {
+    next_capture_id_ = std::max(next_capture_id_, c.capture.id + 1);
+    if (c.capture.kind == CaptureKind::kStatic)
+      captured_.push_back({c.capture.id, c.capture.label, MeasuredUp(c.capture, procedure_.nominal)});
+  }
+  if (auto it = done.find("diagnosis"); it != done.end())
+    adopt_effects_ = it->second.rfind("adopted", 0) == 0;
+  for (const ProcedureStep& s : procedure_.steps)
+    if (s.kind == StepKind::kDiagnosis)
+      if (auto d = done.find(s.id); d != done.end()) adopt_effects_ = d->second.rfind("adopted", 0) == 0;
+  resumed_ = !captures.empty() || !done.empty() || !journal_.Inputs().empty();
+  if (!resumed_) return;
+  resume_lines_.push_back(fmt::format("Resuming session {}: {} captures and {} steps already recorded.",
+                               options_.session_name, captures.size(), done.size()));
+  for (const JournalCapture& c : captures)
+    resume_lines_.push_back(fmt::format("  done: {} (capture {}, {})", c.step_id, c.capture.id, c.capture.label));
+  for (const auto& [id, outcome] : done) resume_lines_.push_back(fmt::format("  done: {} ({})", id, outcome));
+  if (done.count(kWelcomeId) != 0) AdvanceFrom(0);
+}
+
+// ---- step flow ------------------------------------------------------------------------------
+
+void WizardEngine::AdvanceFrom(int index) {
+  const int n = static_cast<int>(procedure_.steps.size());
+  while (index < n && StepRecorded(procedure_.steps[static_cast<size_t>(index)].id)) ++index;
+  EnterStep(index);
+}
+
+void WizardEngine::EnterStep(int index) {
+  current_ = index;
+  engine_.reset();
+  problem_.clear();
+  hint_.clear();
+  input_error_.clear();
+  lines_.clear();
+  if (current_ >= static_cast<int>(procedure_.steps.size())) {
+    phase_ = Phase::kDone;
+    return;
+  }
+  const ProcedureStep& s = step();
+  level_first_counts_.reset();
+  switch (s.kind) {
+    case StepKind::kTurntable:
+      radius_m_ = s.radius_m;
+      rpm_ = s.rpm;
+      phase_ = Phase::kRadius;
+      break;
+    case StepKind::kFit: RunFit(); break;
+    case StepKind::kDiagnosis: RunDiagnosis(); break;
+    case StepKind::kReport: RunReport(); break;
+    default: EnterPlace(); break;
+  }
+}
+
+void WizardEngine::EnterPlace() {
+  engine_.reset();
+  if (!noise_floor_ && NeedsSensor(step().kind)) {
+    quiet_ = CaptureStats();
+    phase_ = Phase::kQuiet;
+    return;
+  }
+  phase_ = Phase::kPlace;
+}
+
+void WizardEngine::FinishStep(const std::string& outcome) {
+  progressed_ = true;
+  journal_.RecordStepDone(step().id, outcome);
+  AdvanceFrom(current_ + 1);
+}
+
+void WizardEngine::SkipStep() {
+  const StepKind kind = step().kind;
+  if (kind == StepKind::kFit || kind == StepKind::kReport) {
+    problem_ = fmt::format("the {} cannot be skipped", StepKindToString(kind));
+    return;
+  }
+  if (source_.bench() != nullptr && kind == StepKind::kTurntable) source_.bench()->StopTurntable();
+  FinishStep("skipped");
+}
+
+// Back: within a step to its previous question; from a step's start to the nearest earlier
+// step that has no accepted capture (a skipped one). Accepted captures are never replaced.
+void WizardEngine::GoBack() {
+  if (phase_ == Phase::kRpm) {
+    phase_ = Phase::kRadius;
+    return;
+  }
+  if (phase_ == Phase::kCapture || phase_ == Phase::kProblem || phase_ == Phase::kLevelTurn) {
+    if (step().kind == StepKind::kTurntable) {
+      phase_ = Phase::kRpm;
+      engine_.reset();
+      return;
+    }
+    EnterPlace();
+    return;
+  }
+  const std::vector<JournalCapture> captures = journal_.Captures();
+  for (int i = current_ - 1; i >= 0; --i) {
+    const ProcedureStep& s = procedure_.steps[static_cast<size_t>(i)];
+    const bool has_capture = std::any_of(captures.begin(), captures.end(),
+                                         [&](const JournalCapture& c) { return c.step_id == s.id; });
+    if (IsCaptureStep(s.kind) && !has_capture) {
+      EnterStep(i);
+      return;
+    }
+  }
+  problem_ = "nothing to go back to: every earlier capture is recorded and is kept";
+}
+
+void WizardEngine::Quit() {
+  engine_.reset();
+  quit_ = true;
+  phase_ = Phase::kDone;
+}
+
+// ---- captures -------------------------------------------------------------------------------
+
+CaptureRequest WizardEngine::MakeRequest() const {
+  const ProcedureStep& s = step();
+  CaptureRequest r;
+  r.id = next_capture_id_;
+  r.label = s.pose_name.empty() ? s.title : s.pose_name;
+  r.duration_s = s.duration_s;
+  r.timeout_s = s.timeout_s;
+  if (s.kind == StepKind::kTurntable) {
+    r.kind = CaptureKind::kTurntable;
+    r.turntable.radius_m = radius_m_;
+    r.turntable.rpm = rpm_;
+    r.turntable.radial_axis = SensorAxisVector(s.radial_axis);
+    r.turntable.up_axis = SensorAxisVector(s.up_axis);
+  } else {
+    r.expected = NamedPose{s.pose_name.empty() ? DescribeUp(s.up) : s.pose_name, s.up};
+  }
+  return r;
+}
+
+CaptureContext WizardEngine::MakeContext() const {
+  CaptureContext c;
+  c.rough_model = procedure_.nominal;
+  c.noise_floor = *noise_floor_;
+  // Leveling measures the same pose twice: no duplicate check there.
+  if (step().kind != StepKind::kLevel) c.captured = captured_;
+  for (const ProcedureStep& s : procedure_.steps)
+    if (s.kind == StepKind::kStatic && (s.up.array().abs() > 1e-6).count() > 1)
+      c.known_poses.push_back({s.pose_name, s.up});
+  return c;
+}
+
+void WizardEngine::PlaceOnBench() {
+  BenchControl* bench = source_.bench();
+  if (bench == nullptr) return;
+  const ProcedureStep& s = step();
+  if (s.kind == StepKind::kTurntable) {
+    bench->PlaceTurntable(radius_m_, rpm_, s.radial_axis, s.up_axis);
+  } else {
+    bench->PlaceStatic(s.up);
+  }
+}
+
+void WizardEngine::StartCaptureEngine() {
+  CaptureEngineOptions o;
+  o.stability.std_multiplier = procedure_.std_multiplier;
+  o.stability.trend_multiplier = procedure_.trend_multiplier;
+  o.orientation.tolerance_deg = procedure_.orientation_tolerance_deg;
+  o.turntable.gravity_mps2 = options_.gravity.gravity_mps2;
+  o.turntable.centripetal_tolerance = procedure_.turntable_tolerance;
+  o.screening.adc_range = procedure_.adc_range;
+  engine_ = std::make_unique<CaptureEngine>(MakeRequest(), o, MakeContext());
+  problem_.clear();
+  hint_.clear();
+  phase_ = Phase::kCapture;
+}
+
+// The operator says the sensor is in place (on the sim, this places it).
+void WizardEngine::BeginCapture() {
+  PlaceOnBench();
+  StartCaptureEngine();
+}
+
+void WizardEngine::FeedQuiet(const std::vector<Sample>& chunk) {
+  for (const Sample& s : chunk) quiet_.Add(s);
+  if (quiet_.n < 3 || !(quiet_.t_last_s - quiet_.t_first_s >= options_.quiet_period_s)) return;
+  noise_floor_ = NoiseFloor::FromQuietPeriod(quiet_);
+  phase_ = Phase::kPlace;
+}
+
+void WizardEngine::FeedCapture(const std::vector<Sample>& chunk) {
+  engine_->Feed(chunk);
+  const CaptureSnapshot snap = engine_->Snapshot();
+  switch (snap.state) {
+    case CaptureState::kAccepted: OnCaptureAccepted(); break;
+    case CaptureState::kRejected:
+    case CaptureState::kTimedOut:
+      problem_ = snap.reason;
+      hint_ = step().kind == StepKind::kTurntable
+                  ? "check the mounting, radius and speed; Enter tries again, b re-enters the values"
+                  : fmt::format("put the prism with {} and let go; Enter tries again", MakeRequest().expected.name);
+      phase_ = Phase::kProblem;
+      break;
+    case CaptureState::kRetrying:
+      problem_ = snap.reason;
+      hint_ = "retrying by itself once the sensor is still again";
+      break;
+    default:
+      if (snap.state == CaptureState::kCapturing) problem_.clear(), hint_.clear();
+      break;
+  }
+}
+
+void WizardEngine::OnCaptureAccepted() {
+  Capture capture = engine_->capture();
+  engine_.reset();
+  const ProcedureStep& s = step();
+  if (s.kind == StepKind::kLevel) {
+    OnLevelCapture(ComputeStats(capture.samples).mean_counts);
+    return;
+  }
+  if (s.kind == StepKind::kTurntable) {
+    capture.up_axis = s.up_axis;
+    journal_.RecordInput(s.id, "radius_m", fmt::format("{}", radius_m_));
+    journal_.RecordInput(s.id, "rpm", fmt::format("{}", rpm_));
+  }
+  // Recorded before moving on: a crash after this line loses nothing.
+  progressed_ = true;
+  journal_.RecordCapture(s.id, capture);
+  if (capture.kind == CaptureKind::kStatic)
+    captured_.push_back({capture.id, capture.label, MeasuredUp(capture, procedure_.nominal)});
+  next_capture_id_ = capture.id + 1;
+  if (s.kind == StepKind::kTurntable && source_.bench() != nullptr) source_.bench()->StopTurntable();
+  AdvanceFrom(current_ + 1);
+}
+
+void WizardEngine::OnLevelCapture(const Eigen::Vector3d& mean_counts) {
+  if (!level_first_counts_) {
+    level_first_counts_ = mean_counts;
+    phase_ = Phase::kLevelTurn;
+    return;
+  }
+  level_tilt_deg_ = ReversalTiltDeg(*level_first_counts_, mean_counts, procedure_.nominal);
+  const std::string advice = LevelingAdvice(level_tilt_deg_, step().tolerance_deg);
+  level_ok_ = advice.empty();
+  problem_ = level_ok_ ? "" : "the table is not level: " + advice;
+  hint_ = level_ok_ ? "" : "adjust the feet, then Enter to measure again (s skips leveling)";
+  level_first_counts_.reset();
+  phase_ = Phase::kLevelResult;
+}
+
+// ---- fit, diagnosis, report -----------------------------------------------------------------
+
+std::vector<Capture> WizardEngine::JournalCaptures() const {
+  std::vector<Capture> out;
+  for (const JournalCapture& c : journal_.Captures()) out.push_back(c.capture);
+  ScreenCaptures(out, [&] {
+    ScreeningOptions o;
+    o.adc_range = procedure_.adc_range;
+    return o;
+  }());
+  return out;
+}
+
+void WizardEngine::RunFit() {
+  phase_ = Phase::kResult;
+  FitOptions o;
+  o.gravity = options_.gravity;
+  const std::vector<Capture> captures = JournalCaptures();
+  fit_ = FitCalibration(captures, o);
+  diagnosis_.reset();
+  lines_.clear();
+  if (!fit_.IsUsable()) {
+    problem_ = "the fit is not usable: " + fit_.message;
+    hint_ = "r runs the fit again; b goes back to a skipped step to capture it";
+    return;
+  }
+  const Calibration cal = MakeCalibration(fit_, options_.gravity, captures, options_.session_name);
+  lines_ = SplitLines(FormatFitReport(cal, fit_));
+}
+
+void WizardEngine::RunDiagnosis() {
+  phase_ = Phase::kResult;
+  std::vector<FitCapture> used;
+  for (const Capture& c : JournalCaptures())
+    if (c.used()) used.push_back(MakeFitCapture(c));
+  FitOptions o;
+  o.gravity = options_.gravity;
+  diagnosis_ = Diagnose(used, o, DiagnosisOptions());
+  lines_ = SplitLines(FormatDiagnosis(*diagnosis_));
+  if (!diagnosis_->base.IsUsable()) {
+    problem_ = "the fit is not usable: " + diagnosis_->base.message;
+    hint_ = "s skips the diagnosis (the report needs a usable fit)";
+  }
+}
+
+void WizardEngine::RunReport() {
+  phase_ = Phase::kResult;
+  if (!diagnosis_) RunDiagnosis();
+  lines_.clear();
+  const DiagnosisReport& d = *diagnosis_;
+  const bool adopt = adopt_effects_ && !d.adopted.empty();
+  const FitSummary& summary = adopt ? d.final_fit : d.base;
+  if (!summary.IsUsable()) {
+    problem_ = "no calibration: the fit is not usable: " + summary.message;
+    hint_ = "q leaves; the captures are kept in the session";
+    return;
+  }
+  problem_.clear();
+  hint_.clear();
+  Calibration cal = MakeCalibration(summary, options_.gravity, JournalCaptures(), options_.session_name);
+  if (adopt) cal.effects = EffectsToJson(d);
+  journal_.RecordResult(CalibrationToJson(cal));
+  lines_ = SplitLines(FormatFitReport(cal, summary));
+  lines_.push_back(adopt ? "Effects adopted: " + fmt::format("{}", fmt::join(d.adopted_names(), ", "))
+                         : "Model: the nine-parameter base model");
+}
+
+// ---- polling --------------------------------------------------------------------------------
+
+void WizardEngine::UpdateLive(const std::vector<Sample>& chunk) {
+  if (chunk.empty()) return;
+  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+  for (const Sample& s : chunk) sum += s.raw_counts;
+  live_counts_ = sum / static_cast<double>(chunk.size());
+}
+
+void WizardEngine::Poll(double timeout_s) {
+  std::vector<Sample> chunk;
+  source_.Read(timeout_s, &chunk);
+  UpdateLive(chunk);
+  if (chunk.empty()) return;
+  if (phase_ == Phase::kQuiet) FeedQuiet(chunk);
+  else if (phase_ == Phase::kCapture && engine_) FeedCapture(chunk);
+}
+
+// ---- intents --------------------------------------------------------------------------------
+
+void WizardEngine::Handle(const Intent& intent) {
+  if (phase_ == Phase::kDone) return;
+  if (intent.kind == IntentKind::kQuit) {
+    Quit();
+    return;
+  }
+  switch (phase_) {
+    case Phase::kWelcome: HandleWelcome(intent); return;
+    case Phase::kRadius:
+    case Phase::kRpm: HandleTurntableInput(intent); return;
+    case Phase::kResult: HandleResult(intent); return;
+    default: HandleCaptureIntent(intent); return;
+  }
+}
+
+void WizardEngine::HandleWelcome(const Intent& intent) {
+  if (intent.kind == IntentKind::kBack) {
+    welcome_field_ = std::max(0, welcome_field_ - 1);
+    return;
+  }
+  const bool device = welcome_field_ == 0;
+  std::string value = intent.kind == IntentKind::kSubmitText ? intent.text : "";
+  if (value.empty()) value = device ? options_.default_device : options_.default_operator;
+  journal_.RecordInput(kWelcomeId, device ? "device" : "operator", value);
+  if (device) {
+    welcome_field_ = 1;
+    return;
+  }
+  journal_.RecordStepDone(kWelcomeId, "ok");
+  AdvanceFrom(0);
+}
+
+void WizardEngine::HandleTurntableInput(const Intent& intent) {
+  if (intent.kind == IntentKind::kSkip) return SkipStep();
+  if (intent.kind == IntentKind::kBack) return GoBack();
+  if (intent.kind != IntentKind::kAccept && intent.kind != IntentKind::kSubmitText) return;
+  const bool radius = phase_ == Phase::kRadius;
+  const std::string text = intent.kind == IntentKind::kSubmitText ? intent.text : "";
+  const double fallback = radius ? radius_m_ : rpm_;
+  const QuantityResult q = text.empty() ? QuantityResult{fallback, ""}
+                                        : (radius ? ParseRadius(text) : ParseRpm(text));
+  if (!q.ok()) {
+    input_error_ = q.error;
+    return;
+  }
+  input_error_.clear();
+  (radius ? radius_m_ : rpm_) = q.value;
+  if (radius) {
+    phase_ = Phase::kRpm;
+    return;
+  }
+  TurntableSetup setup;
+  setup.radius_m = radius_m_;
+  setup.rpm = rpm_;
+  setup.radial_axis = SensorAxisVector(step().radial_axis);
+  setup.up_axis = SensorAxisVector(step().up_axis);
+  TurntableStabilityOptions o;
+  o.gravity_mps2 = options_.gravity.gravity_mps2;
+  const std::string why = CheckTurntableAgainstRange(setup, procedure_.range_g, procedure_.nominal,
+                                                     procedure_.adc_range, o);
+  if (!why.empty()) {
+    input_error_ = why;
+    phase_ = Phase::kRadius;
+    return;
+  }
+  EnterPlace();
+}
+
+void WizardEngine::HandleResult(const Intent& intent) {
+  const StepKind kind = step().kind;
+  if (intent.kind == IntentKind::kBack) return GoBack();
+  if (intent.kind == IntentKind::kSkip) return SkipStep();
+  if (intent.kind == IntentKind::kRetry) return EnterStep(current_);
+  const bool accept = intent.kind == IntentKind::kAccept || intent.kind == IntentKind::kSubmitText;
+  if (kind == StepKind::kFit) {
+    if (accept && fit_.IsUsable()) FinishStep("converged: " + fit_.BriefReport());
+    return;
+  }
+  if (kind == StepKind::kDiagnosis) {
+    if (!diagnosis_->base.IsUsable()) return;
+    const std::vector<std::string> names = diagnosis_->adopted_names();
+    if (names.empty() && accept) return FinishStep("none: the base model explains the data");
+    if (names.empty()) return;
+    if (accept) {
+      adopt_effects_ = true;
+      return FinishStep(fmt::format("adopted: {}", fmt::join(names, ", ")));
+    }
+    if (intent.kind == IntentKind::kAnswerNo) {
+      adopt_effects_ = false;
+      return FinishStep("declined: kept the base model");
+    }
+    return;
+  }
+  if (kind == StepKind::kReport && accept && problem_.empty()) FinishStep("written");
+}
+
+void WizardEngine::HandleCaptureIntent(const Intent& intent) {
+  if (intent.kind == IntentKind::kSkip) return SkipStep();
+  if (intent.kind == IntentKind::kBack) return GoBack();
+  const bool accept = intent.kind == IntentKind::kAccept || intent.kind == IntentKind::kSubmitText;
+  switch (phase_) {
+    case Phase::kPlace:
+    case Phase::kProblem:
+    case Phase::kLevelTurn:
+      if (accept || intent.kind == IntentKind::kRetry) BeginCapture();
+      return;
+    case Phase::kCapture:
+      if (intent.kind == IntentKind::kRetry) BeginCapture();
+      return;
+    case Phase::kLevelResult:
+      if (intent.kind == IntentKind::kRetry || (accept && !level_ok_)) return EnterPlace();
+      if (accept) {
+        FinishStep(fmt::format("level: tilt {:.2f} deg about x, {:.2f} deg about y",
+                               level_tilt_deg_.x(), level_tilt_deg_.y()));
+      }
+      return;
+    default: return;
+  }
+}
+
+// ---- view -----------------------------------------------------------------------------------
+
+WizardView WizardEngine::View() const {
+  WizardView v;
+  v.session = options_.session_name;
+  v.procedure = procedure_.title;
+  v.resumed = resumed_;
+  v.step_count = static_cast<int>(procedure_.steps.size()) + 1;
+  v.step_index = std::min(current_ + 2, v.step_count);
+  v.live_counts = live_counts_;
+  if (live_counts_.allFinite())
+    v.live_g = procedure_.nominal.Calibrate(live_counts_).norm() / options_.gravity.gravity_mps2;
+  v.problem = problem_;
+  v.hint = hint_;
+  // The resume summary is shown until this run has recorded something of its own.
+  if (resumed_ && !progressed_) v.lines = resume_lines_;
+  v.lines.insert(v.lines.end(), lines_.begin(), lines_.end());
+  v.status = source_.Describe() + ": " + source_.status().BriefReport();
+  SetStepView(v);
+  SetPhaseView(v);
+  return v;
+}
+
+void WizardEngine::SetStepView(WizardView& v) const {
+  if (current_ < 0) {
+    v.step_title = "Welcome";
+    return;
+  }
+  if (current_ >= static_cast<int>(procedure_.steps.size())) {
+    v.step_title = "Done";
+    return;
+  }
+  const ProcedureStep& s = step();
+  v.step_title = s.title;
+  v.pose_name = s.pose_name;
+  if (s.kind == StepKind::kStatic || s.kind == StepKind::kRecord || s.kind == StepKind::kLevel)
+    v.expected_up = s.up;
+  if (s.kind == StepKind::kTurntable) v.expected_up = SensorAxisVector(s.up_axis);
+}
+
+void WizardEngine::SetPhaseView(WizardView& v) const {
+  const std::vector<KeyHint> nav = {{"s", "skip"}, {"b", "back"}, {"q", "save and quit"}};
+  auto keys = [&](std::vector<KeyHint> first) {
+    first.insert(first.end(), nav.begin(), nav.end());
+    return first;
+  };
+  switch (phase_) {
+    case Phase::kWelcome: {
+      const bool device = welcome_field_ == 0;
+      v.screen = WizardScreen::kWelcome;
+      v.prompt = fmt::format("Welcome to {}.", procedure_.title);
+      v.input = InputRequest{device ? "device" : "operator",
+                             device ? "Device serial number" : "Operator",
+                             device ? options_.default_device : options_.default_operator, ""};
+      v.keys = {{"Enter", "accept"}, {"b", "back"}, {"q", "save and quit"}};
+      return;
+    }
+    case Phase::kQuiet:
+      v.screen = WizardScreen::kCapturing;
+      v.prompt = fmt::format("Leave the sensor resting on the table: measuring the noise floor ({:g} s).",
+                             options_.quiet_period_s);
+      v.progress = quiet_.n >= 2 ? std::min(1.0, (quiet_.t_last_s - quiet_.t_first_s) /
+                                                     options_.quiet_period_s) : 0.0;
+      v.keys = {{"q", "save and quit"}};
+      return;
+    case Phase::kPlace:
+      v.screen = step().kind == StepKind::kTurntable ? WizardScreen::kMountTurntable
+               : step().kind == StepKind::kLevel ? WizardScreen::kLevel : WizardScreen::kPlacePose;
+      v.prompt = step().kind == StepKind::kTurntable
+          ? fmt::format("Mount the sensor on the turntable with {} at {:g} mm from the axis and run "
+                        "it at {:g} rpm; press Enter when it turns steadily.",
+                        step().pose_name, radius_m_ * 1000.0, rpm_)
+          : step().kind == StepKind::kLevel
+          ? "Put the prism on the table with +z up and let go; press Enter to measure the tilt."
+          : fmt::format("Put the prism on the table with {} and let go; press Enter to capture.",
+                        step().pose_name);
+      v.keys = keys({{"Enter", "capture"}});
+      return;
+    case Phase::kLevelTurn:
+      v.screen = WizardScreen::kLevel;
+      v.prompt = "Turn the prism 180 deg about the vertical (still +z up); press Enter to measure again.";
+      v.keys = keys({{"Enter", "measure"}});
+      return;
+    case Phase::kLevelResult:
+      v.screen = WizardScreen::kLevel;
+      v.tilt_deg = level_tilt_deg_;
+      v.prompt = fmt::format("Tilt {:.2f} deg about x, {:.2f} deg about y (tolerance {:g} deg): {}.",
+                             level_tilt_deg_.x(), level_tilt_deg_.y(), step().tolerance_deg,
+                             level_ok_ ? "level; press Enter to continue" : "not level");
+      v.keys = keys({{"Enter", level_ok_ ? "continue" : "measure again"}, {"r", "measure again"}});
+      return;
+    case Phase::kRadius:
+    case Phase::kRpm: {
+      const bool radius = phase_ == Phase::kRadius;
+      v.screen = WizardScreen::kInput;
+      v.prompt = fmt::format("Turntable run with {}.", step().pose_name);
+      v.input = InputRequest{radius ? "radius" : "rpm",
+                             radius ? "Radius from the spin axis to the sensor (e.g. 120 mm)"
+                                    : "Table speed (e.g. 120 rpm, 2 rps, 12.57 rad/s)",
+                             radius ? fmt::format("{:g} mm", radius_m_ * 1000.0)
+                                    : fmt::format("{:g} rpm", rpm_),
+                             input_error_};
+      v.keys = keys({{"Enter", "accept"}});
+      return;
+    }
+    case Phase::kCapture:
+    case Phase::kProblem:
+      SetCaptureView(v);
+      return;
+    case Phase::kResult: {
+      const StepKind kind = step().kind;
+      v.screen = kind == StepKind::kFit ? WizardScreen::kFit
+               : kind == StepKind::kDiagnosis ? WizardScreen::kDiagnosis : WizardScreen::kReport;
+      if (!problem_.empty()) {
+        v.prompt = "The session cannot go on from here as it is.";
+        v.keys = keys({{"r", "retry"}});
+        return;
+      }
+      if (kind == StepKind::kDiagnosis && diagnosis_ && !diagnosis_->adopted.empty()) {
+        v.prompt = fmt::format("Adopt {} into the calibration? Enter adopts, n keeps the base model.",
+                               fmt::join(diagnosis_->adopted_names(), ", "));
+        v.keys = keys({{"Enter", "adopt"}, {"n", "keep the base model"}});
+        return;
+      }
+      v.prompt = kind == StepKind::kReport ? "Calibration recorded in the session; press Enter to finish."
+                                           : "Press Enter to continue.";
+      v.keys = keys({{"Enter", "continue"}, {"r", "retry"}});
+      return;
+    }
+    case Phase::kDone:
+      v.screen = WizardScreen::kDone;
+      v.finished = true;
+      v.prompt = quit_ ? fmt::format("Saved. Everything accepted is in session {}; run the wizard "
+                                     "on it again to resume.", options_.session_name)
+                       : "Calibration complete.";
+      return;
+  }
+}
+
+void WizardEngine::SetCaptureView(WizardView& v) const {
+  v.screen = phase_ == Phase::kProblem ? WizardScreen::kError : WizardScreen::kCapturing;
+  v.keys = {{"r", "retry"}, {"s", "skip"}, {"b", "back"}, {"q", "save and quit"}};
+  if (phase_ == Phase::kProblem) {
+    v.prompt = "The capture was not accepted.";
+    v.keys.insert(v.keys.begin(), KeyHint{"Enter", "try again"});
+    return;
+  }
+  const CaptureSnapshot snap = engine_->Snapshot();
+  v.prompt = fmt::format("{} {} (attempt {}): {}", CaptureStateToString(snap.state),
+                         step().pose_name, std::max(1, snap.attempts),
+                         snap.state == CaptureState::kCapturing
+                             ? fmt::format("{:.0f} %", snap.progress * 100.0)
+                             : (snap.reason.empty() ? "waiting for the sensor to be still" : snap.reason));
+  v.progress = snap.progress;
+  if (step().kind == StepKind::kTurntable) {
+    v.stability_text = snap.turntable.ok ? "turning steadily" : snap.turntable.reason;
+  } else {
+    v.stability = snap.stability.WorstRatio();
+    v.stability_text = snap.stability.stable ? "still" : snap.stability.reason;
+  }
+}
+
+}  // namespace accelcal

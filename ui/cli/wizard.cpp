@@ -1,0 +1,102 @@
+#include "cli/wizard.h"
+
+#include <cstdlib>
+#include <ctime>
+#include <iostream>
+#include <memory>
+
+#include <unistd.h>
+
+#include <fmt/core.h>
+
+#include "accelcal/error.h"
+#include "accelcal/source/source_spec.h"
+#include "accelcal/wizard/procedure.h"
+#include "accelcal/wizard/wizard_engine.h"
+#include "cli/commands.h"
+#include "cli/gravity_options.h"
+#include "cli/wizard_journal.h"
+#include "frontend.h"
+
+namespace accelcal::cli {
+namespace {
+
+std::string DefaultProcedurePath() {
+  return std::string(ACCELCAL_PROCEDURES_DIR) + "/seed_calibration.toml";
+}
+
+// A new session's file name from the local time: session-20260522-143005.db.
+std::string NewSessionPath() {
+  const std::time_t now = std::time(nullptr);
+  std::tm local{};
+  localtime_r(&now, &local);
+  char buf[32];
+  std::strftime(buf, sizeof buf, "session-%Y%m%d-%H%M%S.db", &local);
+  return buf;
+}
+
+std::string OperatorFromEnvironment() {
+  const char* user = std::getenv("USER");
+  return user != nullptr ? user : "";
+}
+
+}  // namespace
+
+int RunWizard(const WizardCommandOptions& options) {
+  const Procedure procedure = LoadProcedure(
+      options.procedure_path.empty() ? DefaultProcedurePath() : options.procedure_path);
+  SourceOptions source_options;
+  source_options.sim.speed = options.speed;
+  source_options.seed = options.seed;
+  source_options.scenario_path = options.scenario_path;
+  const std::unique_ptr<SampleSource> source = OpenSource(options.source, source_options);
+  const std::string session = options.session_path.empty() ? NewSessionPath() : options.session_path;
+  const std::unique_ptr<SessionJournal> journal = OpenWizardJournal(session);
+
+  WizardOptions wizard;
+  wizard.session_name = session;
+  wizard.default_operator = OperatorFromEnvironment();
+  wizard.default_device = options.source == "sim" ? "SIM-0001" : "";
+  wizard.gravity = options.gravity;
+  WizardEngine engine(procedure, *source, *journal, wizard);
+
+  const bool terminal = ::isatty(STDIN_FILENO) == 1 && ::isatty(STDOUT_FILENO) == 1;
+  if (terminal && !options.plain) return ui::RunTui(engine);
+  return ui::RunLineMode(engine, std::cin, std::cout);
+}
+
+void SetupWizardCommand(CLI::App& app) {
+  auto options = std::make_shared<WizardCommandOptions>();
+  auto gravity = std::make_shared<GravityFlags>();
+  CLI::App* sub = app.add_subcommand(
+      "wizard",
+      "Guided calibration at the bench: level the table, the prism poses, the turntable runs,\n"
+      "the fit, the diagnosis and the report, recorded in a session as it goes (an interrupted\n"
+      "session resumes). Runs on the virtual bench unless --source names a real one. Also what\n"
+      "`accelcal` with no arguments does.");
+  sub->footer(
+      "Examples:\n"
+      "  accelcal wizard                                   # the virtual bench, full screen\n"
+      "  accelcal wizard --source serial:/dev/ttyUSB0@115200 --session bench.db\n"
+      "  yes '' | accelcal wizard --source sim --speed 50 --session /tmp/s.db --plain");
+  sub->add_option("--source", options->source, "Sample source: sim, file:PATH, serial:DEV@BAUD, "
+                  "tcp:HOST:PORT or - (default sim)");
+  sub->add_option("--speed", options->speed,
+                  "sim: simulated seconds per wall-clock second (default 1; 0 = as fast as possible)")
+      ->check(CLI::NonNegativeNumber);
+  sub->add_option("--seed", options->seed, "sim: random seed, overriding the scenario's");
+  sub->add_option("--scenario", options->scenario_path,
+                  "sim: virtual-bench scenario (TOML); default: the built-in default bench");
+  sub->add_option("--procedure", options->procedure_path,
+                  "Procedure file (TOML); default: procedures/seed_calibration.toml");
+  sub->add_option("--session", options->session_path,
+                  "Session file: created when new, resumed when it exists (default: a new one)");
+  sub->add_flag("--plain", options->plain, "Plain line mode even on a terminal");
+  gravity->Bind(*sub);
+  sub->callback([options, gravity] {
+    options->gravity = gravity->Resolve();
+    if (RunWizard(*options) != 0) throw Error("the wizard stopped on a failure");
+  });
+}
+
+}  // namespace accelcal::cli

@@ -1,0 +1,26 @@
+// `accelcal wizard`: the guided calibration on a live source (the virtual bench by default).
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+
+#include "accelcal/gravity.h"
+
+namespace accelcal::cli {
+
+struct WizardCommandOptions {
+  std::string source = "sim";       // source spec (source_spec.h)
+  double speed = 1.0;               // sim: simulated seconds per wall second; 0 = flat out
+  std::optional<std::uint64_t> seed;  // sim: overrides the scenario's seed
+  std::string scenario_path;        // sim: scenario file; empty = the built-in default bench
+  std::string procedure_path;       // empty = procedures/seed_calibration.toml of the source tree
+  std::string session_path;         // empty = a new session named by the time
+  bool plain = false;               // line mode even on a terminal
+  GravitySpec gravity;
+};
+
+// Runs the wizard to its end or until the operator leaves; returns the exit status.
+int RunWizard(const WizardCommandOptions& options);
+
+}  // namespace accelcal::cli

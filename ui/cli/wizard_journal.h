@@ -1,0 +1,15 @@
+// Where the wizard's session journal comes from: one function, so that swapping the store is
+// one file (ui/cli/wizard_journal.cpp).
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include "accelcal/wizard/session_journal.h"
+
+namespace accelcal::cli {
+
+// The journal of the session file `session_path` (created when absent, resumed when present).
+std::unique_ptr<SessionJournal> OpenWizardJournal(const std::string& session_path);
+
+}  // namespace accelcal::cli

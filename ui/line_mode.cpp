@@ -1,0 +1,127 @@
+// The plain line mode: prompts on a stream, one answer per line. For pipes, scripts and
+// terminals without curses; `yes '' | accelcal wizard --plain` takes every default.
+#include <cmath>
+#include <istream>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "frontend.h"
+
+namespace accelcal::ui {
+namespace {
+
+// A view is busy while the engine works on its own (settling, capturing): poll, don't ask.
+bool Busy(const WizardView& v) { return v.screen == WizardScreen::kCapturing && !v.input; }
+
+Intent ToIntent(const std::string& answer, const WizardView& v) {
+  if (answer == "q") return {IntentKind::kQuit, ""};
+  if (answer == "r") return {IntentKind::kRetry, ""};
+  if (answer == "s") return {IntentKind::kSkip, ""};
+  if (answer == "b") return {IntentKind::kBack, ""};
+  if (answer == "n" && !v.input) return {IntentKind::kAnswerNo, ""};
+  if (v.input) return {IntentKind::kSubmitText, answer};
+  return {IntentKind::kAccept, ""};
+}
+
+std::string TrimLine(std::string s) {
+  while (!s.empty() && (s.back() == '\r' || s.back() == ' ' || s.back() == '\t')) s.pop_back();
+  size_t start = 0;
+  while (start < s.size() && (s[start] == ' ' || s[start] == '\t')) ++start;
+  return s.substr(start);
+}
+
+// Prints only what changed since the last view, so a busy engine polled many times a second
+// gives a few lines per capture, not one per poll.
+class Printer {
+ public:
+  explicit Printer(std::ostream& out) : out_(out) {}
+
+  void Show(const WizardView& v) {
+    if (v.step_index != step_index_ || v.step_title != step_title_) {
+      step_index_ = v.step_index;
+      step_title_ = v.step_title;
+      out_ << fmt::format("\n[{}/{}] {}\n", v.step_index, v.step_count, v.step_title);
+      prompt_.clear();
+      progress_quarter_ = -1;
+    }
+    if (v.lines != lines_) {
+      lines_ = v.lines;
+      for (const std::string& line : v.lines) out_ << "  " << line << '\n';
+    }
+    if (v.problem != problem_) {
+      problem_ = v.problem;
+      if (!v.problem.empty()) out_ << "  problem: " << v.problem << '\n';
+      if (!v.hint.empty()) out_ << "  hint: " << v.hint << '\n';
+    }
+    Busy(v) ? ShowBusy(v) : ShowQuestion(v);
+    out_.flush();
+  }
+
+ private:
+  void ShowBusy(const WizardView& v) {
+    // The state word and attempt (the prompt up to ':') change rarely; progress by quarters.
+    const std::string head = v.prompt.substr(0, v.prompt.find(':'));
+    const int quarter = std::isfinite(v.progress) ? static_cast<int>(v.progress * 4.0) : -1;
+    if (head == prompt_ && quarter <= progress_quarter_) return;
+    prompt_ = head;
+    progress_quarter_ = quarter;
+    out_ << "  " << v.prompt << '\n';
+  }
+
+  void ShowQuestion(const WizardView& v) {
+    const std::string error = v.input ? v.input->error : "";
+    if (v.prompt != prompt_ || error != error_ || (v.input && v.input->key != input_key_)) {
+      prompt_ = v.prompt;
+      error_ = error;
+      if (!v.prompt.empty()) out_ << v.prompt << '\n';
+      if (!error.empty()) out_ << "  refused: " << error << '\n';
+    }
+    input_key_ = v.input ? v.input->key : "";
+    if (v.input) {
+      out_ << fmt::format("{} [{}]> ", v.input->label, v.input->default_text);
+    } else if (!v.finished) {
+      out_ << "> ";
+    }
+  }
+
+  std::ostream& out_;
+  int step_index_ = -1;
+  std::string step_title_;
+  std::string prompt_;
+  std::string error_;
+  std::string input_key_;
+  std::string problem_;
+  std::vector<std::string> lines_;
+  int progress_quarter_ = -1;
+};
+
+}  // namespace
+
+int RunLineMode(WizardDriver& driver, std::istream& in, std::ostream& out) {
+  Printer printer(out);
+  out << driver.View().procedure << '\n' << "session: " << driver.View().session << '\n';
+  while (true) {
+    const WizardView v = driver.View();
+    printer.Show(v);
+    if (v.finished) return 0;
+    if (Busy(v)) {
+      driver.Poll(0.1);
+      continue;
+    }
+    std::string answer;
+    if (!std::getline(in, answer)) {
+      // End of input: save and leave (everything accepted is already in the journal).
+      out << '\n';
+      driver.Handle({IntentKind::kQuit, ""});
+      continue;
+    }
+    out << '\n';
+    driver.Handle(ToIntent(TrimLine(answer), v));
+    driver.Poll(0.0);
+  }
+}
+
+}  // namespace accelcal::ui
