@@ -13,7 +13,7 @@ namespace accelcal::ui {
 
 namespace {
 
-constexpr int kBarCells = 20;
+constexpr int kBarCells = 16;
 constexpr int kLabelWidth = 9;  // "stable   " and the like, so the values line up
 
 // `text` wrapped at `width`, the first line after `first`, the others indented to match.
@@ -39,17 +39,23 @@ bool WantsReading(const WizardView& view) {
     case WizardScreen::kMountTurntable:
     case WizardScreen::kCapturing:
       return true;
+    case WizardScreen::kFit:
+    case WizardScreen::kDiagnosis:
+    case WizardScreen::kReport:
+    case WizardScreen::kDone:
+      return false;  // the text lines need the room; the reading means nothing there
     default:
       return view.live_counts.array().isFinite().any();
   }
 }
 
+// The marker comes first so that a narrow terminal still shows the verdict.
 Line StabilityLine(const WizardView& view) {
   const double s = view.stability;
-  const std::string value = Bar(s, kBarCells) + " " + FormatNumber(s, 2, 4);
-  if (std::isnan(s)) return Labelled("stable", value + " [ -- ]", Role::kDim);
+  const std::string gauge = " " + Bar(s, kBarCells) + " " + FormatNumber(s, 2, 4);
+  if (std::isnan(s)) return Labelled("stable", "[ -- ]" + gauge, Role::kDim);
   const bool still = s < 1.0;
-  return Labelled("stable", value + (still ? " [ OK ]" : " [WARN]"),
+  return Labelled("stable", (still ? "[ OK ]" : "[WARN]") + gauge,
                   still ? Role::kPass : Role::kWarn);
 }
 
@@ -98,7 +104,7 @@ std::vector<Line> ReadingBlock(const WizardView& view) {
   }
   if (view.screen == WizardScreen::kCapturing || !std::isnan(view.progress)) {
     const double p = view.progress;
-    rows.push_back(Labelled("capture", Bar(std::min(p, 0.999), kBarCells) + " " +
+    rows.push_back(Labelled("capture", "       " + Bar(std::min(p, 0.999), kBarCells) + " " +
                                            FormatNumber(p * 100.0, 0, 4) + " %",
                             Role::kPrompt));
   }
