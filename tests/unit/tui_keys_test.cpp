@@ -123,7 +123,7 @@ class FakeTerminal : public TuiTerminal {
  public:
   explicit FakeTerminal(std::deque<int> keys) : keys_(std::move(keys)) {}
   int ReadKey(int) override {
-    if (keys_.empty()) return ++idle > 1000 ? 'q' : kKeyNone;  // never hang a test
+    if (keys_.empty()) return ++idle > 1000 ? int{'q'} : static_cast<int>(kKeyNone);  // never hang a test
     const int key = keys_.front();
     keys_.pop_front();
     if (key == kKeyResize) width = 60;

@@ -16,7 +16,7 @@ std::string Signed(double component, int axis) {
 
 // The box in a parallel projection; the label sits on the top face, centred.
 std::vector<std::string> Box(const std::string& label) {
-  const std::string top = fmt::format("{:^7}", label.substr(0, 7));
+  const std::string top = fmt::format("{:^8}", label.substr(0, 8));
   return {
       "   +--------+",
       "  /" + top + "/|",
@@ -32,7 +32,7 @@ std::vector<std::string> Table(const std::string& radial) {
   return {
       "   .--------.",
       "  /          \\",
-      " |  o---->" + fmt::format("{:<3}", radial.substr(0, 3)) + "|",
+      " |  o---->" + fmt::format("{:<4}", radial.substr(0, 4)) + "|",
       "  \\          /",
       "   '--------'",
   };
