@@ -1,0 +1,87 @@
+#include "tui/keys.h"
+
+#include <algorithm>
+#include <cctype>
+
+namespace accelcal::ui {
+
+namespace {
+
+KeyOutcome Send(IntentKind kind, std::string text = {}) {
+  return {KeyResult::kIntent, Intent{kind, std::move(text)}};
+}
+
+bool IsPrintable(int key) { return key >= 32 && key < 127; }
+
+// Scrolling works on every screen; returns nothing for other keys.
+std::optional<KeyOutcome> Scroll(const WizardView& view, EditState& state, int key) {
+  const int last = std::max(static_cast<int>(view.lines.size()) - 1, 0);
+  int to = state.scroll;
+  switch (key) {
+    case kKeyUp: to -= 1; break;
+    case kKeyDown: to += 1; break;
+    case kKeyPageUp: to -= std::max(state.page - 1, 1); break;
+    case kKeyPageDown: to += std::max(state.page - 1, 1); break;
+    case kKeyHome: to = 0; break;
+    case kKeyEnd: to = last; break;
+    default: return std::nullopt;
+  }
+  state.scroll = std::clamp(to, 0, last);
+  return KeyOutcome{KeyResult::kRedraw, std::nullopt};
+}
+
+KeyOutcome EditKey(EditState& state, int key) {
+  switch (key) {
+    case kKeyEnter: {
+      std::string text = std::move(state.text);
+      state.text.clear();
+      return Send(IntentKind::kSubmitText, std::move(text));
+    }
+    case kKeyEscape: state.text.clear(); return {KeyResult::kRedraw, std::nullopt};
+    case kKeyBackspace:
+      if (!state.text.empty()) state.text.pop_back();
+      return {KeyResult::kRedraw, std::nullopt};
+    default: break;
+  }
+  if (key == 'q' && state.text.empty()) return Send(IntentKind::kQuit);
+  if (IsPrintable(key)) {
+    state.text += static_cast<char>(key);
+    return {KeyResult::kRedraw, std::nullopt};
+  }
+  return {};
+}
+
+KeyOutcome CommandKey(int key) {
+  if (key == kKeyEnter) return Send(IntentKind::kAccept);
+  if (!IsPrintable(key)) return {};
+  switch (std::tolower(key)) {
+    case 'q': return Send(IntentKind::kQuit);
+    case 'r': return Send(IntentKind::kRetry);
+    case 's': return Send(IntentKind::kSkip);
+    case 'b': return Send(IntentKind::kBack);
+    case 'n': return Send(IntentKind::kAnswerNo);
+    default: return {};
+  }
+}
+
+}  // namespace
+
+KeyOutcome HandleKey(const WizardView& view, EditState& state, int key) {
+  if (key == kKeyNone) return {};
+  if (key == kKeyResize) return {KeyResult::kRedraw, std::nullopt};
+  if (auto scrolled = Scroll(view, state, key)) return *scrolled;
+  if (view.finished) return {KeyResult::kExit, std::nullopt};
+  return view.input ? EditKey(state, key) : CommandKey(key);
+}
+
+void SyncEditState(const WizardView& view, EditState& state) {
+  std::string context = std::to_string(view.step_index) + "/" +
+                        std::string(WizardScreenToString(view.screen)) + "/" +
+                        (view.input ? view.input->key : std::string("-"));
+  if (context == state.context) return;
+  state.context = std::move(context);
+  state.text.clear();
+  state.scroll = 0;
+}
+
+}  // namespace accelcal::ui

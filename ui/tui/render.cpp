@@ -1,0 +1,106 @@
+#include "tui/render.h"
+
+#include <algorithm>
+
+#include <fmt/core.h>
+
+#include "tui/render_blocks.h"
+#include "tui/text_util.h"
+
+namespace accelcal::ui {
+
+namespace {
+
+// A run of rows between the header and the keys; lower `priority` gives way first when the
+// terminal is short.
+struct Block {
+  int priority;
+  std::vector<Line> lines;
+};
+
+int Rows(const std::vector<Block>& blocks) {
+  int n = 0;
+  for (const Block& b : blocks) n += static_cast<int>(b.lines.size());
+  return n;
+}
+
+// Cuts rows from the ends of the least important blocks until `blocks` fit in `rows`.
+void Shrink(std::vector<Block>& blocks, int rows) {
+  int overflow = Rows(blocks) - rows;
+  for (int priority = 0; overflow > 0 && priority <= 9; ++priority) {
+    for (Block& b : blocks) {
+      if (b.priority != priority || overflow <= 0) continue;
+      const int cut = std::min(overflow, static_cast<int>(b.lines.size()));
+      b.lines.resize(b.lines.size() - cut);
+      overflow -= cut;
+    }
+  }
+}
+
+// The middle blocks in screen order. The text lines are not among them: they take what is left.
+std::vector<Block> MiddleBlocks(const WizardView& view, const RenderState& state, int width,
+                                bool with_drawing) {
+  std::vector<Line> panel = with_drawing ? PanelWithDrawing(view) : std::vector<Line>{};
+  if (panel.empty()) panel = ReadingBlock(view);
+  return {
+      {7, TitleBlock(view, width)},
+      {5, PromptBlock(view, width)},
+      {4, std::move(panel)},
+      {8, ProblemBlock(view, width)},
+      {9, InputBlock(view, state, width)},
+  };
+}
+
+// The text lines from `first` in `rows` rows; the last row says where we are when they do not
+// all fit.
+std::vector<Line> LinesArea(const std::vector<std::string>& lines, int first, int rows) {
+  std::vector<Line> out;
+  const int n = static_cast<int>(lines.size());
+  if (rows <= 0 || n == 0) return out;
+  const bool all_fit = n <= rows;
+  const int shown = all_fit ? n : std::max(rows - 1, 1);
+  first = std::clamp(first, 0, std::max(n - shown, 0));
+  for (int i = first; i < first + shown && i < n; ++i) out.push_back({{Asciify(lines[i])}});
+  if (!all_fit && rows > 1) {
+    out.push_back({{fmt::format("-- lines {}-{} of {} (PgUp/PgDn) --", first + 1,
+                                first + shown, n),
+                    Role::kDim}});
+  }
+  return out;
+}
+
+}  // namespace
+
+ScreenModel Render(const WizardView& view, const RenderState& state, int width, int height) {
+  ScreenModel screen(width, height);
+  if (width <= 0 || height <= 0) return screen;
+  screen.PutLine(0, 0, HeaderLine(view, width));
+  if (height == 1) return screen;
+  const int middle_rows = height - 2;  // between the header and the keys
+
+  // The drawing only when it fits beside the reading and leaves the rest whole.
+  std::vector<Block> blocks = MiddleBlocks(view, state, width, width >= 60);
+  blocks.push_back({3, StatusBlock(view)});
+  if (Rows(blocks) > middle_rows) {
+    blocks = MiddleBlocks(view, state, width, false);
+    blocks.push_back({3, StatusBlock(view)});
+  }
+  Shrink(blocks, middle_rows);
+  const int free_rows = middle_rows - Rows(blocks);
+  const bool scrollable = static_cast<int>(view.lines.size()) > free_rows;
+  // The status sits just above the keys; the text lines take the rows in between.
+  const std::vector<Line> status = std::move(blocks.back().lines);
+  blocks.pop_back();
+  blocks.push_back(Block{0, LinesArea(view.lines, state.scroll, free_rows)});
+
+  int row = 1;
+  for (const Block& b : blocks) {
+    for (const Line& line : b.lines) screen.PutLine(row++, 0, line);
+  }
+  row = height - 1 - static_cast<int>(status.size());
+  for (const Line& line : status) screen.PutLine(row++, 0, line);
+  screen.PutLine(height - 1, 0, KeysLine(view, scrollable && !view.lines.empty()));
+  return screen;
+}
+
+}  // namespace accelcal::ui

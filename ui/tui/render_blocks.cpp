@@ -1,0 +1,188 @@
+#include "tui/render_blocks.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <fmt/core.h>
+
+#include "tui/gauge.h"
+#include "tui/prism_drawing.h"
+#include "tui/text_util.h"
+
+namespace accelcal::ui {
+
+namespace {
+
+constexpr int kBarCells = 16;
+constexpr int kLabelWidth = 9;  // "stable   " and the like, so the values line up
+
+// `text` wrapped at `width`, the first line after `first`, the others indented to match.
+std::vector<Line> Marked(const std::string& first, const std::string& text, int width,
+                         Role role) {
+  const int indent = static_cast<int>(first.size());
+  std::vector<Line> lines;
+  for (const std::string& row : Wrap(Asciify(text), std::max(width - indent, 1))) {
+    const std::string lead = lines.empty() ? first : std::string(indent, ' ');
+    lines.push_back({{lead + row, role}});
+  }
+  return lines;
+}
+
+Line Labelled(const std::string& label, const std::string& value, Role role = Role::kNormal) {
+  return {{fmt::format("{:<{}}", label, kLabelWidth), Role::kDim}, {value, role}};
+}
+
+bool WantsReading(const WizardView& view) {
+  switch (view.screen) {
+    case WizardScreen::kLevel:
+    case WizardScreen::kPlacePose:
+    case WizardScreen::kMountTurntable:
+    case WizardScreen::kCapturing:
+      return true;
+    case WizardScreen::kFit:
+    case WizardScreen::kDiagnosis:
+    case WizardScreen::kReport:
+    case WizardScreen::kDone:
+      return false;  // the text lines need the room; the reading means nothing there
+    default:
+      return view.live_counts.array().isFinite().any();
+  }
+}
+
+// The marker comes first so that a narrow terminal still shows the verdict.
+Line StabilityLine(const WizardView& view) {
+  const double s = view.stability;
+  const std::string gauge = " " + Bar(s, kBarCells) + " " + FormatNumber(s, 2, 4);
+  if (std::isnan(s)) return Labelled("stable", "[ -- ]" + gauge, Role::kDim);
+  const bool still = s < 1.0;
+  return Labelled("stable", (still ? "[ OK ]" : "[WARN]") + gauge,
+                  still ? Role::kPass : Role::kWarn);
+}
+
+bool IsTurntable(const WizardView& view) {
+  return view.screen == WizardScreen::kMountTurntable ||
+         view.pose_name.find("radial") != std::string::npos;
+}
+
+}  // namespace
+
+Line HeaderLine(const WizardView& view, int width) {
+  std::string text = fmt::format(" Step {} of {}", view.step_index, view.step_count);
+  if (!view.session.empty()) text += " | session " + view.session;
+  if (!view.procedure.empty()) text += " | " + view.procedure;
+  if (view.resumed) text += " | resumed";
+  text = Asciify(text);
+  text.resize(static_cast<size_t>(std::max(width, 0)), ' ');  // a full-width title bar
+  return {{text, Role::kTitle}};
+}
+
+std::vector<Line> TitleBlock(const WizardView& view, int width) {
+  if (view.step_title.empty()) return {};
+  return {{{Clip(Asciify(view.step_title), width), Role::kTitle}}};
+}
+
+std::vector<Line> PromptBlock(const WizardView& view, int width) {
+  return Marked("", view.prompt, width, Role::kPrompt);
+}
+
+std::vector<Line> ReadingBlock(const WizardView& view) {
+  if (!WantsReading(view)) return {};
+  const Eigen::Vector3d& c = view.live_counts;
+  std::vector<Line> rows;
+  rows.push_back(Labelled("counts", fmt::format("x {}  y {}  z {}", FormatNumber(c.x(), 0, 6),
+                                                FormatNumber(c.y(), 0, 6),
+                                                FormatNumber(c.z(), 0, 6))));
+  rows.push_back(Labelled("|f|", FormatNumber(view.live_g, 3, 6) + " g (approx.)"));
+  if (view.tilt_deg.array().isFinite().any()) {
+    rows.push_back(Labelled("tilt", fmt::format("x {} deg  y {} deg",
+                                                FormatNumber(view.tilt_deg.x(), 2, 6),
+                                                FormatNumber(view.tilt_deg.y(), 2, 6))));
+  }
+  rows.push_back(StabilityLine(view));
+  if (!view.stability_text.empty()) {
+    rows.push_back(Labelled("", Asciify(view.stability_text), Role::kDim));
+  }
+  if (view.screen == WizardScreen::kCapturing || !std::isnan(view.progress)) {
+    const double p = view.progress;
+    rows.push_back(Labelled("capture", "       " + Bar(std::min(p, 0.999), kBarCells) + " " +
+                                           FormatNumber(p * 100.0, 0, 4) + " %",
+                            Role::kPrompt));
+  }
+  return rows;
+}
+
+std::vector<Line> PanelWithDrawing(const WizardView& view) {
+  const std::vector<std::string> drawing =
+      DrawPose(view.expected_up, view.pose_name, IsTurntable(view));
+  if (drawing.empty()) return {};
+  std::vector<Line> reading = ReadingBlock(view);
+  std::vector<Line> rows;
+  const size_t n = std::max(drawing.size(), reading.size());
+  for (size_t i = 0; i < n; ++i) {
+    const std::string left = i < drawing.size() ? drawing[i] : "";
+    Line line{{fmt::format("{:<{}}", left, kDrawingWidth + 1), Role::kNormal}};
+    if (i < reading.size()) line.insert(line.end(), reading[i].begin(), reading[i].end());
+    rows.push_back(std::move(line));
+  }
+  return rows;
+}
+
+std::vector<Line> ProblemBlock(const WizardView& view, int width) {
+  std::vector<Line> rows;
+  if (!view.problem.empty()) rows = Marked("[FAIL] ", view.problem, width, Role::kFail);
+  if (!view.hint.empty()) {
+    std::vector<Line> hint = Marked("[HINT] ", view.hint, width, Role::kWarn);
+    rows.insert(rows.end(), hint.begin(), hint.end());
+  }
+  return rows;
+}
+
+std::vector<Line> InputBlock(const WizardView& view, const RenderState& state, int width) {
+  if (!view.input) return {};
+  const InputRequest& in = *view.input;
+  std::vector<Line> rows = Marked("> ", in.label, width, Role::kPrompt);
+  std::string answer = "  answer";
+  if (!in.default_text.empty()) answer += " [" + Asciify(in.default_text) + "]";
+  answer += ": ";
+  // Show the end of a long answer so the cursor mark stays in view.
+  const int room = std::max(width - static_cast<int>(answer.size()) - 1, 1);
+  std::string typed = Asciify(state.edit_text);
+  if (static_cast<int>(typed.size()) > room) typed = typed.substr(typed.size() - room);
+  rows.push_back({{answer, Role::kPrompt}, {typed + "_", Role::kNormal}});
+  if (!in.error.empty()) {
+    std::vector<Line> error = Marked("[FAIL] ", in.error, width, Role::kFail);
+    rows.insert(rows.end(), error.begin(), error.end());
+  }
+  return rows;
+}
+
+std::vector<Line> StatusBlock(const WizardView& view) {
+  if (view.status.empty()) return {};
+  return {{{Asciify(view.status), Role::kDim}}};
+}
+
+Line KeysLine(const WizardView& view, bool scrollable) {
+  Line line;
+  auto add = [&line](const std::string& key, const std::string& action) {
+    if (!line.empty()) line.push_back({"  ", Role::kNormal});
+    line.push_back({Asciify(key), Role::kTitle});
+    line.push_back({" " + Asciify(action), Role::kNormal});
+  };
+  if (view.finished) {
+    add("any key", "leave");
+  } else {
+    // q works at any moment; it comes first so that a narrow terminal still shows it.
+    std::string quit_action = "save and quit";
+    for (const KeyHint& hint : view.keys) {
+      if (hint.key == "q") quit_action = hint.action;
+    }
+    add("q", quit_action);
+    for (const KeyHint& hint : view.keys) {
+      if (hint.key != "q") add(hint.key, hint.action);
+    }
+  }
+  if (scrollable) add("PgUp/PgDn", "scroll");
+  return line;
+}
+
+}  // namespace accelcal::ui

@@ -1,0 +1,24 @@
+// The blocks the renderer stacks (ui/tui/render.cpp), each built from the view at a width.
+#pragma once
+
+#include <vector>
+
+#include "accelcal/wizard/wizard_view.h"
+#include "tui/render.h"
+#include "tui/screen_model.h"
+
+namespace accelcal::ui {
+
+Line HeaderLine(const WizardView& view, int width);
+std::vector<Line> TitleBlock(const WizardView& view, int width);
+std::vector<Line> PromptBlock(const WizardView& view, int width);
+// The live reading, tilt, stability and progress rows (without the drawing).
+std::vector<Line> ReadingBlock(const WizardView& view);
+// The reading rows beside the pose drawing; empty when there is no drawing.
+std::vector<Line> PanelWithDrawing(const WizardView& view);
+std::vector<Line> ProblemBlock(const WizardView& view, int width);
+std::vector<Line> InputBlock(const WizardView& view, const RenderState& state, int width);
+std::vector<Line> StatusBlock(const WizardView& view);
+Line KeysLine(const WizardView& view, bool scrollable);
+
+}  // namespace accelcal::ui
