@@ -117,7 +117,9 @@ TEST(WizardEngineTest, WelcomeTakesTypedAnswersAndGoesBack) {
 
 TEST(WizardEngineTest, LevelingByReversalPassesOnTheLevelSimTable) {
   Rig rig(SeedProcedure());
-  AcceptUntil(rig.engine, [](const WizardView& v) { return std::isfinite(v.tilt_deg.x()); });
+  AcceptUntil(rig.engine, TitleIs("Level the table"));
+  EXPECT_TRUE(std::isfinite(rig.engine.View().tilt_deg.x()));  // live, before the reversal
+  AcceptUntil(rig.engine, [](const WizardView& v) { return v.prompt.rfind("Tilt", 0) == 0; });
   const WizardView v = rig.engine.View();
   EXPECT_EQ(v.screen, WizardScreen::kLevel);
   EXPECT_LT(std::abs(v.tilt_deg.x()), 1.5);

@@ -397,7 +397,16 @@ void WizardEngine::Poll(double timeout_s) {
   std::vector<Sample> chunk;
   source_.Read(timeout_s, &chunk);
   UpdateLive(chunk);
-  if (chunk.empty()) return;
+  if (chunk.empty()) {
+    if (source_.status().link == LinkState::kEnded && (phase_ == Phase::kCapture || phase_ == Phase::kQuiet)) {
+      // Nothing more will come (a recording replayed to its end): say so instead of waiting.
+      engine_.reset();
+      problem_ = "the source has ended: no more samples from " + source_.Describe();
+      hint_ = "q leaves; everything accepted is in the session";
+      phase_ = Phase::kProblem;
+    }
+    return;
+  }
   if (phase_ == Phase::kQuiet) FeedQuiet(chunk);
   else if (phase_ == Phase::kCapture && engine_) FeedCapture(chunk);
 }
@@ -544,6 +553,14 @@ WizardView WizardEngine::View() const {
   v.status = source_.Describe() + ": " + source_.status().BriefReport();
   SetStepView(v);
   SetPhaseView(v);
+  // Leveling: the live tilt (apparent: the bias is not known yet) until the reversal gives it.
+  if (current_ >= 0 && current_ < static_cast<int>(procedure_.steps.size()) &&
+      step().kind == StepKind::kLevel && phase_ != Phase::kLevelResult && live_counts_.allFinite())
+    v.tilt_deg = ApparentTiltDeg(live_counts_, procedure_.nominal);
+  if (source_.status().link == LinkState::kDead && v.problem.empty()) {
+    v.problem = "no samples: " + source_.status().link_error;
+    v.hint = "check the cable or the sample server; the wizard goes on when samples return";
+  }
   return v;
 }
 
