@@ -75,8 +75,7 @@ void WizardEngine::ReadJournal() {
     if (c.capture.kind == CaptureKind::kStatic)
       captured_.push_back({c.capture.id, c.capture.label, MeasuredUp(c.capture, procedure_.nominal)});
   }
-  if (auto it = done.find("diagnosis"); it != done.end())
-    adopt_effects_ = it->second.rfind("adopted", 0) == 0;
+  // A diagnosis decided in an earlier run: adopted effects go into the report.
   for (const ProcedureStep& s : procedure_.steps)
     if (s.kind == StepKind::kDiagnosis)
       if (auto d = done.find(s.id); d != done.end()) adopt_effects_ = d->second.rfind("adopted", 0) == 0;
