@@ -185,11 +185,14 @@ void WizardEngine::SetResultView(WizardView& v) const {
 void WizardEngine::SetDoneView(WizardView& v) const {
   v.screen = WizardScreen::kDone;
   v.finished = true;
-  v.prompt = quit_ ? fmt::format(
-                         "Saved. Everything accepted is in session {}; run the wizard "
-                         "on it again to resume.",
-                         options_.session_name)
-                   : "Calibration complete.";
+  const bool calibrates = std::any_of(procedure_.steps.begin(), procedure_.steps.end(),
+                                      [](const ProcedureStep& s) { return s.kind == StepKind::kReport; });
+  if (quit_) {
+    v.prompt = fmt::format("Saved. Everything accepted is in session {}; run the wizard on it again "
+                           "to resume.", options_.session_name);
+  } else {
+    v.prompt = calibrates ? "Calibration complete." : "Procedure complete: every step is recorded.";
+  }
 }
 
 void WizardEngine::SetCaptureView(WizardView& v) const {
