@@ -65,7 +65,8 @@ class Printer {
     // The state word and attempt (the prompt up to ':') change rarely; progress by quarters.
     const std::string head = v.prompt.substr(0, v.prompt.find(':'));
     const int quarter = std::isfinite(v.progress) ? static_cast<int>(v.progress * 4.0) : -1;
-    if (head == prompt_ && quarter <= progress_quarter_) return;
+    const bool capturing = head.rfind("capturing", 0) == 0;
+    if (head == prompt_ && (!capturing || quarter <= progress_quarter_)) return;
     prompt_ = head;
     progress_quarter_ = quarter;
     out_ << "  " << v.prompt << '\n';
@@ -73,13 +74,12 @@ class Printer {
 
   void ShowQuestion(const WizardView& v) {
     const std::string error = v.input ? v.input->error : "";
-    if (v.prompt != prompt_ || error != error_ || (v.input && v.input->key != input_key_)) {
+    if (v.prompt != prompt_ || error != error_) {
       prompt_ = v.prompt;
       error_ = error;
       if (!v.prompt.empty()) out_ << v.prompt << '\n';
       if (!error.empty()) out_ << "  refused: " << error << '\n';
     }
-    input_key_ = v.input ? v.input->key : "";
     if (v.input) {
       out_ << fmt::format("{} [{}]> ", v.input->label, v.input->default_text);
     } else if (!v.finished) {
@@ -92,7 +92,6 @@ class Printer {
   std::string step_title_;
   std::string prompt_;
   std::string error_;
-  std::string input_key_;
   std::string problem_;
   std::vector<std::string> lines_;
   int progress_quarter_ = -1;

@@ -122,6 +122,7 @@ ProcedureStep ReadStep(TomlTableReader& r, const CaptureDefaults& d) {
   }
   s.title = r.String("title", s.pose_name.empty() ? std::string(StepKindToString(s.kind))
                                                   : s.pose_name);
+  if (s.kind == StepKind::kLevel) s.pose_name = "+z up";  // the reversal's pose
   return s;
 }
 

@@ -75,8 +75,7 @@ void WizardEngine::ReadJournal() {
     if (c.capture.kind == CaptureKind::kStatic)
       captured_.push_back({c.capture.id, c.capture.label, MeasuredUp(c.capture, procedure_.nominal)});
   }
-  if (auto it = done.find("diagnosis"); it != done.end())
-    adopt_effects_ = it->second.rfind("adopted", 0) == 0;
+  // A diagnosis decided in an earlier run: adopted effects go into the report.
   for (const ProcedureStep& s : procedure_.steps)
     if (s.kind == StepKind::kDiagnosis)
       if (auto d = done.find(s.id); d != done.end()) adopt_effects_ = d->second.rfind("adopted", 0) == 0;
@@ -397,7 +396,16 @@ void WizardEngine::Poll(double timeout_s) {
   std::vector<Sample> chunk;
   source_.Read(timeout_s, &chunk);
   UpdateLive(chunk);
-  if (chunk.empty()) return;
+  if (chunk.empty()) {
+    if (source_.status().link == LinkState::kEnded && (phase_ == Phase::kCapture || phase_ == Phase::kQuiet)) {
+      // Nothing more will come (a recording replayed to its end): say so instead of waiting.
+      engine_.reset();
+      problem_ = "the source has ended: no more samples from " + source_.Describe();
+      hint_ = "q leaves; everything accepted is in the session";
+      phase_ = Phase::kProblem;
+    }
+    return;
+  }
   if (phase_ == Phase::kQuiet) FeedQuiet(chunk);
   else if (phase_ == Phase::kCapture && engine_) FeedCapture(chunk);
 }
@@ -521,168 +529,6 @@ void WizardEngine::HandleCaptureIntent(const Intent& intent) {
       }
       return;
     default: return;
-  }
-}
-
-// ---- view -----------------------------------------------------------------------------------
-
-WizardView WizardEngine::View() const {
-  WizardView v;
-  v.session = options_.session_name;
-  v.procedure = procedure_.title;
-  v.resumed = resumed_;
-  v.step_count = static_cast<int>(procedure_.steps.size()) + 1;
-  v.step_index = std::min(current_ + 2, v.step_count);
-  v.live_counts = live_counts_;
-  if (live_counts_.allFinite())
-    v.live_g = procedure_.nominal.Calibrate(live_counts_).norm() / options_.gravity.gravity_mps2;
-  v.problem = problem_;
-  v.hint = hint_;
-  // The resume summary is shown until this run has recorded something of its own.
-  if (resumed_ && !progressed_) v.lines = resume_lines_;
-  v.lines.insert(v.lines.end(), lines_.begin(), lines_.end());
-  v.status = source_.Describe() + ": " + source_.status().BriefReport();
-  SetStepView(v);
-  SetPhaseView(v);
-  return v;
-}
-
-void WizardEngine::SetStepView(WizardView& v) const {
-  if (current_ < 0) {
-    v.step_title = "Welcome";
-    return;
-  }
-  if (current_ >= static_cast<int>(procedure_.steps.size())) {
-    v.step_title = "Done";
-    return;
-  }
-  const ProcedureStep& s = step();
-  v.step_title = s.title;
-  v.pose_name = s.pose_name;
-  if (s.kind == StepKind::kStatic || s.kind == StepKind::kRecord || s.kind == StepKind::kLevel)
-    v.expected_up = s.up;
-  if (s.kind == StepKind::kTurntable) v.expected_up = SensorAxisVector(s.up_axis);
-}
-
-void WizardEngine::SetPhaseView(WizardView& v) const {
-  const std::vector<KeyHint> nav = {{"s", "skip"}, {"b", "back"}, {"q", "save and quit"}};
-  auto keys = [&](std::vector<KeyHint> first) {
-    first.insert(first.end(), nav.begin(), nav.end());
-    return first;
-  };
-  switch (phase_) {
-    case Phase::kWelcome: {
-      const bool device = welcome_field_ == 0;
-      v.screen = WizardScreen::kWelcome;
-      v.prompt = fmt::format("Welcome to {}.", procedure_.title);
-      v.input = InputRequest{device ? "device" : "operator",
-                             device ? "Device serial number" : "Operator",
-                             device ? options_.default_device : options_.default_operator, ""};
-      v.keys = {{"Enter", "accept"}, {"b", "back"}, {"q", "save and quit"}};
-      return;
-    }
-    case Phase::kQuiet:
-      v.screen = WizardScreen::kCapturing;
-      v.prompt = fmt::format("Leave the sensor resting on the table: measuring the noise floor ({:g} s).",
-                             options_.quiet_period_s);
-      v.progress = quiet_.n >= 2 ? std::min(1.0, (quiet_.t_last_s - quiet_.t_first_s) /
-                                                     options_.quiet_period_s) : 0.0;
-      v.keys = {{"q", "save and quit"}};
-      return;
-    case Phase::kPlace:
-      v.screen = step().kind == StepKind::kTurntable ? WizardScreen::kMountTurntable
-               : step().kind == StepKind::kLevel ? WizardScreen::kLevel : WizardScreen::kPlacePose;
-      v.prompt = step().kind == StepKind::kTurntable
-          ? fmt::format("Mount the sensor on the turntable with {} at {:g} mm from the axis and run "
-                        "it at {:g} rpm; press Enter when it turns steadily.",
-                        step().pose_name, radius_m_ * 1000.0, rpm_)
-          : step().kind == StepKind::kLevel
-          ? "Put the prism on the table with +z up and let go; press Enter to measure the tilt."
-          : fmt::format("Put the prism on the table with {} and let go; press Enter to capture.",
-                        step().pose_name);
-      v.keys = keys({{"Enter", "capture"}});
-      return;
-    case Phase::kLevelTurn:
-      v.screen = WizardScreen::kLevel;
-      v.prompt = "Turn the prism 180 deg about the vertical (still +z up); press Enter to measure again.";
-      v.keys = keys({{"Enter", "measure"}});
-      return;
-    case Phase::kLevelResult:
-      v.screen = WizardScreen::kLevel;
-      v.tilt_deg = level_tilt_deg_;
-      v.prompt = fmt::format("Tilt {:.2f} deg about x, {:.2f} deg about y (tolerance {:g} deg): {}.",
-                             level_tilt_deg_.x(), level_tilt_deg_.y(), step().tolerance_deg,
-                             level_ok_ ? "level; press Enter to continue" : "not level");
-      v.keys = keys({{"Enter", level_ok_ ? "continue" : "measure again"}, {"r", "measure again"}});
-      return;
-    case Phase::kRadius:
-    case Phase::kRpm: {
-      const bool radius = phase_ == Phase::kRadius;
-      v.screen = WizardScreen::kInput;
-      v.prompt = fmt::format("Turntable run with {}.", step().pose_name);
-      v.input = InputRequest{radius ? "radius" : "rpm",
-                             radius ? "Radius from the spin axis to the sensor (e.g. 120 mm)"
-                                    : "Table speed (e.g. 120 rpm, 2 rps, 12.57 rad/s)",
-                             radius ? fmt::format("{:g} mm", radius_m_ * 1000.0)
-                                    : fmt::format("{:g} rpm", rpm_),
-                             input_error_};
-      v.keys = keys({{"Enter", "accept"}});
-      return;
-    }
-    case Phase::kCapture:
-    case Phase::kProblem:
-      SetCaptureView(v);
-      return;
-    case Phase::kResult: {
-      const StepKind kind = step().kind;
-      v.screen = kind == StepKind::kFit ? WizardScreen::kFit
-               : kind == StepKind::kDiagnosis ? WizardScreen::kDiagnosis : WizardScreen::kReport;
-      if (!problem_.empty()) {
-        v.prompt = "The session cannot go on from here as it is.";
-        v.keys = keys({{"r", "retry"}});
-        return;
-      }
-      if (kind == StepKind::kDiagnosis && diagnosis_ && !diagnosis_->adopted.empty()) {
-        v.prompt = fmt::format("Adopt {} into the calibration? Enter adopts, n keeps the base model.",
-                               fmt::join(diagnosis_->adopted_names(), ", "));
-        v.keys = keys({{"Enter", "adopt"}, {"n", "keep the base model"}});
-        return;
-      }
-      v.prompt = kind == StepKind::kReport ? "Calibration recorded in the session; press Enter to finish."
-                                           : "Press Enter to continue.";
-      v.keys = keys({{"Enter", "continue"}, {"r", "retry"}});
-      return;
-    }
-    case Phase::kDone:
-      v.screen = WizardScreen::kDone;
-      v.finished = true;
-      v.prompt = quit_ ? fmt::format("Saved. Everything accepted is in session {}; run the wizard "
-                                     "on it again to resume.", options_.session_name)
-                       : "Calibration complete.";
-      return;
-  }
-}
-
-void WizardEngine::SetCaptureView(WizardView& v) const {
-  v.screen = phase_ == Phase::kProblem ? WizardScreen::kError : WizardScreen::kCapturing;
-  v.keys = {{"r", "retry"}, {"s", "skip"}, {"b", "back"}, {"q", "save and quit"}};
-  if (phase_ == Phase::kProblem) {
-    v.prompt = "The capture was not accepted.";
-    v.keys.insert(v.keys.begin(), KeyHint{"Enter", "try again"});
-    return;
-  }
-  const CaptureSnapshot snap = engine_->Snapshot();
-  v.prompt = fmt::format("{} {} (attempt {}): {}", CaptureStateToString(snap.state),
-                         step().pose_name, std::max(1, snap.attempts),
-                         snap.state == CaptureState::kCapturing
-                             ? fmt::format("{:.0f} %", snap.progress * 100.0)
-                             : (snap.reason.empty() ? "waiting for the sensor to be still" : snap.reason));
-  v.progress = snap.progress;
-  if (step().kind == StepKind::kTurntable) {
-    v.stability_text = snap.turntable.ok ? "turning steadily" : snap.turntable.reason;
-  } else {
-    v.stability = snap.stability.WorstRatio();
-    v.stability_text = snap.stability.stable ? "still" : snap.stability.reason;
   }
 }
 

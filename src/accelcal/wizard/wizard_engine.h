@@ -100,6 +100,14 @@ class WizardEngine final : public WizardDriver {
   void UpdateLive(const std::vector<Sample>& chunk);
   void SetStepView(WizardView& v) const;
   void SetPhaseView(WizardView& v) const;
+  // The view of each phase (wizard_engine_view.cpp).
+  void SetWelcomeView(WizardView& v) const;
+  void SetQuietView(WizardView& v) const;
+  void SetPlaceView(WizardView& v) const;
+  void SetLevelView(WizardView& v) const;
+  void SetInputView(WizardView& v) const;
+  void SetResultView(WizardView& v) const;
+  void SetDoneView(WizardView& v) const;
   void SetCaptureView(WizardView& v) const;
 
   Procedure procedure_;

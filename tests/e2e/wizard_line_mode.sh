@@ -1,0 +1,46 @@
+#!/usr/bin/env bash
+# End-to-end: `accelcal wizard --plain` takes every default on the virtual bench (speed 0) and
+# completes a whole calibration, printing the report.
+# Usage: bash wizard_line_mode.sh ACCELCAL_BINARY SOURCE_DIR SHARED_DATA_DIR
+set -euo pipefail
+
+accelcal=$1
+source_dir=$2
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+
+fail() { echo "FAIL: $*" >&2; exit 1; }
+
+# `yes` gets SIGPIPE when the wizard exits; only the wizard's status counts.
+set +e
+yes '' | "$accelcal" wizard --source sim --speed 0 --session "$work/s.db" --plain \
+  > "$work/out" 2> "$work/err"
+code=${PIPESTATUS[1]}
+set -e
+[[ $code -eq 0 ]] || fail "exit $code: $(cat "$work/err")"
+grep -q 'parameters (1-sigma):' "$work/out" || fail "no parameters in the report"
+grep -q 'fit converged: 18 captures' "$work/out" || fail "the fit did not converge on 18 captures"
+grep -q '^\[23/23\] Done' "$work/out" || fail "the wizard did not reach the end"
+grep -q 'Calibration complete' "$work/out" || fail "no completion message"
+grep -q 'a_zx' "$work/out" || fail "no misalignment in the report"
+
+# End of input = save and leave, exit 0.
+set +e
+printf '\n\n' | "$accelcal" wizard --source sim --speed 0 --session "$work/t.db" --plain \
+  > "$work/out2" 2> "$work/err2"
+code=$?
+set -e
+[[ $code -eq 0 ]] || fail "EOF exit $code"
+grep -q 'Saved' "$work/out2" || fail "EOF did not save and leave"
+
+# A malformed procedure: exit 1, FILE:LINE on stderr.
+printf 'title = "x"\n[sensor]\nnominal_scale_counts_per_mps2 = 34.8\nnominal_bias_counts = 2048\nbogus = 1\n' \
+  > "$work/bad.toml"
+set +e
+"$accelcal" wizard --plain --speed 0 --procedure "$work/bad.toml" < /dev/null > /dev/null 2> "$work/err3"
+code=$?
+set -e
+[[ $code -eq 1 ]] || fail "bad procedure exited $code"
+grep -q 'bad.toml:5:' "$work/err3" || fail "no position: $(cat "$work/err3")"
+
+echo "wizard_line_mode: ok"

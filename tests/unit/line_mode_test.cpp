@@ -1,0 +1,63 @@
+// The plain line mode over the wizard engine on the virtual bench (speed 0), with string streams.
+#include <sstream>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "accelcal/sim/scenario.h"
+#include "accelcal/source/sim_source.h"
+#include "accelcal/wizard/procedure.h"
+#include "accelcal/wizard/wizard_engine.h"
+#include "frontend.h"
+
+namespace accelcal {
+namespace {
+
+struct LineRig {
+  LineRig()
+      : sim(sim::DefaultScenario(), [] {
+          SimOptions o;
+          o.speed = 0.0;
+          o.bump_probability = 0.0;
+          return o;
+        }()),
+        journal(MakeMemoryJournal()),
+        engine(LoadProcedure(std::string(ACCELCAL_SOURCE_DIR) + "/procedures/seed_calibration.toml"),
+               sim, *journal, WizardOptions{"line", "op", "SN1", {}, 2.0}) {}
+  SimSource sim;
+  std::unique_ptr<SessionJournal> journal;
+  WizardEngine engine;
+};
+
+TEST(LineModeTest, EmptyAnswersCompleteTheCalibration) {
+  LineRig rig;
+  std::istringstream in(std::string(200, '\n'));
+  std::ostringstream out;
+  EXPECT_EQ(ui::RunLineMode(rig.engine, in, out), 0);
+  const std::string text = out.str();
+  EXPECT_NE(text.find("fit converged: 18 captures"), std::string::npos);
+  EXPECT_NE(text.find("Calibration complete"), std::string::npos);
+  EXPECT_TRUE(rig.journal->Result().has_value());
+}
+
+TEST(LineModeTest, TypedAnswersAndQuit) {
+  LineRig rig;
+  std::istringstream in("SN9\nada\nq\n");
+  std::ostringstream out;
+  EXPECT_EQ(ui::RunLineMode(rig.engine, in, out), 0);
+  EXPECT_EQ(rig.journal->Inputs().at("welcome").at("device"), "SN9");
+  EXPECT_EQ(rig.journal->Inputs().at("welcome").at("operator"), "ada");
+  EXPECT_NE(out.str().find("Saved"), std::string::npos);
+}
+
+TEST(LineModeTest, EndOfInputSavesAndLeaves) {
+  LineRig rig;
+  std::istringstream in("\n\n\n");
+  std::ostringstream out;
+  EXPECT_EQ(ui::RunLineMode(rig.engine, in, out), 0);
+  EXPECT_NE(out.str().find("Saved"), std::string::npos);
+  EXPECT_FALSE(rig.journal->Result().has_value());
+}
+
+}  // namespace
+}  // namespace accelcal

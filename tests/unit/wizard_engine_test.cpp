@@ -1,0 +1,320 @@
+// The wizard engine on the virtual bench at speed 0 with a memory journal: every transition
+// (accept, retry, skip, back, quit, inputs refused then accepted, wrong face, bump, fit failure,
+// diagnosis adopt/decline, resume). No timing-dependent assertions: time is the samples'.
+#include <cmath>
+#include <functional>
+#include <memory>
+#include <set>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "accelcal/sim/scenario.h"
+#include "accelcal/source/sim_source.h"
+#include "accelcal/wizard/procedure.h"
+#include "accelcal/wizard/session_journal.h"
+#include "accelcal/wizard/wizard_engine.h"
+
+namespace accelcal {
+namespace {
+
+Procedure SeedProcedure() {
+  return LoadProcedure(std::string(ACCELCAL_SOURCE_DIR) + "/procedures/seed_calibration.toml");
+}
+
+SimOptions Fast(double bump_probability = 0.0) {
+  SimOptions o;
+  o.speed = 0.0;
+  o.bump_probability = bump_probability;
+  return o;
+}
+
+// A sim, a journal and an engine over them (declared in that order: the engine borrows both).
+struct Rig {
+  explicit Rig(Procedure procedure, SimOptions sim_options = Fast(),
+               sim::Scenario scenario = sim::DefaultScenario(),
+               std::shared_ptr<SessionJournal> shared_journal = nullptr)
+      : sim(std::move(scenario), sim_options),
+        journal(shared_journal ? std::move(shared_journal) : std::shared_ptr<SessionJournal>(MakeMemoryJournal())),
+        engine(std::move(procedure), sim, *journal, WizardOptions{"test", "op", "SN1", {}, 2.0}) {}
+  SimSource sim;
+  std::shared_ptr<SessionJournal> journal;
+  WizardEngine engine;
+};
+
+bool Busy(const WizardView& v) { return v.screen == WizardScreen::kCapturing && !v.input; }
+
+// Polls while the engine is busy; returns the problems seen on the way.
+std::vector<std::string> PollUntilQuestion(WizardEngine& e, int max_polls = 5000) {
+  std::vector<std::string> problems;
+  for (int i = 0; i < max_polls && Busy(e.View()); ++i) {
+    e.Poll(0.0);
+    if (!e.View().problem.empty()) problems.push_back(e.View().problem);
+  }
+  return problems;
+}
+
+// Accepts every question until `stop` says so or the wizard finishes.
+void AcceptUntil(WizardEngine& e, const std::function<bool(const WizardView&)>& stop,
+                 int max_steps = 2000) {
+  for (int i = 0; i < max_steps; ++i) {
+    PollUntilQuestion(e);
+    const WizardView v = e.View();
+    if (v.finished || stop(v)) return;
+    e.Handle({IntentKind::kAccept, ""});
+  }
+  FAIL() << "the wizard did not get there";
+}
+
+bool Never(const WizardView&) { return false; }
+auto TitleIs(const std::string& title) {
+  return [title](const WizardView& v) { return v.step_title == title; };
+}
+
+Procedure ShortStaticProcedure(int poses) {
+  Procedure p = SeedProcedure();
+  std::vector<ProcedureStep> steps;
+  for (const ProcedureStep& s : p.steps) {
+    if (s.kind == StepKind::kStatic && poses-- > 0) steps.push_back(s);
+    if (s.kind == StepKind::kFit || s.kind == StepKind::kReport) steps.push_back(s);
+  }
+  p.steps = steps;
+  return p;
+}
+
+TEST(WizardEngineTest, AcceptingEverythingCompletesTheSeedCalibration) {
+  Rig rig(SeedProcedure());
+  EXPECT_EQ(rig.engine.View().screen, WizardScreen::kWelcome);
+  EXPECT_EQ(rig.engine.View().step_count, 23);
+  AcceptUntil(rig.engine, Never);
+  const WizardView v = rig.engine.View();
+  EXPECT_TRUE(v.finished);
+  EXPECT_EQ(v.screen, WizardScreen::kDone);
+  EXPECT_EQ(rig.journal->Captures().size(), 18u);
+  ASSERT_TRUE(rig.journal->Result().has_value());
+  EXPECT_TRUE(rig.journal->Result()->contains("model") || rig.journal->Result()->size() > 3);
+  EXPECT_EQ(rig.journal->DoneSteps().at("welcome"), "ok");
+  EXPECT_EQ(rig.journal->DoneSteps().at("fit").rfind("converged", 0), 0u);
+  EXPECT_EQ(rig.journal->Inputs().at("welcome").at("device"), "SN1");
+  EXPECT_EQ(rig.journal->Inputs().at("tt_x_100").at("radius_m"), "0.1");
+}
+
+TEST(WizardEngineTest, WelcomeTakesTypedAnswersAndGoesBack) {
+  Rig rig(SeedProcedure());
+  ASSERT_TRUE(rig.engine.View().input.has_value());
+  EXPECT_EQ(rig.engine.View().input->key, "device");
+  rig.engine.Handle({IntentKind::kSubmitText, "SN42"});
+  EXPECT_EQ(rig.engine.View().input->key, "operator");
+  rig.engine.Handle({IntentKind::kBack, ""});
+  EXPECT_EQ(rig.engine.View().input->key, "device");
+  rig.engine.Handle({IntentKind::kSubmitText, "SN43"});
+  rig.engine.Handle({IntentKind::kSubmitText, "ada"});
+  EXPECT_EQ(rig.journal->Inputs().at("welcome").at("device"), "SN43");
+  EXPECT_EQ(rig.journal->Inputs().at("welcome").at("operator"), "ada");
+  EXPECT_EQ(rig.engine.View().step_title, "Level the table");
+}
+
+TEST(WizardEngineTest, LevelingByReversalPassesOnTheLevelSimTable) {
+  Rig rig(SeedProcedure());
+  AcceptUntil(rig.engine, TitleIs("Level the table"));
+  EXPECT_TRUE(std::isfinite(rig.engine.View().tilt_deg.x()));  // live, before the reversal
+  AcceptUntil(rig.engine, [](const WizardView& v) { return v.prompt.rfind("Tilt", 0) == 0; });
+  const WizardView v = rig.engine.View();
+  EXPECT_EQ(v.screen, WizardScreen::kLevel);
+  EXPECT_LT(std::abs(v.tilt_deg.x()), 1.5);
+  EXPECT_LT(std::abs(v.tilt_deg.y()), 1.5);
+  EXPECT_TRUE(v.problem.empty()) << v.problem;
+  rig.engine.Handle({IntentKind::kAccept, ""});
+  EXPECT_EQ(rig.journal->DoneSteps().at("level").rfind("level: tilt", 0), 0u);
+}
+
+TEST(WizardEngineTest, SkipRecordsTheStepAndBackReturnsToIt) {
+  Rig rig(SeedProcedure());
+  AcceptUntil(rig.engine, TitleIs("+z up"));
+  PollUntilQuestion(rig.engine);
+  rig.engine.Handle({IntentKind::kSkip, ""});
+  EXPECT_EQ(rig.journal->DoneSteps().at("pose_pz"), "skipped");
+  EXPECT_EQ(rig.engine.View().step_title, "-z up");
+  rig.engine.Handle({IntentKind::kBack, ""});
+  EXPECT_EQ(rig.engine.View().step_title, "+z up");
+  AcceptUntil(rig.engine, TitleIs("-z up"));
+  ASSERT_EQ(rig.journal->Captures().size(), 1u);
+  EXPECT_EQ(rig.journal->Captures()[0].step_id, "pose_pz");
+}
+
+TEST(WizardEngineTest, BackDoesNotReplaceAnAcceptedCapture) {
+  Rig rig(SeedProcedure());
+  AcceptUntil(rig.engine, TitleIs("-z up"));
+  rig.engine.Handle({IntentKind::kBack, ""});
+  EXPECT_EQ(rig.engine.View().step_title, "-z up");
+  EXPECT_NE(rig.engine.View().problem.find("nothing to go back to"), std::string::npos);
+}
+
+TEST(WizardEngineTest, RetryRestartsARunningCapture) {
+  Rig rig(SeedProcedure());
+  AcceptUntil(rig.engine, TitleIs("+z up"));
+  rig.engine.Handle({IntentKind::kAccept, ""});
+  rig.engine.Poll(0.0);
+  ASSERT_TRUE(Busy(rig.engine.View()));
+  rig.engine.Handle({IntentKind::kRetry, ""});
+  EXPECT_TRUE(Busy(rig.engine.View()));
+  AcceptUntil(rig.engine, TitleIs("-z up"));
+  EXPECT_EQ(rig.journal->Captures().size(), 1u);
+}
+
+TEST(WizardEngineTest, QuitLeavesWithEverythingAcceptedRecorded) {
+  Rig rig(SeedProcedure());
+  AcceptUntil(rig.engine, TitleIs("+x up"));
+  rig.engine.Handle({IntentKind::kQuit, ""});
+  const WizardView v = rig.engine.View();
+  EXPECT_TRUE(v.finished);
+  EXPECT_NE(v.prompt.find("resume"), std::string::npos);
+  EXPECT_EQ(rig.journal->Captures().size(), 2u);
+}
+
+TEST(WizardEngineTest, TurntableInputsAreRefusedWithTheReasonThenAccepted) {
+  Rig rig(SeedProcedure());
+  AcceptUntil(rig.engine, [](const WizardView& v) { return v.input && v.input->key == "radius"; });
+  EXPECT_EQ(rig.engine.View().input->default_text, "50 mm");
+  rig.engine.Handle({IntentKind::kSubmitText, "12 m"});
+  ASSERT_TRUE(rig.engine.View().input.has_value());
+  EXPECT_NE(rig.engine.View().input->error.find("did you mean 12 cm"), std::string::npos);
+  rig.engine.Handle({IntentKind::kSubmitText, "12 cm"});
+  EXPECT_EQ(rig.engine.View().input->key, "rpm");
+  rig.engine.Handle({IntentKind::kSubmitText, "5000"});
+  EXPECT_FALSE(rig.engine.View().input->error.empty());
+  rig.engine.Handle({IntentKind::kBack, ""});
+  EXPECT_EQ(rig.engine.View().input->key, "radius");
+  // Plausible each, but 300 rpm at 1.5 m is far beyond +-6 g: refused before the table spins.
+  rig.engine.Handle({IntentKind::kSubmitText, "1.5 m"});
+  rig.engine.Handle({IntentKind::kSubmitText, "300 rpm"});
+  ASSERT_TRUE(rig.engine.View().input.has_value());
+  EXPECT_EQ(rig.engine.View().input->key, "radius");
+  EXPECT_NE(rig.engine.View().input->error.find("range"), std::string::npos);
+  rig.engine.Handle({IntentKind::kSubmitText, "120 mm"});
+  rig.engine.Handle({IntentKind::kSubmitText, "2 rps"});
+  EXPECT_EQ(rig.engine.View().screen, WizardScreen::kMountTurntable);
+  AcceptUntil(rig.engine, [](const WizardView& view) { return view.input.has_value(); });
+  const std::vector<JournalCapture> captures = rig.journal->Captures();
+  ASSERT_EQ(captures.back().step_id, "tt_x_050");
+  EXPECT_DOUBLE_EQ(captures.back().capture.radius_m, 0.12);
+  EXPECT_DOUBLE_EQ(captures.back().capture.rpm, 120.0);
+}
+
+TEST(WizardEngineTest, WrongFaceIsShownAndTheRetryTakesTheRightOne) {
+  Rig rig(ShortStaticProcedure(9));
+  AcceptUntil(rig.engine, TitleIs("+z up"));
+  PollUntilQuestion(rig.engine);
+  rig.engine.Handle({IntentKind::kAccept, ""});  // the sim places +z up ...
+  rig.sim.PlaceStatic(-Eigen::Vector3d::UnitY());  // ... and the operator puts it on -y
+  PollUntilQuestion(rig.engine);
+  const WizardView v = rig.engine.View();
+  EXPECT_EQ(v.screen, WizardScreen::kError);
+  EXPECT_NE(v.problem.find("wrong face"), std::string::npos) << v.problem;
+  EXPECT_FALSE(v.hint.empty());
+  EXPECT_TRUE(rig.journal->Captures().empty());
+  rig.engine.Handle({IntentKind::kRetry, ""});
+  AcceptUntil(rig.engine, TitleIs("-z up"));
+  EXPECT_EQ(rig.journal->Captures().size(), 1u);
+}
+
+TEST(WizardEngineTest, DuplicatePoseIsRefused) {
+  Rig rig(ShortStaticProcedure(9));
+  AcceptUntil(rig.engine, TitleIs("-z up"));
+  PollUntilQuestion(rig.engine);
+  rig.engine.Handle({IntentKind::kAccept, ""});
+  rig.sim.PlaceStatic(Eigen::Vector3d::UnitZ());  // +z again: already captured
+  PollUntilQuestion(rig.engine);
+  EXPECT_NE(rig.engine.View().problem.find("already captured"), std::string::npos)
+      << rig.engine.View().problem;
+}
+
+TEST(WizardEngineTest, ABumpIsRetriedByItself) {
+  Rig rig(ShortStaticProcedure(9), Fast(1.0));
+  AcceptUntil(rig.engine, TitleIs("+z up"));
+  PollUntilQuestion(rig.engine);
+  std::vector<std::string> problems;
+  for (int pose = 0; pose < 3; ++pose) {
+    rig.engine.Handle({IntentKind::kAccept, ""});
+    const std::vector<std::string> seen = PollUntilQuestion(rig.engine);
+    problems.insert(problems.end(), seen.begin(), seen.end());
+  }
+  EXPECT_GE(rig.sim.bumps_scheduled(), 3);
+  EXPECT_EQ(rig.journal->Captures().size(), 3u);
+  bool spike = false;
+  for (const std::string& p : problems) spike = spike || p.find("spike") != std::string::npos;
+  EXPECT_TRUE(spike) << "no retry after a bump was shown";
+}
+
+TEST(WizardEngineTest, AnUnusableFitBlocksTheWizard) {
+  Rig rig(ShortStaticProcedure(3));
+  AcceptUntil(rig.engine, TitleIs("Fit the nine-parameter model"));
+  PollUntilQuestion(rig.engine);
+  WizardView v = rig.engine.View();
+  EXPECT_EQ(v.screen, WizardScreen::kFit);
+  EXPECT_NE(v.problem.find("not usable"), std::string::npos) << v.problem;
+  rig.engine.Handle({IntentKind::kAccept, ""});
+  rig.engine.Handle({IntentKind::kSkip, ""});
+  rig.engine.Handle({IntentKind::kRetry, ""});
+  v = rig.engine.View();
+  EXPECT_EQ(v.step_title, "Fit the nine-parameter model");
+  EXPECT_FALSE(v.problem.empty());
+  EXPECT_FALSE(rig.journal->Result().has_value());
+  EXPECT_EQ(rig.journal->DoneSteps().count("fit"), 0u);
+}
+
+sim::Scenario QuadraticScenario() {
+  sim::Scenario s = sim::DefaultScenario();
+  s.effects.quadratic_counts_per_mps2_sq = Eigen::Vector3d(0.02, -0.015, 0.01);
+  return s;
+}
+
+TEST(WizardEngineTest, DiagnosisAdoptsTheEffectOnEnter) {
+  Rig rig(SeedProcedure(), Fast(), QuadraticScenario());
+  AcceptUntil(rig.engine, [](const WizardView& v) { return v.screen == WizardScreen::kDiagnosis; });
+  const WizardView v = rig.engine.View();
+  ASSERT_NE(v.prompt.find("Adopt"), std::string::npos) << v.prompt;
+  rig.engine.Handle({IntentKind::kAccept, ""});
+  EXPECT_EQ(rig.journal->DoneSteps().at("diagnosis").rfind("adopted", 0), 0u);
+  AcceptUntil(rig.engine, Never);
+  ASSERT_TRUE(rig.journal->Result().has_value());
+  EXPECT_FALSE(rig.journal->Result()->at("effects").empty());
+}
+
+TEST(WizardEngineTest, DiagnosisDeclinedKeepsTheBaseModel) {
+  Rig rig(SeedProcedure(), Fast(), QuadraticScenario());
+  AcceptUntil(rig.engine, [](const WizardView& v) { return v.screen == WizardScreen::kDiagnosis; });
+  rig.engine.Handle({IntentKind::kAnswerNo, ""});
+  EXPECT_EQ(rig.journal->DoneSteps().at("diagnosis").rfind("declined", 0), 0u);
+  AcceptUntil(rig.engine, Never);
+  ASSERT_TRUE(rig.journal->Result().has_value());
+  EXPECT_TRUE(rig.journal->Result()->at("effects").empty());
+}
+
+TEST(WizardEngineTest, ResumeContinuesAtTheFirstMissingStepWithoutDuplicates) {
+  std::shared_ptr<SessionJournal> journal(MakeMemoryJournal());
+  {
+    Rig first(SeedProcedure(), Fast(), sim::DefaultScenario(), journal);
+    AcceptUntil(first.engine, TitleIs("+x up"));
+    first.engine.Handle({IntentKind::kAccept, ""});
+    first.engine.Poll(0.0);  // the +x capture is under way when the run dies
+  }
+  ASSERT_EQ(journal->Captures().size(), 2u);
+  Rig second(SeedProcedure(), Fast(), sim::DefaultScenario(), journal);
+  WizardView v = second.engine.View();
+  EXPECT_TRUE(v.resumed);
+  EXPECT_EQ(v.step_title, "+x up");
+  ASSERT_FALSE(v.lines.empty());
+  EXPECT_EQ(v.lines.front().rfind("Resuming", 0), 0u);
+  AcceptUntil(second.engine, Never);
+  EXPECT_TRUE(second.engine.View().finished);
+  std::set<std::string> steps;
+  for (const JournalCapture& c : journal->Captures()) steps.insert(c.step_id);
+  EXPECT_EQ(journal->Captures().size(), 18u);
+  EXPECT_EQ(steps.size(), 18u);
+  EXPECT_TRUE(journal->Result().has_value());
+}
+
+}  // namespace
+}  // namespace accelcal
