@@ -1,14 +1,11 @@
 #!/usr/bin/env bash
-# Installs what is missing, builds, and runs accelcal on the virtual bench: a simulated
-# calibration session (the default scenario), its fit, and the calibration file.
+# Installs what is missing, builds, and runs the calibration wizard on the virtual bench: full
+# screen on a terminal, plain prompts otherwise. Extra arguments go to `accelcal wizard`
+# (e.g. --speed 1 for real time, --session FILE to resume one, --plain).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 ./scripts/setup.sh
 ./scripts/build.sh
-out=${ACCELCAL_DEMO_DIR:-$(mktemp -d)}
-mkdir -p "$out"
-./build/accelcal simulate scenarios/bench_default.toml -o "$out/captures.csv" --truth "$out/truth.json"
-./build/accelcal fit "$out/captures.csv" -o "$out/cal.json"
-echo
-echo "files in $out: captures.csv (the simulated captures), truth.json (the bench's true"
-echo "parameters, to compare), cal.json (the calibration)"
+# --speed 20: the simulated bench runs 20 times faster than real time, so a whole session of
+# 18 ten-second captures takes a minute or two of pressing Enter.
+exec ./build/accelcal wizard --source sim --speed 20 "$@"

@@ -1,7 +1,6 @@
 #include "cli/wizard.h"
 
 #include <cstdlib>
-#include <ctime>
 #include <iostream>
 #include <memory>
 
@@ -10,6 +9,7 @@
 #include <fmt/core.h>
 
 #include "accelcal/error.h"
+#include "accelcal/session/session_paths.h"
 #include "accelcal/source/source_spec.h"
 #include "accelcal/wizard/procedure.h"
 #include "accelcal/wizard/wizard_engine.h"
@@ -23,16 +23,6 @@ namespace {
 
 std::string DefaultProcedurePath() {
   return std::string(ACCELCAL_PROCEDURES_DIR) + "/seed_calibration.toml";
-}
-
-// A new session's file name from the local time: session-20260522-143005.db.
-std::string NewSessionPath() {
-  const std::time_t now = std::time(nullptr);
-  std::tm local{};
-  localtime_r(&now, &local);
-  char buf[32];
-  std::strftime(buf, sizeof buf, "session-%Y%m%d-%H%M%S.db", &local);
-  return buf;
 }
 
 std::string OperatorFromEnvironment() {
@@ -50,8 +40,9 @@ int RunWizard(const WizardCommandOptions& options) {
   source_options.seed = options.seed;
   source_options.scenario_path = options.scenario_path;
   const std::unique_ptr<SampleSource> source = OpenSource(options.source, source_options);
+  // A new session goes to the default session directory, where `accelcal sessions` looks.
   const std::string session = options.session_path.empty() ? NewSessionPath() : options.session_path;
-  const std::unique_ptr<SessionJournal> journal = OpenWizardJournal(session);
+  const std::unique_ptr<SessionJournal> journal = OpenWizardJournal(session, procedure.title, options.source);
 
   WizardOptions wizard;
   wizard.session_name = session;
@@ -61,8 +52,11 @@ int RunWizard(const WizardCommandOptions& options) {
   WizardEngine engine(procedure, *source, *journal, wizard);
 
   const bool terminal = ::isatty(STDIN_FILENO) == 1 && ::isatty(STDOUT_FILENO) == 1;
-  if (terminal && !options.plain) return ui::RunTui(engine);
-  return ui::RunLineMode(engine, std::cin, std::cout);
+  const int status = terminal && !options.plain ? ui::RunTui(engine)
+                                                : ui::RunLineMode(engine, std::cin, std::cout);
+  // Done only when the procedure ran to its end; a session left with q stays open to resume.
+  if (status == 0 && engine.completed()) journal->MarkDone();
+  return status;
 }
 
 void SetupWizardCommand(CLI::App& app) {

@@ -9,7 +9,10 @@
 
 namespace accelcal::cli {
 
-// The journal of the session file `session_path` (created when absent, resumed when present).
-std::unique_ptr<SessionJournal> OpenWizardJournal(const std::string& session_path);
+// The journal of the session file `session_path` (created when absent, resumed when present);
+// `procedure` and `source` are stored when the session is created.
+std::unique_ptr<SessionJournal> OpenWizardJournal(const std::string& session_path,
+                                                  const std::string& procedure,
+                                                  const std::string& source);
 
 }  // namespace accelcal::cli

@@ -87,7 +87,7 @@ class SessionStore final : public SessionJournal {
 
   SessionInfo Info() const;
   // The session is finished (state 'done'); one transaction.
-  void MarkDone();
+  void MarkDone() override;
   const std::string& path() const { return path_; }
 
  private:

@@ -22,6 +22,7 @@ class MemoryJournal final : public SessionJournal {
     done_[step_id] = outcome;
   }
   void RecordResult(const nlohmann::json& calibration) override { result_ = calibration; }
+  void MarkDone() override { done_session_ = true; }
   std::vector<JournalCapture> Captures() const override { return captures_; }
   std::map<std::string, std::map<std::string, std::string>> Inputs() const override { return inputs_; }
   std::map<std::string, std::string> DoneSteps() const override { return done_; }
@@ -32,6 +33,7 @@ class MemoryJournal final : public SessionJournal {
   std::map<std::string, std::map<std::string, std::string>> inputs_;
   std::map<std::string, std::string> done_;
   std::optional<nlohmann::json> result_;
+  bool done_session_ = false;
 };
 
 }  // namespace

@@ -38,6 +38,8 @@ class SessionJournal {
   virtual void RecordStepDone(const std::string& step_id, const std::string& outcome) = 0;
   // The session's result (the calibration file's JSON). A later one replaces it.
   virtual void RecordResult(const nlohmann::json& calibration) = 0;
+  // The session is finished (its procedure completed); durable when it returns.
+  virtual void MarkDone() = 0;
 
   // What was recorded (for resuming and for reports), in the order recorded.
   virtual std::vector<JournalCapture> Captures() const = 0;

@@ -54,6 +54,8 @@ class WizardEngine final : public WizardDriver {
   void Poll(double timeout_s) override;
   void Handle(const Intent& intent) override;
   WizardView View() const override;
+  // True once every step of the procedure is done (not merely left with q).
+  bool completed() const { return phase_ == Phase::kDone && !quit_; }
 
  private:
   enum class Phase {
