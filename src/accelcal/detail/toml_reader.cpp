@@ -163,4 +163,13 @@ void TomlTableReader::Finish() const {
   }
 }
 
+toml::table ParseTomlDocument(std::string_view text, const std::string& source_name) {
+  try {
+    return toml::parse(text, std::string_view(source_name));
+  } catch (const toml::parse_error& e) {
+    throw InputError(source_name, e.source().begin.line, e.source().begin.column,
+                     std::string(e.description()));
+  }
+}
+
 }  // namespace accelcal::detail

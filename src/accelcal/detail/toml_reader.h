@@ -16,6 +16,9 @@ namespace accelcal::detail {
 // Which values a number may take.
 enum class NumberRange { kAny, kNonNegative, kPositive };
 
+// Parses a whole TOML document; a syntax error becomes an InputError at its line and column.
+toml::table ParseTomlDocument(std::string_view text, const std::string& source_name);
+
 // Reads the fields of `table`, remembering the keys read so Finish() can refuse the others
 // (a typo in a key then fails loudly instead of silently taking the default).
 // Every failure throws accelcal::InputError at the node's source position.

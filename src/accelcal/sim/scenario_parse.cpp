@@ -166,13 +166,7 @@ void CheckBumpTargets(const toml::table& doc, const Scenario& s, const std::stri
 }  // namespace
 
 Scenario ParseScenario(std::string_view toml_text, const std::string& source_name) {
-  toml::table doc;
-  try {
-    doc = toml::parse(toml_text, std::string_view(source_name));
-  } catch (const toml::parse_error& e) {
-    throw InputError(source_name, e.source().begin.line, e.source().begin.column,
-                     std::string(e.description()));
-  }
+  const toml::table doc = detail::ParseTomlDocument(toml_text, source_name);
   Scenario s;
   s.source_name = source_name;
   TomlTableReader root(doc, "", source_name);

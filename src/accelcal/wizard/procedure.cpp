@@ -175,13 +175,7 @@ std::vector<Eigen::Vector3d> Procedure::TiltedPoses() const {
 }
 
 Procedure ParseProcedure(std::string_view toml_text, const std::string& source_name) {
-  toml::table doc;
-  try {
-    doc = toml::parse(toml_text, std::string_view(source_name));
-  } catch (const toml::parse_error& e) {
-    throw InputError(source_name, e.source().begin.line, e.source().begin.column,
-                     std::string(e.description()));
-  }
+  const toml::table doc = detail::ParseTomlDocument(toml_text, source_name);
   Procedure p;
   p.source_name = source_name;
   TomlTableReader root(doc, "", source_name);
