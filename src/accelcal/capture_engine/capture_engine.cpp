@@ -158,16 +158,18 @@ std::string CaptureEngine::LastProblem() const {
   return "no data long enough to judge";
 }
 
+bool CaptureEngine::RejectedForPose(const Eigen::Vector3d& mean_counts) {
+  const OrientationVerdict pose =
+      CheckOrientation(mean_counts, context_.rough_model, request_.expected, context_.captured,
+                       context_.known_poses, options_.orientation);
+  if (!pose.ok) Reject(pose.reason);
+  return !pose.ok;
+}
+
 void CaptureEngine::CheckSettledStatic(double /*t_s*/) {
   live_ = settle_.Verdict();
   if (!settle_.full() || !live_.stable) return;
-  const OrientationVerdict pose =
-      CheckOrientation(live_.mean_counts, context_.rough_model, request_.expected,
-                       context_.captured, context_.known_poses, options_.orientation);
-  if (!pose.ok) {
-    Reject(pose.reason);
-    return;
-  }
+  if (RejectedForPose(live_.mean_counts)) return;
   BeginCapture();
 }
 
@@ -239,13 +241,7 @@ void CaptureEngine::FinishStatic() {
     Retry(live_.reason);
     return;
   }
-  const OrientationVerdict pose =
-      CheckOrientation(stats_.mean_counts, context_.rough_model, request_.expected,
-                       context_.captured, context_.known_poses, options_.orientation);
-  if (!pose.ok) {
-    Reject(pose.reason);
-    return;
-  }
+  if (RejectedForPose(stats_.mean_counts)) return;
   state_ = CaptureState::kAccepted;
   reason_.clear();
 }

@@ -109,6 +109,9 @@ class CaptureEngine {
   void BeginCapture();
   void FinishCapture();
   void FinishStatic();
+  // Checks the pose of a still reading; rejects the request (and returns true) when it is the
+  // wrong face, out of tolerance or already captured.
+  bool RejectedForPose(const Eigen::Vector3d& mean_counts);
   void FinishTurntable();
   void Retry(std::string reason);
   void Reject(std::string reason);
