@@ -61,7 +61,7 @@ CalibrationApplier::CalibrationApplier(const Calibration& cal) : model_(cal.mode
     effects_.push_back({effect, std::move(theta)});
   }
   std::stable_sort(effects_.begin(), effects_.end(), [](const AppliedEffect& a, const AppliedEffect& b) {
-    return a.effect->CorrectionStage() < b.effect->CorrectionStage();
+    return CorrectsBefore(a.effect, b.effect);
   });
 }
 

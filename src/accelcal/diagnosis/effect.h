@@ -68,7 +68,12 @@ class Effect {
   virtual bool CorrectsReadings() const = 0;
 };
 
-// `effects` sorted by CorrectionStage (stable): the order in which corrections are applied.
+// True when `a` corrects before `b` (an earlier CorrectionStage).
+inline bool CorrectsBefore(const Effect* a, const Effect* b) {
+  return a->CorrectionStage() < b->CorrectionStage();
+}
+
+// `effects` sorted by CorrectsBefore (stable): the order in which corrections are applied.
 std::vector<const Effect*> InCorrectionOrder(std::vector<const Effect*> effects);
 
 // The library, in a fixed order. Ownership: the returned effects are static; never freed.

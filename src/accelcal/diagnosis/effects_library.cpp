@@ -321,9 +321,7 @@ const std::vector<const Effect*>& AllEffects() {
 }
 
 std::vector<const Effect*> InCorrectionOrder(std::vector<const Effect*> effects) {
-  std::stable_sort(effects.begin(), effects.end(), [](const Effect* a, const Effect* b) {
-    return a->CorrectionStage() < b->CorrectionStage();
-  });
+  std::stable_sort(effects.begin(), effects.end(), CorrectsBefore);
   return effects;
 }
 
