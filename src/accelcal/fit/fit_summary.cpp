@@ -34,10 +34,10 @@ std::string FitSummary::BriefReport() const {
 std::string FitSummary::FullReport() const {
   std::string out = BriefReport() + "\n";
   if (!IsUsable()) return out;
-  out += fmt::format("gravity used: {:.6f} m/s^2\n", gravity_mps2);
+  out += fmt::format("gravity used: {:.6f} m/s^2\n\nparameters (1-sigma):\n", gravity_mps2);
   for (int i = 0; i < parameters.size(); ++i) {
     const std::string unit = i < kNumBaseParameters ? std::string(ParameterUnit(i)) : "";
-    out += fmt::format("  {:<28} {:>14.6f} +- {:<10.6f} {}\n", parameter_labels[i], parameters(i),
+    out += fmt::format("  {:<12} {:>14.6f} +- {:<11.6f} {}\n", parameter_labels[i], parameters(i),
                        uncertainty(i), unit);
   }
   out += fmt::format("residuals: RMS {:.5f} m/s^2, max |r| {:.5f} m/s^2, chi2 {:.2f} on {} dof\n",

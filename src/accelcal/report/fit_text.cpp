@@ -4,7 +4,6 @@
 
 #include <fmt/core.h>
 
-#include "accelcal/sensor_model.h"
 
 namespace accelcal {
 namespace {
@@ -56,26 +55,7 @@ std::string FormatCaptureTable(const std::vector<Capture>& captures, const FitSu
 }
 
 std::string FormatFitReport(const Calibration& cal, const FitSummary& summary) {
-  std::string out = "\n" + summary.BriefReport() + "\n\nparameters (1-sigma):\n";
-  for (int i = 0; i < kNumBaseParameters; ++i) {
-    out += fmt::format("  {:<8} {:>14.6f} +- {:<11.6f} {}\n", ParameterName(i), summary.parameters(i),
-                       summary.uncertainty(i), ParameterUnit(i));
-  }
-  out += fmt::format("\nresiduals: RMS {:.5f} m/s^2, max |r| {:.5f} m/s^2, chi2 {:.2f} on {} dof\n",
-                     summary.residual_rms_mps2, summary.residual_max_abs_mps2, summary.chi2, summary.dof);
-  if (summary.uncertainty_scale > 1.0)
-    out += fmt::format("uncertainties scaled by sqrt(chi2/dof) = {:.2f}: the residuals exceed what "
-                       "the captures' noise explains\n", summary.uncertainty_scale);
-  out += fmt::format("condition number {:.3g}", summary.condition_number);
-  if (summary.most_correlated.first >= 0)
-    out += fmt::format("; most correlated: {} and {} (rho {:+.3f})",
-                       summary.parameter_labels[summary.most_correlated.first],
-                       summary.parameter_labels[summary.most_correlated.second],
-                       summary.most_correlated.rho);
-  out += "\n";
-  for (const std::string& w : summary.warnings) out += "warning: " + w + "\n";
-  out += "\ncaptures:\n" + FormatCaptureTable(cal.captures);
-  return out;
+  return "\n" + summary.FullReport() + "\ncaptures:\n" + FormatCaptureTable(cal.captures);
 }
 
 }  // namespace accelcal

@@ -18,8 +18,8 @@ std::string FormatIntervals(const StaticDetection& detection, const StaticDetect
 std::string FormatCaptureTable(const std::vector<Capture>& captures, const FitSummary& summary);
 std::string FormatCaptureTable(const std::vector<CaptureRecord>& captures);
 
-// Parameters with 1-sigma uncertainties, residual statistics, conditioning, warnings, and the
-// capture table.
+// The fit's FullReport (parameters with 1-sigma uncertainties, residual statistics,
+// conditioning, warnings) followed by the capture table.
 std::string FormatFitReport(const Calibration& cal, const FitSummary& summary);
 
 }  // namespace accelcal
