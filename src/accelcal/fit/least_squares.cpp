@@ -49,7 +49,7 @@ double Objective(unsigned n, const double* x, double* grad, void* data) {
   Evaluate(pr, p, &rho, grad != nullptr ? &jac : nullptr);
   if (grad != nullptr) Eigen::Map<Eigen::VectorXd>(grad, n) = jac.transpose() * rho;
   const double cost = 0.5 * rho.squaredNorm();
-  // A non-finite cost makes L-BFGS wander; a large finite one makes it back off instead.
+  // A non-finite cost derails the line search; a large finite one makes it back off instead.
   return std::isfinite(cost) ? cost : 1e300;
 }
 
@@ -70,13 +70,14 @@ std::string NloptResultName(nlopt::result r) {
   }
 }
 
-// First stage: NLopt's L-BFGS. Its C++ wrapper throws on every negative result, including
-// roundoff_limited, which usually still leaves a good x: we keep x either way and let the
-// Gauss-Newton polish judge convergence.
+// First stage: NLopt's SLSQP (L-BFGS's line search gave up near the optimum with a bare
+// "failure" on ordinary bench sessions; SLSQP ends on its tolerance). The C++ wrapper throws on
+// every negative result, including roundoff_limited, which usually still leaves a good x: we
+// keep x either way and let the Gauss-Newton polish judge convergence.
 Eigen::VectorXd RunNlopt(Problem& pr, int max_evaluations, std::string* result_name) {
   const int np = static_cast<int>(pr.p0.size());
   std::vector<double> x(np, 0.0);
-  nlopt::opt opt(nlopt::LD_LBFGS, np);
+  nlopt::opt opt(nlopt::LD_SLSQP, np);
   opt.set_min_objective(Objective, &pr);
   // Loose enough to end on a tolerance rather than in round-off: the polish finishes the job.
   opt.set_ftol_rel(1e-10);

@@ -1,4 +1,4 @@
-// Weighted least squares over captures for any ResidualModel: NLopt (L-BFGS with the analytic
+// Weighted least squares over captures for any ResidualModel: NLopt (SLSQP with the analytic
 // gradient) from the caller's initial guess, then a Gauss-Newton polish in Eigen that decides
 // convergence and yields the covariance.
 //

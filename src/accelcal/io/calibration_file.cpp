@@ -66,7 +66,7 @@ json FitJson(const FitSummary& s) {
           {"uncertainty_scale", s.uncertainty_scale},
           {"condition_number", s.condition_number},
           {"most_correlated", correlated},
-          {"optimizer", fmt::format("NLopt L-BFGS ({}, {} evaluations) + Gauss-Newton ({} iterations)",
+          {"optimizer", fmt::format("NLopt SLSQP ({}, {} evaluations) + Gauss-Newton ({} iterations)",
                                     s.optimizer_result, s.optimizer_evaluations,
                                     s.gauss_newton_iterations)},
           {"warnings", warnings}};
