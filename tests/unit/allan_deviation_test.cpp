@@ -2,6 +2,7 @@
 // see its README) and against closed forms and its own batch reference.
 #include "accelcal/analysis/allan_deviation.h"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -263,6 +264,283 @@ TEST(AllanStable32, ExactChiSquareAgreesUpTo100Edf) {
     EXPECT_LT(Rel(p.adev_hi, rows[i].hi), 1e-4) << p.m;
   }
   EXPECT_GE(compared, 2);
+}
+
+// ---- The streaming accumulator ----
+
+// White noise of sigma plus a random walk of step rw plus an offset, deterministic.
+std::vector<double> Synthetic(size_t n, double offset, double sigma, double rw, unsigned seed) {
+  std::mt19937_64 rng(seed);
+  std::normal_distribution<double> g(0.0, 1.0);
+  std::vector<double> y(n);
+  double walk = 0;
+  for (size_t i = 0; i < n; ++i) {
+    walk += rw * g(rng);
+    y[i] = offset + sigma * g(rng) + walk;
+  }
+  return y;
+}
+
+// Direct sum of squared second differences of the phase of y at m (stride 1), long double.
+void DirectSums(const std::vector<double>& y, int64_t m, long double* sum, int64_t* terms) {
+  std::vector<long double> x(y.size() + 1, 0.0L);
+  for (size_t i = 0; i < y.size(); ++i) x[i + 1] = x[i] + (y[i] - y[0]);
+  *sum = 0;
+  *terms = 0;
+  for (int64_t j = 0; j + 2 * m < static_cast<int64_t>(x.size()); ++j, ++*terms) {
+    const long double d = x[j + 2 * m] - 2 * x[j + m] + x[j];
+    *sum += d * d;
+  }
+}
+
+AllanOptions Options(double tau0_s) {
+  AllanOptions o;
+  o.tau0_s = tau0_s;
+  return o;
+}
+
+// Up to full_overlap_max_m the accumulator is the exact overlapping estimator: it equals the
+// direct batch computation (to rounding) in sigma, count, alpha, EDF and bounds, on data with a
+// large offset and a random walk (the phase is kept small by rebasing).
+TEST(AllanAccumulator, EqualsBatchWhenFullyOverlapping) {
+  const std::vector<double> y = Synthetic(200000, 9.81, 0.02, 2e-4, 1);
+  const AllanCurve curve = OverlappingAllan(y, Options(0.001));
+  ASSERT_FALSE(curve.points.empty());
+  std::vector<int64_t> factors;
+  for (const AllanPoint& p : curve.points) factors.push_back(p.m);
+  EXPECT_EQ(factors.back(), 39811);  // the grid's last factor <= N/4 = 50000
+  const AllanCurve batch = AllanAtFactors(y, 0.001, factors, AllanEstimator::kOverlapping);
+  int pm_points = 0;
+  for (size_t i = 0; i < factors.size(); ++i) {
+    const AllanPoint& s = curve.points[i];
+    const AllanPoint& b = batch.points[i];
+    EXPECT_EQ(s.stride, 1);
+    EXPECT_EQ(s.num_terms, b.num_terms) << s.m;
+    EXPECT_NEAR(s.adev / b.adev, 1.0, 1e-10) << s.m;
+    EXPECT_DOUBLE_EQ(s.tau_s, 0.001 * s.m);
+    EXPECT_EQ(s.noise_id, b.noise_id) << s.m;
+    if (b.noise_id == NoiseIdMethod::kB1Ratio && b.alpha > 0) {
+      EXPECT_EQ(s.alpha, 0) << s.m;  // B1 said PM: the accumulator takes white FM (header)
+      ++pm_points;
+      continue;
+    }
+    EXPECT_EQ(s.alpha, b.alpha) << s.m;
+    EXPECT_NEAR(s.edf / b.edf, 1.0, 1e-12) << s.m;
+    EXPECT_NEAR(s.adev_lo / b.adev_lo, 1.0, 1e-10) << s.m;
+    EXPECT_NEAR(s.adev_hi / b.adev_hi, 1.0, 1e-10) << s.m;
+  }
+  EXPECT_LE(pm_points, 3);
+}
+
+// Beyond full_overlap_max_m terms start every `stride` samples. The strided estimate is the
+// average of a subset of the exact estimate's terms; for exchangeable shifts
+// Var(strided - exact) = Var(strided) - Var(exact), i.e. relative to the variance
+// 2/edf_strided - 2/edf_exact, and half that for the deviation. Each point must agree within 4
+// of those standard deviations (and the documented stride rule must hold).
+TEST(AllanAccumulator, StridedBeyondFullOverlapAgreesStatistically) {
+  AllanOptions o = Options(0.01);
+  o.full_overlap_max_m = 64;
+  o.overlap_positions = 8;
+  const std::vector<double> y = Synthetic(300000, -3.0, 1.0, 0.0, 2);
+  const AllanCurve curve = OverlappingAllan(y, o);
+  int strided = 0;
+  for (const AllanPoint& p : curve.points) {
+    EXPECT_EQ(p.stride, AllanStride(o, p.m)) << p.m;
+    EXPECT_EQ(p.m % p.stride, 0) << p.m;
+    if (p.m <= 64) {
+      EXPECT_EQ(p.stride, 1);
+      continue;
+    }
+    ++strided;
+    EXPECT_GE(p.m / p.stride, 8) << p.m;
+    EXPECT_LT(p.m / p.stride, 16) << p.m;
+    const int64_t n = static_cast<int64_t>(y.size());
+    EXPECT_EQ(p.num_terms, 1 + (n - 2 * p.m) / p.stride) << p.m;
+    const std::vector<int64_t> m = {p.m};
+    const AllanPoint exact = AllanAtFactors(y, 0.01, m, AllanEstimator::kOverlapping).points[0];
+    const double edf_s = AllanEdf(0, p.m, p.stride, n + 1);
+    const double edf_f = AllanEdf(0, p.m, 1, n + 1);
+    // Greenhall's approximations are not ordered when the record holds only a few m (r small):
+    // there bound the difference by the strided estimate's own spread instead.
+    const double var_diff = edf_f > edf_s ? 2.0 / edf_s - 2.0 / edf_f : 2.0 / edf_s;
+    const double sd = 0.5 * std::sqrt(var_diff);
+    EXPECT_LT(std::fabs(p.adev / exact.adev - 1.0), 4.0 * sd) << p.m << " edf " << edf_s << " "
+                                                              << edf_f;
+  }
+  EXPECT_GE(strided, 20);
+}
+
+// White noise of sigma: adev(m) = sigma / sqrt(m) (NIST SP 1065 table: white FM), within its
+// bounds (68 % each, so 3 times their half-widths for all points identified as white FM), alpha
+// 0 at nearly all points. With max_alpha = 0 (no PM noise) every point qualifies.
+TEST(AllanAccumulator, WhiteNoiseFollowsSigmaOverRootM) {
+  const double sigma = 0.5;
+  const std::vector<double> y = Synthetic(400000, 100.0, sigma, 0.0, 3);
+  for (int max_alpha : {2, 0}) {
+    AllanOptions o = Options(0.001);
+    o.max_alpha = max_alpha;
+    const AllanCurve curve = OverlappingAllan(y, o);
+    int inside = 0;
+    int white = 0;
+    for (const AllanPoint& p : curve.points) {
+      EXPECT_LT(p.adev_lo, p.adev);
+      EXPECT_GT(p.adev_hi, p.adev);
+      EXPECT_LE(p.alpha, max_alpha);
+      if (p.alpha != 0) continue;
+      ++white;
+      const double truth = sigma / std::sqrt(static_cast<double>(p.m));
+      EXPECT_GT(truth, p.adev - 3 * (p.adev - p.adev_lo)) << p.m;
+      EXPECT_LT(truth, p.adev + 3 * (p.adev_hi - p.adev)) << p.m;
+      if (truth >= p.adev_lo && truth <= p.adev_hi) ++inside;
+    }
+    const int n = static_cast<int>(curve.points.size());
+    EXPECT_GE(white, max_alpha == 0 ? n - 1 : n - 6) << max_alpha;
+    EXPECT_GE(inside, white / 2) << max_alpha;
+    EXPECT_NEAR(curve.points[0].adev / sigma, 1.0, 0.01);  // m = 1: 400 000 terms
+  }
+}
+
+// A gap: terms containing a missing reading are left out, so the curve is that of the two
+// parts' terms combined (sums and counts added), and samples/missing are counted.
+TEST(AllanAccumulator, GapUsesOnlyTermsOnEitherSide) {
+  const std::vector<double> a = Synthetic(30000, 5.0, 0.1, 1e-3, 4);
+  const std::vector<double> b = Synthetic(20000, 5.2, 0.1, 1e-3, 5);
+  AllanAccumulator acc(Options(0.002));
+  acc.Add(a);
+  acc.AddMissing(777);
+  acc.Add(b);
+  EXPECT_EQ(acc.samples(), 50777);
+  EXPECT_EQ(acc.missing_samples(), 777);
+  const AllanCurve curve = acc.Curve();
+  EXPECT_EQ(curve.missing_samples, 777);
+  ASSERT_FALSE(curve.points.empty());
+  EXPECT_LE(curve.points.back().m, 50777 / 4);
+  for (const AllanPoint& p : curve.points) {
+    long double sa = 0, sb = 0;
+    int64_t ta = 0, tb = 0;
+    DirectSums(a, p.m, &sa, &ta);
+    DirectSums(b, p.m, &sb, &tb);
+    ASSERT_EQ(p.num_terms, ta + tb) << p.m;
+    const double md = static_cast<double>(p.m);
+    const double expected = std::sqrt(static_cast<double>(sa + sb) / (2 * md * md * (ta + tb)));
+    EXPECT_NEAR(p.adev / expected, 1.0, 1e-9) << p.m;
+    EXPECT_TRUE(std::isfinite(p.edf) && p.edf > 0) << p.m;
+  }
+}
+
+// Curve() may be called at any time on a growing record: each curve equals the batch
+// computation on the readings so far, and calling it does not change what follows.
+TEST(AllanAccumulator, CurveOnGrowingRecordIsConsistent) {
+  const std::vector<double> y = Synthetic(60000, 0.0, 1.0, 1e-2, 6);
+  AllanAccumulator acc(Options(0.01));
+  size_t fed = 0;
+  for (size_t stop : {1000u, 7001u, 7002u, 33333u, 60000u}) {
+    acc.Add(std::span<const double>(y.data() + fed, stop - fed));
+    fed = stop;
+    const AllanCurve curve = acc.Curve();
+    EXPECT_EQ(curve.samples, static_cast<int64_t>(stop));
+    std::vector<int64_t> factors;
+    for (const AllanPoint& p : curve.points) factors.push_back(p.m);
+    ASSERT_FALSE(factors.empty());
+    EXPECT_LE(factors.back(), static_cast<int64_t>(stop) / 4);
+    const AllanCurve batch = AllanAtFactors(std::span<const double>(y.data(), stop), 0.01,
+                                            factors, AllanEstimator::kOverlapping);
+    for (size_t i = 0; i < factors.size(); ++i) {
+      EXPECT_EQ(curve.points[i].num_terms, batch.points[i].num_terms);
+      EXPECT_NEAR(curve.points[i].adev / batch.points[i].adev, 1.0, 1e-10) << stop;
+      const AllanPoint& b = batch.points[i];
+      const bool b1_pm = b.noise_id == NoiseIdMethod::kB1Ratio && b.alpha > 0;  // see header
+      EXPECT_EQ(curve.points[i].alpha, b1_pm ? 0 : b.alpha) << stop << " m=" << factors[i];
+    }
+  }
+}
+
+// Memory is fixed at construction, whatever the record length.
+TEST(AllanAccumulator, StateDoesNotGrow) {
+  AllanAccumulator acc(Options(0.001));
+  const size_t bytes = acc.StateBytes();
+  EXPECT_LT(bytes, size_t{8} << 20);
+  const std::vector<double> y = Synthetic(300000, 1.0, 1.0, 0.0, 7);
+  for (int i = 0; i < 3; ++i) acc.Add(y);
+  acc.AddMissing(100000);
+  (void)acc.Curve();
+  EXPECT_EQ(acc.StateBytes(), bytes);
+}
+
+TEST(AllanAccumulator, FactorGrid) {
+  const AllanOptions o = Options(1.0);
+  const std::vector<int64_t> f = AllanAveragingFactors(o);
+  for (int64_t m : {1, 2, 3, 4, 5, 6, 8, 10, 13, 16, 20, 25, 32, 40, 50, 63, 64, 79, 100, 1000,
+                    65536}) {
+    EXPECT_TRUE(std::binary_search(f.begin(), f.end(), m)) << m;
+  }
+  for (int k = 0; k <= 40; ++k) {
+    EXPECT_TRUE(std::binary_search(f.begin(), f.end(), int64_t{1} << k)) << k;
+  }
+  EXPECT_TRUE(std::is_sorted(f.begin(), f.end()));
+  EXPECT_EQ(std::adjacent_find(f.begin(), f.end()), f.end());
+  for (int64_t m : f) EXPECT_EQ(m % AllanStride(o, m), 0) << m;
+  EXPECT_EQ(AllanStride(o, 65536), 1);
+  EXPECT_EQ(AllanStride(o, 65537), 1024);  // 2^floor(log2(65537 / 64))
+  EXPECT_EQ(AllanStride(o, 131072), 2048);
+  EXPECT_EQ(f.back(), int64_t{1} << 40);
+}
+
+// A NaN or infinite reading is an error, never a silent gap: nothing is added.
+TEST(AllanAccumulator, RejectsNonFiniteReadingsAndBadOptions) {
+  AllanAccumulator acc(Options(0.001));
+  acc.Add(1.0);
+  EXPECT_THROW(acc.Add(std::nan("")), Error);
+  EXPECT_THROW(acc.Add(INFINITY), Error);
+  EXPECT_EQ(acc.samples(), 1);
+  const std::vector<double> y = {1.0, 2.0, 3.0, NAN, 5.0};
+  try {
+    acc.Add(y);
+    ADD_FAILURE() << "no error for a NaN reading";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("index 3"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("AddMissing"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(acc.samples(), 4);
+  EXPECT_THROW(acc.AddMissing(-1), Error);
+
+  auto bad = [](auto change) {
+    AllanOptions o = Options(0.001);
+    change(o);
+    EXPECT_FALSE(o.Validate().empty());
+    EXPECT_THROW(AllanAccumulator{o}, Error);
+  };
+  bad([](AllanOptions& o) { o.tau0_s = 0; });
+  bad([](AllanOptions& o) { o.tau0_s = NAN; });
+  bad([](AllanOptions& o) { o.points_per_decade = 0; });
+  bad([](AllanOptions& o) { o.overlap_positions = 48; });
+  bad([](AllanOptions& o) { o.full_overlap_max_m = 16; });
+  bad([](AllanOptions& o) { o.max_m = 0; });
+  bad([](AllanOptions& o) { o.confidence = 1.0; });
+  bad([](AllanOptions& o) { o.max_alpha = 3; });
+  EXPECT_TRUE(Options(0.001).Validate().empty());
+
+  const std::vector<int64_t> m = {2};
+  EXPECT_THROW(AllanAtFactors(y, 1.0, m, AllanEstimator::kOverlapping), Error);  // NaN
+  const std::vector<double> ok = {1, 2, 3, 4, 5};
+  EXPECT_THROW(AllanAtFactors(ok, 0.0, m, AllanEstimator::kOverlapping), Error);
+  const std::vector<int64_t> too_big = {3};
+  EXPECT_THROW(AllanAtFactors(ok, 1.0, too_big, AllanEstimator::kOverlapping), Error);
+  EXPECT_NO_THROW(AllanAtFactors(ok, 1.0, m, AllanEstimator::kOverlapping));
+}
+
+// Too short a record: no point yet, no NaN anywhere.
+TEST(AllanAccumulator, ShortRecordsGiveNoPoints) {
+  AllanAccumulator acc(Options(0.1));
+  EXPECT_TRUE(acc.Curve().points.empty());
+  for (double v : {1.0, 2.0, 1.5}) acc.Add(v);
+  EXPECT_TRUE(acc.Curve().points.empty());  // 3 / 4 = 0
+  acc.Add(0.5);
+  const AllanCurve c = acc.Curve();
+  ASSERT_EQ(c.points.size(), 1u);
+  EXPECT_EQ(c.points[0].m, 1);
+  EXPECT_EQ(c.points[0].num_terms, 3);
+  EXPECT_TRUE(std::isfinite(c.points[0].adev_lo) && std::isfinite(c.points[0].adev_hi));
 }
 
 }  // namespace

@@ -104,14 +104,8 @@ void IdentifyNoise(const AveragedSeriesStats& stats, double avar, double n_avg,
     return;
   }
   point->noise_id = NoiseIdMethod::kB1Ratio;
-  point->alpha = B1NoiseAlpha(b1, n_avg);
-  if (point->alpha == 2) {
-    const double r1 = stats.Lag1()[0];
-    const double delta = r1 / (1 + r1);
-    point->alpha = std::isfinite(delta)
-                       ? std::clamp(-static_cast<int>(std::nearbyint(2 * delta)), 1, 2)
-                       : 2;
-  }
+  // B1's PM answer (mu = -2) is taken as white FM, the nearest FM noise: see the header.
+  point->alpha = std::min(B1NoiseAlpha(b1, n_avg), 0);
 }
 
 void FillBounds(double confidence, ChiSquareMethod method, int64_t phase_points,
@@ -161,6 +155,7 @@ std::string AllanOptions::Validate() const {
     return "allan: full_overlap_max_m must be in overlap_positions..2^24";
   }
   if (max_m < 1 || max_m > (int64_t{1} << 50)) return "allan: max_m must be in 1..2^50";
+  if (max_alpha < -2 || max_alpha > 2) return "allan: max_alpha must be in -2..2";
   if (!(confidence > 0 && confidence < 1)) return "allan: confidence must be in (0, 1)";
   if (chi_square != ChiSquareMethod::kExact && chi_square != ChiSquareMethod::kStable32) {
     return "allan: unknown chi_square method";
@@ -363,6 +358,7 @@ AllanCurve AllanAccumulator::Curve() const {
     const double avar = f.sum_sq / (2.0 * md * md * static_cast<double>(f.terms));
     p.adev = std::sqrt(avar);
     IdentifyNoise(f.stats, avar, static_cast<double>(s.samples - s.missing) / md, &p);
+    p.alpha = std::min(p.alpha, s.options.max_alpha);
     // The phase points of a gap-free record giving these terms (see the header on gaps).
     FillBounds(s.options.confidence, s.options.chi_square, (f.terms - 1) * p.stride + 2 * f.m + 1,
                &p);

@@ -34,11 +34,12 @@
 // allan_confidence.h for both, normalised as Stable32). The streaming accumulator keeps, per m,
 // running sums (value, square and lag-1 product sums of z and of its first and second
 // differences: O(1) per factor) from which these statistics follow exactly, not the series; it
-// matches the batch computation to rounding. One documented difference: the batch
-// function tells white from flicker PM (B1's mu = -2) by R(n) = Mod-AVAR / AVAR, which needs the
-// data; the accumulator uses the lag-1 autocorrelation of the few averages instead
-// (alpha = clamp(-round(2 delta_0), 1, 2)). PM noise at long tau does not occur in inertial
-// sensor data.
+// matches the batch computation to rounding. One documented difference: where the batch
+// function, like Stable32, tells white from flicker PM by R(n) = Mod-AVAR / AVAR when the B1
+// ratio says "PM" (mu = -2, fewer than 30 averages), which needs the data, the accumulator
+// takes white FM (alpha 0), the nearest FM noise. PM noise does not dominate inertial-sensor
+// data at such long taus, and with few averages a white-FM record gives a PM-like B1 by chance
+// often enough that the PM answer (whose EDF grows with ln m) would give far too narrow bounds.
 //
 // Errors: Add() of a NaN or infinite reading throws accelcal::Error (a gap must be declared with
 // AddMissing, never smuggled in as a NaN); invalid options throw at construction.
@@ -73,6 +74,12 @@ struct AllanOptions {
   int64_t max_m = int64_t{1} << 40;
   // Two-sided probability of the bounds: one sigma, erf(1/sqrt 2) (Stable32's "0.683"). In (0, 1).
   double confidence = kOneSigmaConfidence;
+  // Largest noise exponent the identification may report (-2 .. 2; Stable32: 2). The lag-1
+  // method with ~100 averages now and then calls white FM "flicker PM" by chance, and the EDF of
+  // flicker PM at large m is ~10 times that of white FM, so the bounds of that point come out
+  // far too narrow; a caller that knows its data have no PM noise at long taus (velocity or
+  // angle quantization only shows at short taus) may set 0. Points above it report max_alpha.
+  int max_alpha = 2;
   // Chi-square quantiles of the bounds: exact, or Stable32's approximation above 100 edf.
   ChiSquareMethod chi_square = ChiSquareMethod::kExact;
 
