@@ -29,5 +29,38 @@ TEST(ChiSquare, RejectsNonsense) {
   EXPECT_EQ(ChiSquareSurvival(0.0, 3), 1.0);
 }
 
+// Closed form for 2 dof: chi2 = -2 ln(1 - p); printed table values (5 significant digits) for
+// others; the quantile inverts the CDF for non-integer dof (equivalent degrees of freedom).
+TEST(ChiSquare, QuantileMatchesClosedFormAndTables) {
+  for (double p : {0.001, 0.1587, 0.5, 0.8413, 0.999}) {
+    EXPECT_NEAR(ChiSquareQuantile(p, 2.0), -2.0 * std::log1p(-p), 1e-12 * (1 - 2.0 * std::log1p(-p)))
+        << p;
+  }
+  EXPECT_NEAR(ChiSquareQuantile(0.95, 10.0), 18.307, 5e-4);
+  EXPECT_NEAR(ChiSquareQuantile(0.05, 10.0), 3.9403, 5e-5);
+  EXPECT_NEAR(ChiSquareQuantile(0.975, 1.0), 5.0239, 5e-5);
+  EXPECT_NEAR(ChiSquareQuantile(0.01, 30.0), 14.953, 5e-4);
+  EXPECT_NEAR(ChiSquareQuantile(0.99, 100.0), 135.807, 5e-4);
+  for (double dof : {0.7, 3.3, 47.25, 1234.5, 1.9e5}) {
+    for (double p : {0.02, 0.1587, 0.8413, 0.98}) {
+      // The CDF's own rounding grows with dof (sums of ~sqrt(dof) terms).
+      EXPECT_NEAR(ChiSquareCdf(ChiSquareQuantile(p, dof), dof), p, dof < 1e4 ? 1e-12 : 1e-10)
+          << dof << " " << p;
+    }
+  }
+  // Beyond 2e5 dof: Wilson-Hilferty, checked with the exact CDF.
+  for (double p : {0.1587, 0.8413}) {
+    EXPECT_NEAR(ChiSquareCdf(ChiSquareQuantile(p, 2.1e5), 2.1e5), p, 1e-6) << p;
+  }
+}
+
+TEST(ChiSquare, QuantileRejectsNonsense) {
+  EXPECT_TRUE(std::isnan(ChiSquareQuantile(0.0, 3.0)));
+  EXPECT_TRUE(std::isnan(ChiSquareQuantile(1.0, 3.0)));
+  EXPECT_TRUE(std::isnan(ChiSquareQuantile(0.5, 0.0)));
+  EXPECT_TRUE(std::isnan(ChiSquareQuantile(std::nan(""), 3.0)));
+  EXPECT_TRUE(std::isnan(ChiSquareCdf(1.0, -1.0)));
+}
+
 }  // namespace
 }  // namespace accelcal

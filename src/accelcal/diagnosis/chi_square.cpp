@@ -7,7 +7,12 @@ namespace accelcal {
 namespace {
 
 constexpr double kEps = 1e-15;
-constexpr int kMaxTerms = 1000;
+constexpr int kMaxTerms = 20000;  // enough for a ~ 1e5 (the terms needed grow like sqrt(a))
+// Above this many degrees of freedom the quantile uses the Wilson-Hilferty cube-root normal
+// approximation (Johnson, Kotz & Balakrishnan, Continuous Univariate Distributions vol. 1,
+// ch. 18), whose relative error falls like 1/dof (< 1e-6 here); the series and continued
+// fraction would need ~sqrt(dof) terms per evaluation.
+constexpr double kWilsonHilfertyDof = 2.0e5;
 
 // P(a, x) = gamma(a, x) / Gamma(a) by the series x^a e^-x sum x^n / (a (a+1) ... (a+n)).
 double LowerSeries(double a, double x) {
@@ -43,7 +48,69 @@ double UpperFraction(double a, double x) {
   return std::exp(-x + a * std::log(x) - std::lgamma(a)) * h;
 }
 
+// The chi-square density at x for dof degrees of freedom (x > 0).
+double ChiSquareDensity(double x, double dof) {
+  const double a = 0.5 * dof;
+  return std::exp((a - 1.0) * std::log(x) - 0.5 * x - a * std::log(2.0) - std::lgamma(a));
+}
+
+// The standard normal p-quantile by Newton steps on 0.5 erfc(-z / sqrt 2).
+double NormalQuantile(double p) {
+  double z = 0.0;
+  for (int i = 0; i < 100; ++i) {
+    const double f = 0.5 * std::erfc(-z / std::sqrt(2.0)) - p;
+    const double density = std::exp(-0.5 * z * z) / std::sqrt(2.0 * M_PI);
+    const double step = f / density;
+    z -= step;
+    if (std::fabs(step) < 1e-15 * (1.0 + std::fabs(z))) break;
+  }
+  return z;
+}
+
 }  // namespace
+
+double ChiSquareCdf(double chi2, double dof) {
+  if (!(dof > 0.0) || !(chi2 >= 0.0)) return std::numeric_limits<double>::quiet_NaN();
+  if (chi2 == 0.0) return 0.0;
+  if (std::isinf(chi2)) return 1.0;
+  const double a = 0.5 * dof;
+  const double x = 0.5 * chi2;
+  return x < a + 1.0 ? LowerSeries(a, x) : 1.0 - UpperFraction(a, x);
+}
+
+double ChiSquareQuantile(double p, double dof) {
+  if (!(p > 0.0 && p < 1.0) || !(dof > 0.0) || std::isinf(dof)) {
+    return std::numeric_limits<double>::quiet_NaN();
+  }
+  if (dof > kWilsonHilfertyDof) {
+    const double v = 2.0 / (9.0 * dof);
+    const double root = 1.0 - v + NormalQuantile(p) * std::sqrt(v);
+    return dof * root * root * root;
+  }
+  // Bracket [lo, hi] with Cdf(lo) <= p <= Cdf(hi), starting from the mean dof.
+  double lo = 0.0;
+  double hi = dof;
+  while (ChiSquareCdf(hi, dof) < p) {
+    lo = hi;
+    hi *= 2.0;
+  }
+  double x = 0.5 * (lo + hi);
+  for (int i = 0; i < 200; ++i) {
+    const double f = ChiSquareCdf(x, dof) - p;
+    if (f == 0.0) return x;
+    if (f < 0.0) {
+      lo = x;
+    } else {
+      hi = x;
+    }
+    const double density = ChiSquareDensity(x, dof);
+    double next = density > 0.0 ? x - f / density : 0.5 * (lo + hi);
+    if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);  // Newton left the bracket: bisect
+    if (std::fabs(next - x) <= 1e-14 * x || hi - lo <= 1e-14 * hi) return next;
+    x = next;
+  }
+  return x;
+}
 
 double ChiSquareSurvival(double chi2, int dof) {
   if (dof <= 0 || !(chi2 >= 0.0)) return std::numeric_limits<double>::quiet_NaN();
