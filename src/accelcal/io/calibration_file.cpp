@@ -8,6 +8,7 @@
 
 #include <fmt/core.h>
 
+#include "accelcal/detail/write_file.h"
 #include "accelcal/error.h"
 
 namespace accelcal {
@@ -254,17 +255,8 @@ Calibration CalibrationFromJson(const json& j, const std::string& source) {
 }
 
 void WriteCalibrationFile(const std::string& path, const Calibration& cal) {
-  // Write beside and rename, so a crash never leaves a half-written calibration behind.
-  const std::string tmp = path + ".tmp";
-  {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    if (!out) throw Error(fmt::format("cannot write '{}': {}", tmp, std::strerror(errno)));
-    out << CalibrationToJson(cal).dump(2) << "\n";
-    out.flush();
-    if (!out) throw Error(fmt::format("cannot write '{}': {}", tmp, std::strerror(errno)));
-  }
-  if (std::rename(tmp.c_str(), path.c_str()) != 0)
-    throw Error(fmt::format("cannot write '{}': {}", path, std::strerror(errno)));
+  // Beside and renamed, so a crash never leaves a half-written calibration behind.
+  detail::WriteFileAtomically(path, CalibrationToJson(cal).dump(2) + "\n");
 }
 
 Calibration ReadCalibrationFile(const std::string& path) {
