@@ -266,6 +266,38 @@ TEST(AllanStable32, ExactChiSquareAgreesUpTo100Edf) {
   EXPECT_GE(compared, 2);
 }
 
+// The lag-1 method on pure power-law noises of known exponent (Riley & Greenhall 2004, table
+// 1: delta = -alpha/2 - d for frequency data): white FM (white y) 0, random-walk FM (y a random
+// walk) -2, white PM (y the first difference of white noise) 2; and the B1 ratio's expected
+// values (Barnes) map back to their mu.
+TEST(AllanNoiseId, IdentifiesPowerLawNoises) {
+  std::mt19937_64 rng(11);
+  std::normal_distribution<double> g(0.0, 1.0);
+  std::vector<double> white(2000), walk(2000), wpm(2000);
+  double w = 0, prev = g(rng);
+  for (size_t i = 0; i < white.size(); ++i) {
+    white[i] = g(rng);
+    w += g(rng);
+    walk[i] = w;
+    const double e = g(rng);
+    wpm[i] = e - prev;
+    prev = e;
+  }
+  EXPECT_EQ(Lag1NoiseAlpha(Lag1Autocorrelations(white)), 0);
+  EXPECT_EQ(Lag1NoiseAlpha(Lag1Autocorrelations(walk)), -2);
+  EXPECT_EQ(Lag1NoiseAlpha(Lag1Autocorrelations(wpm)), 2);
+  EXPECT_NEAR(Lag1Autocorrelation(wpm), -0.5, 0.05);
+  EXPECT_TRUE(std::isnan(Lag1Autocorrelation(std::vector<double>{1.0, 1.0, 1.0})));
+  // B1(N, mu) itself sits inside mu's interval: N (1 - N^mu) / (2 (N-1)(1 - 2^mu)).
+  const double n = 20;
+  EXPECT_EQ(B1NoiseAlpha(n / 2, n), -2);                                         // mu = 1
+  EXPECT_EQ(B1NoiseAlpha(n * std::log(n) / (2 * (n - 1) * std::log(2.0)), n), -1);  // mu = 0
+  EXPECT_EQ(B1NoiseAlpha(1.0, n), 0);                                            // mu = -1
+  EXPECT_EQ(B1NoiseAlpha((n + 1) / (1.5 * n), n), 2);                             // mu = -2
+  EXPECT_EQ(ResolvePhaseNoise(1.0 / 64, 64), 2);
+  EXPECT_EQ(ResolvePhaseNoise(0.5, 64), 1);
+}
+
 // ---- The streaming accumulator ----
 
 // White noise of sigma plus a random walk of step rw plus an offset, deterministic.

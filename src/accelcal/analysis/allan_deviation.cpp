@@ -72,6 +72,29 @@ class AveragedSeriesStats {
     prev_v_ = v;
   }
 
+  // The same as AddBlock(true, z[i]) for i = 0 .. n-1 (to rounding), as vector sums: each
+  // series is laid out with its previous value in front, so its lag-1 pairs are (s[i], s[i+1]).
+  void AddRun(const double* z, size_t n) {
+    size_t i = 0;
+    // The first values go one by one until the differences are primed.
+    for (; i < n && !(prev_z_valid_ && prev_w_valid_ && prev_v_valid_); ++i) AddBlock(true, z[i]);
+    const Eigen::Index k = static_cast<Eigen::Index>(n - i);
+    if (k == 0) return;
+    Eigen::ArrayXd zf(k + 1), wf(k + 1), vf(k + 1);
+    zf(0) = prev_z_;
+    zf.tail(k) = Eigen::Map<const Eigen::ArrayXd>(z + i, k);
+    wf(0) = prev_w_;
+    wf.tail(k) = zf.tail(k) - zf.head(k);
+    vf(0) = prev_v_;
+    vf.tail(k) = wf.tail(k) - wf.head(k);
+    AddSeries(zf, &d0_);
+    AddSeries(wf, &d1_);
+    AddSeries(vf, &d2_);
+    prev_z_ = zf(k);
+    prev_w_ = wf(k);
+    prev_v_ = vf(k);
+  }
+
   int64_t points() const { return static_cast<int64_t>(d0_.n); }
   std::array<double, 3> Lag1() const { return {d0_.R1(), d1_.R1(), d2_.R1()}; }
   // Variance of z about its mean, divided by its length (NaN below 2 points).
@@ -82,6 +105,20 @@ class AveragedSeriesStats {
   }
 
  private:
+  // Values s[1..k] and pairs (s[i], s[i+1]), i = 0 .. k-1, into `sums`.
+  static void AddSeries(const Eigen::ArrayXd& s, Lag1Sums* sums) {
+    const Eigen::Index k = s.size() - 1;
+    const auto head = s.head(k);
+    const auto tail = s.tail(k);
+    sums->n += static_cast<double>(k);
+    sums->s += tail.sum();
+    sums->ss += tail.square().sum();
+    sums->np += static_cast<double>(k);
+    sums->sa += head.sum();
+    sums->sb += tail.sum();
+    sums->sab += (head * tail).sum();
+  }
+
   Lag1Sums d0_, d1_, d2_;
   bool prev_z_valid_ = false, prev_w_valid_ = false, prev_v_valid_ = false;
   double prev_z_ = 0, prev_w_ = 0, prev_v_ = 0;
@@ -137,6 +174,7 @@ struct Level {
   int64_t first = 0;  // grid index of x[0]
   size_t size = 0;
   size_t keep = 3;    // entries kept at compaction (>= 2 * largest grid_m + 1)
+  int64_t next_up = 2;  // next grid index to carry up to the next level (even)
   std::vector<size_t> factors;
 };
 
@@ -192,6 +230,8 @@ struct AllanAccumulator::Impl {
   int64_t missing = 0;
   bool have_ref = false;
   double ref = 0;  // first reading, subtracted from all (keeps the phase small)
+  std::vector<double> scratch = std::vector<double>(4096);  // averages of a run of blocks
+  std::vector<double> offset = std::vector<double>(4096);   // readings minus ref
 
   explicit Impl(const AllanOptions& o) : options(o) {
     int max_level = 0;
@@ -220,21 +260,27 @@ struct AllanAccumulator::Impl {
     }
   }
 
-  // Terms and blocks of the factors of level `li` up to its newest entry.
+  // Terms and blocks of the factors of level `li` up to its newest entry. The terms are summed
+  // in slices of kSlice starts, all factors per slice, so the slice's first window stays in the
+  // L1 cache across factors.
   void Process(size_t li) {
+    constexpr int64_t kSlice = 2048;
     Level& l = levels[li];
     const int64_t last = l.first + static_cast<int64_t>(l.size) - 1;
-    for (size_t fi : l.factors) {
-      Factor& f = factors[fi];
-      const int64_t gm = f.grid_m;
-      const int64_t b0 = f.next_j - l.first;
-      const int64_t b1 = last - 2 * gm - l.first + 1;  // exclusive
-      if (b1 > b0) {
-        const Eigen::Index n = b1 - b0;
+    int64_t lowest = last;
+    for (size_t fi : l.factors) lowest = std::min(lowest, factors[fi].next_j);
+    for (int64_t slice = lowest; slice <= last; slice += kSlice) {
+      for (size_t fi : l.factors) {
+        Factor& f = factors[fi];
+        const int64_t gm = f.grid_m;
+        const int64_t end = std::min(slice + kSlice, last - 2 * gm + 1);  // exclusive
+        if (end <= f.next_j) continue;
+        const int64_t b0 = f.next_j - l.first;
+        const Eigen::Index n = end - f.next_j;
         Eigen::Map<const Eigen::ArrayXd> x0(l.x.data() + b0, n);
         Eigen::Map<const Eigen::ArrayXd> x1(l.x.data() + b0 + gm, n);
         Eigen::Map<const Eigen::ArrayXd> x2(l.x.data() + b0 + 2 * gm, n);
-        if (l.c[b1 - 1 + 2 * gm] == l.c[b0]) {  // no missing reading under any of these terms
+        if (l.c[b0 + n - 1 + 2 * gm] == l.c[b0]) {  // no missing reading under these terms
           f.sum_sq += (x2 - 2.0 * x1 + x0).square().sum();
           f.terms += n;
         } else {
@@ -243,20 +289,51 @@ struct AllanAccumulator::Impl {
           f.sum_sq += (c2 == c0).select((x2 - 2.0 * x1 + x0).square(), 0.0).sum();
           f.terms += (c2 == c0).count();
         }
-        f.next_j = last - 2 * gm + 1;
+        f.next_j = end;
       }
-      for (; (f.next_block + 1) * gm <= last; ++f.next_block) {
+    }
+    for (size_t fi : l.factors) {
+      Factor& f = factors[fi];
+      const int64_t gm = f.grid_m;
+      const double md = static_cast<double>(f.m);
+      while ((f.next_block + 1) * gm <= last) {
         const int64_t g0 = f.next_block * gm - l.first;
-        const int64_t g1 = g0 + gm;
-        const bool valid = l.c[g1] == l.c[g0];
-        f.stats.AddBlock(valid, (l.x[g1] - l.x[g0]) / static_cast<double>(f.m));
+        // A run of whole blocks (at most the scratch size) with no missing reading goes in one
+        // call; a block with one goes alone.
+        const int64_t blocks = std::min<int64_t>((last - l.first - g0) / gm,
+                                                 static_cast<int64_t>(scratch.size()));
+        if (l.c[g0 + blocks * gm] == l.c[g0]) {
+          for (int64_t k = 0; k < blocks; ++k) {
+            scratch[k] = (l.x[g0 + (k + 1) * gm] - l.x[g0 + k * gm]) / md;
+          }
+          f.stats.AddRun(scratch.data(), static_cast<size_t>(blocks));
+          f.next_block += blocks;
+        } else {
+          const int64_t g1 = g0 + gm;
+          f.stats.AddBlock(l.c[g1] == l.c[g0], (l.x[g1] - l.x[g0]) / md);
+          ++f.next_block;
+        }
       }
     }
   }
 
-  // Makes room in a full level: brings its factors up to date, keeps the newest `keep` entries
-  // and rebases their phase on the oldest kept one.
+  // Carries level li's new points with an even grid index up to level li+1: the increment of
+  // such a point over the previous even one is level li+1's step.
+  void Propagate(size_t li) {
+    if (li + 1 >= levels.size()) return;
+    Level& l = levels[li];
+    const int64_t last = l.first + static_cast<int64_t>(l.size) - 1;
+    for (int64_t g = l.next_up; g <= last; g += 2) {
+      const int64_t i = g - l.first;
+      Append(li + 1, l.x[i] - l.x[i - 2], l.c[i] - l.c[i - 2]);
+    }
+    l.next_up = last + 1 + ((last + 1) & 1);  // the next even grid index
+  }
+
+  // Makes room in a full level: carries its points up, brings its factors up to date, keeps the
+  // newest `keep` entries and rebases their phase on the oldest kept one.
   void Compact(size_t li) {
+    Propagate(li);
     Process(li);
     Level& l = levels[li];
     const size_t drop = l.size - l.keep;
@@ -269,27 +346,41 @@ struct AllanAccumulator::Impl {
     l.size = l.keep;
   }
 
-  // Appends the next phase point (increment dx, missing increment dc) to level 0 and carries
-  // every second point of each level up the pyramid as the sum of its two increments.
-  void Push(double dx, double dc) {
-    size_t li = 0;
-    while (true) {
-      Level& l = levels[li];
-      if (l.size == l.x.size()) Compact(li);
-      const size_t i = l.size++;
-      l.x[i] = l.x[i - 1] + dx;
-      l.c[i] = l.c[i - 1] + dc;
-      const int64_t g = l.first + static_cast<int64_t>(i);
-      if ((g & 1) != 0 || li + 1 == levels.size()) return;
-      // Level li+1 gets grid index g / 2: its increment spans level li's last two steps.
-      dx = l.x[i] - l.x[i - 2];
-      dc = l.c[i] - l.c[i - 2];
-      ++li;
+  // Appends the next point (phase increment dx, missing-count increment dc) to level li.
+  void Append(size_t li, double dx, double dc) {
+    Level& l = levels[li];
+    if (l.size == l.x.size()) Compact(li);
+    const size_t i = l.size++;
+    l.x[i] = l.x[i - 1] + dx;
+    l.c[i] = l.c[i - 1] + dc;
+  }
+
+  // Readings (already offset by ref) into level 0, in a tight loop between compactions.
+  void AppendReadings(const double* v, size_t n) {
+    Level& l = levels[0];
+    while (n > 0) {
+      if (l.size == l.x.size()) Compact(0);
+      const size_t room = std::min(n, l.x.size() - l.size);
+      double* x = l.x.data() + l.size;
+      double* c = l.c.data() + l.size;
+      double xi = x[-1];
+      const double ci = c[-1];
+      for (size_t k = 0; k < room; ++k) {
+        xi += v[k];
+        x[k] = xi;
+        c[k] = ci;
+      }
+      l.size += room;
+      v += room;
+      n -= room;
     }
   }
 
   void Flush() {
-    for (size_t li = 0; li < levels.size(); ++li) Process(li);
+    for (size_t li = 0; li < levels.size(); ++li) {
+      Propagate(li);
+      Process(li);
+    }
   }
 };
 
@@ -302,38 +393,36 @@ AllanAccumulator::~AllanAccumulator() = default;
 AllanAccumulator::AllanAccumulator(AllanAccumulator&&) noexcept = default;
 AllanAccumulator& AllanAccumulator::operator=(AllanAccumulator&&) noexcept = default;
 
-void AllanAccumulator::Add(double y) {
-  if (!std::isfinite(y)) {
-    throw Error("allan: reading " + std::to_string(impl_->samples) +
-                " is not finite; declare lost readings with AddMissing");
-  }
-  if (!impl_->have_ref) {
-    impl_->have_ref = true;
-    impl_->ref = y;
-  }
-  impl_->Push(y - impl_->ref, 0.0);
-  ++impl_->samples;
-}
+void AllanAccumulator::Add(double y) { Add(std::span<const double>(&y, 1)); }
 
 void AllanAccumulator::Add(std::span<const double> y) {
-  for (size_t i = 0; i < y.size(); ++i) {
-    if (!std::isfinite(y[i])) {
-      throw Error("allan: reading " + std::to_string(impl_->samples) + " (index " +
-                  std::to_string(i) + " of this block) is not finite; declare lost readings "
-                  "with AddMissing");
+  Impl& s = *impl_;
+  for (size_t done = 0; done < y.size();) {
+    const size_t n = std::min(y.size() - done, s.offset.size());
+    for (size_t i = 0; i < n; ++i) {
+      const double v = y[done + i];
+      if (!std::isfinite(v)) {
+        s.AppendReadings(s.offset.data(), i);
+        s.samples += static_cast<int64_t>(i);
+        throw Error("allan: reading " + std::to_string(s.samples) + " (index " +
+                    std::to_string(done + i) + " of this block) is not finite; declare lost " +
+                    "readings with AddMissing");
+      }
+      if (!s.have_ref) {
+        s.have_ref = true;
+        s.ref = v;
+      }
+      s.offset[i] = v - s.ref;
     }
-    if (!impl_->have_ref) {
-      impl_->have_ref = true;
-      impl_->ref = y[i];
-    }
-    impl_->Push(y[i] - impl_->ref, 0.0);
-    ++impl_->samples;
+    s.AppendReadings(s.offset.data(), n);
+    s.samples += static_cast<int64_t>(n);
+    done += n;
   }
 }
 
 void AllanAccumulator::AddMissing(int64_t n) {
   if (n < 0) throw Error("allan: AddMissing needs n >= 0, got " + std::to_string(n));
-  for (int64_t i = 0; i < n; ++i) impl_->Push(0.0, 1.0);
+  for (int64_t i = 0; i < n; ++i) impl_->Append(0, 0.0, 1.0);
   impl_->samples += n;
   impl_->missing += n;
 }
