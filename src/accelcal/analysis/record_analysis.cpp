@@ -45,6 +45,13 @@ void RecordAnalyzer::Start(double rate_hz, bool estimated) {
   for (const Pending& p : held) Feed(p.t_s, p.value, p.temp_c);
 }
 
+void RecordAnalyzer::FlushAllan() {
+  for (size_t axis = 0; axis < 3; ++axis) {
+    allan_[axis].Add(std::span<const double>(pending_[axis]));
+    pending_[axis].clear();
+  }
+}
+
 void RecordAnalyzer::Add(double t_s, const Eigen::Vector3d& value, double temp_c) {
   if (!std::isfinite(t_s) || !value.allFinite() || std::isinf(temp_c))
     throw Error(fmt::format("record analysis: sample at t = {} s has a value that is not a finite "
@@ -74,14 +81,16 @@ void RecordAnalyzer::Feed(double t_s, const Eigen::Vector3d& value, double temp_
       const auto missing = static_cast<std::int64_t>(std::llround(step_s * rate_hz_)) - 1;
       if (missing > 0) {
         gaps_.push_back({t_last_s_, t_s, missing});
+        FlushAllan();
         for (AllanAccumulator& a : allan_) a.AddMissing(missing);
       }
     }
   }
   for (int axis = 0; axis < 3; ++axis) {
-    allan_[static_cast<size_t>(axis)].Add(value[axis]);
+    pending_[static_cast<size_t>(axis)].push_back(value[axis]);
     drift_[static_cast<size_t>(axis)].Add(t_s, value[axis], temp_c);
   }
+  if (pending_[0].size() >= kBatch) FlushAllan();
   if (!std::isnan(temp_c)) has_temperature_ = true;
   t_last_s_ = t_s;
 }
@@ -109,6 +118,7 @@ RecordAnalysis RecordAnalyzer::Result() {
   r.t_last_s = t_last_s_;
   r.gaps = gaps_;
   r.has_temperature = has_temperature_;
+  if (started_) FlushAllan();
   for (int axis = 0; axis < 3 && started_; ++axis) {
     AxisAnalysis& out = r.axes[static_cast<size_t>(axis)];
     out.curve = allan_[static_cast<size_t>(axis)].Curve();

@@ -38,7 +38,14 @@ struct RecordAnalysisOptions {
   // A step in t longer than this is refused as a clock jump, s (> 0). A week.
   double max_gap_s = 7 * 86400.0;
   // The Allan deviation's options; tau0_s is set from the rate (its value here is ignored).
-  AllanOptions allan;
+  // max_alpha 0: an accelerometer's readings hold no phase-type (alpha > 0) noise at the taus
+  // where it would matter, and a chance "flicker PM" call would make a point's bounds ~3 times
+  // too narrow (allan_deviation.h, AllanOptions::max_alpha).
+  AllanOptions allan = [] {
+    AllanOptions a;
+    a.max_alpha = 0;
+    return a;
+  }();
   DriftOptions drift;
 
   std::string Validate() const;  // empty when valid
@@ -104,6 +111,11 @@ class RecordAnalyzer {
   std::int64_t received_ = 0;
   bool has_temperature_ = false;
   std::vector<RecordGap> gaps_;
+  void FlushAllan();  // hands the pending readings to the accumulators
+
+  // Readings go to the accumulators in batches (their batch Add is several times faster).
+  static constexpr size_t kBatch = 4096;
+  std::array<std::vector<double>, 3> pending_;
   std::vector<AllanAccumulator> allan_;  // x, y, z once started
   std::array<DriftTracker, 3> drift_;
 };
