@@ -30,6 +30,7 @@ int main(int argc, char** argv) {
   accelcal::cli::SetupExportCommand(app);
   accelcal::cli::SetupReportCommand(app);
   accelcal::cli::SetupWizardCommand(app);
+  accelcal::cli::SetupNoiseCommand(app);
 
   try {
     app.parse(argc, argv);

@@ -18,5 +18,6 @@ void SetupSessionsCommand(CLI::App& app);
 void SetupExportCommand(CLI::App& app);
 void SetupReportCommand(CLI::App& app);
 void SetupWizardCommand(CLI::App& app);
+void SetupNoiseCommand(CLI::App& app);
 
 }  // namespace accelcal::cli
