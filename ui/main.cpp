@@ -31,6 +31,7 @@ int main(int argc, char** argv) {
   accelcal::cli::SetupReportCommand(app);
   accelcal::cli::SetupWizardCommand(app);
   accelcal::cli::SetupAllanCommand(app);
+  accelcal::cli::SetupNoiseCommand(app);
 
   try {
     app.parse(argc, argv);

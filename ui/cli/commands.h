@@ -19,5 +19,6 @@ void SetupExportCommand(CLI::App& app);
 void SetupReportCommand(CLI::App& app);
 void SetupWizardCommand(CLI::App& app);
 void SetupAllanCommand(CLI::App& app);
+void SetupNoiseCommand(CLI::App& app);
 
 }  // namespace accelcal::cli

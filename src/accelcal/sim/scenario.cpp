@@ -17,6 +17,7 @@ std::string ValidateSensor(const SensorSpec& s) {
     return "sensor.noise_counts must be finite and not negative";
   }
   if (!(s.rate_hz > 0.0) || !std::isfinite(s.rate_hz)) return "sensor.rate_hz must be positive";
+  if (std::string why = s.bias_noise.Validate(); !why.empty()) return "sensor: " + why;
   return {};
 }
 

@@ -21,6 +21,7 @@
 #include "accelcal/capture.h"
 #include "accelcal/capture_set.h"
 #include "accelcal/sensor_model.h"
+#include "accelcal/sim/bias_noise.h"
 
 namespace accelcal::sim {
 
@@ -35,6 +36,9 @@ struct SensorSpec {
   SensorModel model;                                       // bias, scale, misalignment (truth)
   Eigen::Vector3d noise_counts = Eigen::Vector3d::Zero();  // white-noise std per axis, counts
   double rate_hz = 100.0;                                  // output data rate, samples per s
+  // Long-term bias noise (bias random walk K, counts/sqrt(s); bias instability B, counts, with
+  // the correlation-time range of its Gauss-Markov approximation): bias_noise.h. Off by default.
+  BiasNoiseSpec bias_noise;
 };
 
 // [adc]: readings are rounded to integer counts and clipped to the converter's range.

@@ -28,6 +28,20 @@ SensorSpec ReadSensor(TomlTableReader& r, const std::string& source) {
   }
   s.noise_counts = r.Vector3("noise_counts", Eigen::Vector3d::Zero(), NumberRange::kNonNegative);
   s.rate_hz = r.Number("rate_hz", 100.0, NumberRange::kPositive);
+  BiasNoiseSpec& bn = s.bias_noise;
+  bn.random_walk_counts_per_sqrt_s = r.Vector3("bias_random_walk_counts_per_sqrt_s",
+                                               Eigen::Vector3d::Zero(), NumberRange::kNonNegative);
+  bn.instability_counts =
+      r.Vector3("bias_instability_counts", Eigen::Vector3d::Zero(), NumberRange::kNonNegative);
+  bn.instability_tau_min_s =
+      r.Number("bias_instability_tau_min_s", bn.instability_tau_min_s, NumberRange::kPositive);
+  bn.instability_tau_max_s =
+      r.Number("bias_instability_tau_max_s", bn.instability_tau_max_s, NumberRange::kPositive);
+  if (!(bn.instability_tau_max_s > bn.instability_tau_min_s)) {
+    const char* key = r.Has("bias_instability_tau_max_s") ? "bias_instability_tau_max_s"
+                                                           : "bias_instability_tau_min_s";
+    r.Fail(*r.Get(key), key, "bias_instability_tau_max_s must exceed bias_instability_tau_min_s");
+  }
   return s;
 }
 

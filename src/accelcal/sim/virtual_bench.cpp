@@ -10,6 +10,10 @@ namespace {
 
 constexpr double kDegToRad = M_PI / 180.0;
 
+// The bias noise's stream is seeded from the bench seed mixed with this constant (any fixed odd
+// number), so it is independent of the main stream and reproducible.
+constexpr std::uint64_t kBiasNoiseSeedMix = 0xd1b54a32d192ed03ULL;
+
 // Platform -> table rotation for a turntable mounting: radial_axis -> x_table, up_axis ->
 // z_table, and (up x radial) -> (z x x) = y_table, which keeps the rotation proper.
 Eigen::Matrix3d MountingRotation(SensorAxis radial, SensorAxis up) {
@@ -20,6 +24,15 @@ Eigen::Matrix3d MountingRotation(SensorAxis radial, SensorAxis up) {
   Eigen::Matrix3d table_axes;
   table_axes << Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitZ(), Eigen::Vector3d::UnitY();
   return table_axes * sensor_axes.transpose();
+}
+
+// The scenario, or accelcal::Error when scenario.Validate() finds a problem (before any member
+// is built from it).
+Scenario ValidScenario(Scenario scenario) {
+  if (std::string why = scenario.Validate(); !why.empty()) {
+    throw Error(scenario.source_name + ": " + why);
+  }
+  return scenario;
 }
 
 }  // namespace
@@ -39,11 +52,15 @@ Eigen::Vector3d ActivePulse::AccelerationWorld(double t_s) const {
 }
 
 VirtualBench::VirtualBench(Scenario scenario)
-    : scenario_(std::move(scenario)), rng_(scenario_.bench.seed) {
-  if (std::string why = scenario_.Validate(); !why.empty()) {
-    throw Error(scenario_.source_name + ": " + why);
-  }
+    : scenario_(ValidScenario(std::move(scenario))),
+      rng_(scenario_.bench.seed),
+      bias_noise_(scenario_.sensor.bias_noise, scenario_.bench.seed ^ kBiasNoiseSeedMix) {
   session_duration_s_ = scenario_.SessionDurationS();
+}
+
+void VirtualBench::Reseed(std::uint64_t seed) {
+  rng_.seed(seed);
+  bias_noise_.Reset(seed ^ kBiasNoiseSeedMix);
 }
 
 Eigen::Matrix3d VirtualBench::RandomPlacementRotation() {
@@ -161,7 +178,7 @@ Eigen::Vector3d VirtualBench::IdealRaw(const Eigen::Matrix3d& f_per_axis_mps2, d
 
 Sample VirtualBench::MeasurePerAxis(const Eigen::Matrix3d& f_per_axis_mps2, double t_s) {
   std::normal_distribution<double> unit;
-  Eigen::Vector3d raw = IdealRaw(f_per_axis_mps2, t_s);
+  Eigen::Vector3d raw = IdealRaw(f_per_axis_mps2, t_s) + bias_noise_.Advance(t_s);
   for (int i = 0; i < 3; ++i) raw(i) += scenario_.sensor.noise_counts(i) * unit(rng_);
   const double lo = scenario_.adc.MinCounts();
   const double hi = scenario_.adc.MaxCounts();

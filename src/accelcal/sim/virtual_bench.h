@@ -12,12 +12,17 @@
 //                   so |f| = sqrt(g^2 + (w^2 r)^2) on a level table. radial_axis -> x_table,
 //                   up_axis -> z_table, then the placement rotation.
 //   measurement     a^a = T^-1 a^p (a^p = f in the platform frame), raw = K a^a + b, plus the
-//                   effects (quadratic, temperature, drift), white noise, rounding to integer
-//                   counts and clipping to the ADC range.
+//                   effects (quadratic, temperature, drift), the long-term bias noise (random
+//                   walk, instability: bias_noise.h), white noise, rounding to integer counts
+//                   and clipping to the ADC range.
 //
 // Time: one session clock in s, starting at 0 with the first capture. Randomness: one
-// std::mt19937_64 seeded from bench.seed; SimulateCaptureSet and SimulateRecording reseed it,
-// so each returns the same data for the same seed.
+// std::mt19937_64 seeded from bench.seed, and a second one (seeded from bench.seed too) for the
+// long-term bias noise, so that turning it on leaves the rest of the stream unchanged;
+// SimulateCaptureSet and SimulateRecording reseed both, so each returns the same data for the
+// same seed. The bias noise evolves with the session clock: across the gaps between captures
+// too, and in whatever order of time the readings are asked for (a reading earlier than the
+// previous one sees the bias unchanged).
 #pragma once
 
 #include <random>
@@ -85,7 +90,8 @@ class VirtualBench {
   Sample Measure(const Eigen::Vector3d& f_platform_mps2, double t_s);
   // As above, with each axis feeling its own column of `f_per_axis_mps2`.
   Sample MeasurePerAxis(const Eigen::Matrix3d& f_per_axis_mps2, double t_s);
-  // Noiseless, unquantized raw reading (effects included), counts.
+  // Noiseless, unquantized raw reading (effects included; no white or long-term bias noise),
+  // counts.
   Eigen::Vector3d IdealRaw(const Eigen::Matrix3d& f_per_axis_mps2, double t_s) const;
 
   // Sensor temperature at session time t_s, degC.
@@ -93,8 +99,8 @@ class VirtualBench {
   // Session length the temperature ramp spans, s (the plan's, or the recording's while one runs).
   double session_duration_s() const { return session_duration_s_; }
 
-  // Restarts the random stream from `seed`.
-  void Reseed(std::uint64_t seed) { rng_.seed(seed); }
+  // Restarts the random streams from `seed` (and the long-term bias noise from its start).
+  void Reseed(std::uint64_t seed);
 
   // The true model and everything else the bench was built from.
   const Scenario& scenario() const { return scenario_; }
@@ -107,6 +113,7 @@ class VirtualBench {
 
   Scenario scenario_;
   std::mt19937_64 rng_;
+  BiasNoise bias_noise_;
   double session_duration_s_ = 0.0;
 };
 

@@ -1,0 +1,181 @@
+#include "accelcal/report/noise_text.h"
+
+#include <cmath>
+
+#include <fmt/core.h>
+
+namespace accelcal {
+namespace {
+
+using analysis::AxisNoise;
+using analysis::NoiseReport;
+using analysis::NormalityTest;
+using analysis::NormalityVerdict;
+using analysis::RecordNoise;
+
+constexpr const char* kAxisNames[3] = {"x", "y", "z"};
+
+nlohmann::json Number(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(); }
+
+nlohmann::json Vector(const Eigen::Vector3d& v) {
+  if (!v.allFinite()) return nullptr;
+  return nlohmann::json::array({v(0), v(1), v(2)});
+}
+
+nlohmann::json Numbers(const std::vector<double>& values) {
+  nlohmann::json out = nlohmann::json::array();
+  for (double v : values) out.push_back(Number(v));
+  return out;
+}
+
+nlohmann::json NormalityJson(const NormalityTest& t) {
+  return {{"test", "jarque-bera"},
+          {"statistic", Number(t.statistic)},
+          {"p_value", Number(t.p_value)},
+          {"skewness", Number(t.skewness)},
+          {"excess_kurtosis", Number(t.excess_kurtosis)},
+          {"verdict", std::string(analysis::NormalityVerdictToString(t.verdict))},
+          {"note", t.note}};
+}
+
+nlohmann::json RecordJson(const RecordNoise& r) {
+  nlohmann::json axes = nlohmann::json::object();
+  nlohmann::json spectrum = {{"frequency_hz", Numbers(r.spectrum.frequency_hz)}};
+  for (std::size_t a = 0; a < 3; ++a) {
+    const AxisNoise& axis = r.axes[a];
+    axes[kAxisNames[a]] = {{"mean", Number(axis.mean)},
+                           {"std", Number(axis.std)},
+                           {"std_counts", Number(axis.std_counts)},
+                           {"density", Number(axis.density)},
+                           {"normality", NormalityJson(axis.normality)}};
+    spectrum[kAxisNames[a]] = Numbers(r.spectrum.density[a]);
+  }
+  return {{"label", r.label},
+          {"date", r.date.empty() ? nlohmann::json() : nlohmann::json(r.date)},
+          {"n_samples", r.num_samples},
+          {"rate_hz", Number(r.rate_hz)},
+          {"duration_s", Number(r.duration_s)},
+          {"welch", {{"segment_length", r.segment_length},
+                     {"segments", r.num_segments},
+                     {"resolution_hz", Number(r.resolution_hz)}}},
+          {"flat_band_hz", {Number(r.band_low_hz), Number(r.band_high_hz)}},
+          {"flat_band_bins", r.band_bins},
+          {"axes", axes},
+          {"spectrum", spectrum}};
+}
+
+// "normal (p 0.43)", "NOT NORMAL (p 3e-12)", "quantized: not tested".
+std::string VerdictText(const NormalityTest& t) {
+  switch (t.verdict) {
+    case NormalityVerdict::kNormal: return fmt::format("normal (JB p {:.2g})", t.p_value);
+    case NormalityVerdict::kNotNormal: return fmt::format("NOT normal (JB p {:.2g})", t.p_value);
+    case NormalityVerdict::kQuantized: return "not tested: < 1 count";
+  }
+  return "";
+}
+
+void AppendRecordText(const RecordNoise& r, std::string* out) {
+  *out += fmt::format("\nRecord {}{}: {} samples at {:.4g} Hz, {:.1f} s\n", r.label,
+                      r.date.empty() ? "" : " (" + r.date + ")", r.num_samples, r.rate_hz,
+                      r.duration_s);
+  *out += fmt::format("  Welch PSD: {} segments of {} samples ({:.3g} Hz); flat band "
+                      "{:.3g}-{:.3g} Hz\n",
+                      r.num_segments, r.segment_length, r.resolution_hz, r.band_low_hz,
+                      r.band_high_hz);
+  *out += fmt::format("  {:<4} {:>13} {:>12} {:>12}  {}\n", "axis", "mean", "std", "density",
+                      "normality");
+  for (std::size_t a = 0; a < 3; ++a) {
+    const AxisNoise& axis = r.axes[a];
+    *out += fmt::format("  {:<4} {:>13.7g} {:>12.5g} {:>12.5g}  {}\n", kAxisNames[a], axis.mean,
+                        axis.std, axis.density, VerdictText(axis.normality));
+  }
+  for (std::size_t a = 0; a < 3; ++a) {
+    if (r.axes[a].normality.verdict == NormalityVerdict::kNotNormal)
+      *out += fmt::format("  {}: {}\n", kAxisNames[a], r.axes[a].normality.note);
+  }
+  bool quantized_said = false;
+  for (std::size_t a = 0; a < 3 && !quantized_said; ++a) {
+    if (r.axes[a].normality.verdict != NormalityVerdict::kQuantized) continue;
+    *out += "  (std below 1 count: the ADC's rounding dominates; normality not testable)\n";
+    quantized_said = true;
+  }
+}
+
+// `text` as "  - " + lines of at most 80 columns, continued with 4 spaces, broken at blanks.
+std::string Bullet(const std::string& text) {
+  constexpr std::size_t kWidth = 80;
+  std::string out, line = "  -";
+  std::size_t at = 0;
+  while (at < text.size()) {
+    std::size_t end = text.find(' ', at);
+    if (end == std::string::npos) end = text.size();
+    const std::string word = text.substr(at, end - at);
+    if (line.size() + 1 + word.size() > kWidth && line.size() > 4) {
+      out += line + "\n";
+      line = "   ";
+    }
+    line += " " + word;
+    at = end + 1;
+  }
+  return out + line + "\n";
+}
+
+}  // namespace
+
+std::string FormatNoiseText(const NoiseReport& report) {
+  std::string out = fmt::format(
+      "Noise analysis: {} record(s); unit {} (density {}/sqrt(Hz)){}\n", report.records.size(),
+      report.unit, report.unit,
+      report.calibration_source.empty() ? "" : "\nCalibration: " + report.calibration_source);
+  for (const RecordNoise& r : report.records) AppendRecordText(r, &out);
+  const analysis::BiasRepeatability& rep = report.repeatability;
+  out += fmt::format("\nTurn-on bias repeatability (day-to-day change of the mean), {} day(s)\n",
+                     rep.num_days);
+  for (std::size_t i = 0; i < rep.labels.size(); ++i) {
+    out += fmt::format("  {:<10}  {:<24} mean {:.7g} {:.7g} {:.7g}\n",
+                       rep.dates[i].empty() ? "no date" : rep.dates[i], rep.labels[i],
+                       rep.means[i](0), rep.means[i](1), rep.means[i](2));
+  }
+  if (rep.num_days >= 2) {
+    out += fmt::format("  {:<4} {:>14} {:>14}\n", "axis", "std of means", "max - min");
+    for (int a = 0; a < 3; ++a) {
+      out += fmt::format("  {:<4} {:>14.5g} {:>14.5g}\n", kAxisNames[a], rep.std_of_means(a),
+                         rep.max_minus_min(a));
+    }
+  } else {
+    out += "  not computed: needs records on at least 2 days\n";
+  }
+  if (!report.warnings.empty()) {
+    out += "\nWarnings:\n";
+    for (const std::string& w : report.warnings) out += Bullet(w);
+  }
+  out += "\n(Spectra: --format json.)\n";
+  return out;
+}
+
+nlohmann::json NoiseReportToJson(const NoiseReport& report) {
+  nlohmann::json records = nlohmann::json::array();
+  for (const RecordNoise& r : report.records) records.push_back(RecordJson(r));
+  const analysis::BiasRepeatability& rep = report.repeatability;
+  nlohmann::json used = nlohmann::json::array();
+  for (std::size_t i = 0; i < rep.labels.size(); ++i) {
+    used.push_back({{"label", rep.labels[i]},
+                    {"date", rep.dates[i].empty() ? nlohmann::json() : nlohmann::json(rep.dates[i])},
+                    {"mean", Vector(rep.means[i])}});
+  }
+  return {{"format", "accelcal-noise/1"},
+          {"unit", report.unit},
+          {"density_unit", report.unit + "/sqrt(Hz)"},
+          {"psd_unit", report.unit + "^2/Hz"},
+          {"calibration", report.calibration_source.empty()
+                              ? nlohmann::json()
+                              : nlohmann::json(report.calibration_source)},
+          {"records", records},
+          {"repeatability", {{"days", rep.num_days},
+                             {"records", used},
+                             {"std_of_means", Vector(rep.std_of_means)},
+                             {"max_minus_min", Vector(rep.max_minus_min)}}},
+          {"warnings", report.warnings}};
+}
+
+}  // namespace accelcal

@@ -1,0 +1,113 @@
+// `accelcal noise`: the inherent-noise analysis of a device's noise records (sessions of the
+// noise procedure in the store) or of recording files: per-axis std, noise density, normality,
+// spectrum, and the day-to-day change of the mean.
+#include <fstream>
+#include <iostream>
+#include <memory>
+#include <optional>
+
+#include <fmt/core.h>
+
+#include "accelcal/analysis/noise_analysis.h"
+#include "accelcal/analysis/noise_records.h"
+#include "accelcal/error.h"
+#include "accelcal/io/calibration_file.h"
+#include "accelcal/report/noise_text.h"
+#include "accelcal/session/session_paths.h"
+#include "accelcal/wizard/procedure.h"
+#include "cli/commands.h"
+
+namespace accelcal::cli {
+namespace {
+
+struct NoiseCommandOptions {
+  std::string device;                  // serial; or empty with record_paths
+  std::vector<std::string> record_paths;  // --record FILE...
+  std::string sessions_dir;            // empty: the default directory
+  std::string procedure_path;          // empty: procedures/noise.toml of the source tree
+  std::string calibration_path;        // empty: counts
+  std::string format = "text";         // text | json
+  std::string output_path;             // empty: stdout
+};
+
+std::string DefaultNoiseProcedurePath() {
+  return std::string(ACCELCAL_PROCEDURES_DIR) + "/noise.toml";
+}
+
+void WriteText(const std::string& path, const std::string& text) {
+  if (path.empty()) {
+    std::cout << text;
+    return;
+  }
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  out << text;
+  out.close();
+  if (!out) throw Error(fmt::format("cannot write {}", path));
+}
+
+std::vector<analysis::NoiseRecord> Records(const NoiseCommandOptions& o,
+                                           std::vector<std::string>* notes) {
+  std::vector<analysis::NoiseRecord> records;
+  if (!o.record_paths.empty()) {
+    for (const std::string& path : o.record_paths)
+      records.push_back(analysis::NoiseRecordFromFile(path));
+    return records;
+  }
+  const Procedure procedure = LoadProcedure(
+      o.procedure_path.empty() ? DefaultNoiseProcedurePath() : o.procedure_path);
+  const std::string dir = o.sessions_dir.empty() ? DefaultSessionDir() : o.sessions_dir;
+  analysis::NoiseRecordSet set = analysis::NoiseRecordsOfDevice(dir, o.device, procedure);
+  *notes = std::move(set.notes);
+  return std::move(set.records);
+}
+
+void RunNoise(const NoiseCommandOptions& o) {
+  if (o.device.empty() == o.record_paths.empty())
+    throw Error("give either a DEVICE serial or --record FILE..., not both");
+  std::optional<Calibration> calibration;
+  if (!o.calibration_path.empty()) calibration = ReadCalibrationFile(o.calibration_path);
+  std::vector<std::string> notes;
+  const std::vector<analysis::NoiseRecord> records = Records(o, &notes);
+  analysis::NoiseReport report = analysis::AnalyzeNoise(
+      records, analysis::NoiseAnalysisOptions{}, calibration ? &*calibration : nullptr);
+  report.warnings.insert(report.warnings.begin(), notes.begin(), notes.end());
+  if (o.format == "json") {
+    WriteText(o.output_path, NoiseReportToJson(report).dump(2) + "\n");
+  } else {
+    std::string header = o.device.empty() ? "" : fmt::format("Device {}\n", o.device);
+    WriteText(o.output_path, header + FormatNoiseText(report));
+  }
+}
+
+}  // namespace
+
+void SetupNoiseCommand(CLI::App& app) {
+  auto opts = std::make_shared<NoiseCommandOptions>();
+  CLI::App* sub = app.add_subcommand(
+      "noise",
+      "Inherent noise of a device from its 1-minute static records (sessions of the noise\n"
+      "procedure, one per day): per axis the mean, standard deviation, noise density (Welch\n"
+      "PSD, flat band), a normality check (Jarque-Bera) and the spectrum (JSON), and the\n"
+      "day-to-day change of the mean (turn-on bias repeatability, 3 days or more). Units:\n"
+      "counts, or m/s^2 with --calibration.\n\n"
+      "Examples:\n"
+      "  accelcal noise SN-1234\n"
+      "  accelcal noise SN-1234 --sessions-dir /mnt/bench/sessions --format json -o noise.json\n"
+      "  accelcal noise --record day1.txt day2.txt day3.txt --calibration cal.json");
+  sub->add_option("device", opts->device, "Device serial (as recorded in its sessions)");
+  sub->add_option("--record", opts->record_paths,
+                  "Recording files (t ax ay az [temp_c]) instead of sessions; undated")
+      ->check(CLI::ExistingFile);
+  sub->add_option("--sessions-dir", opts->sessions_dir,
+                  "Session directory (default: $XDG_DATA_HOME/accelcal/sessions)");
+  sub->add_option("--procedure", opts->procedure_path,
+                  "The noise procedure whose sessions count (default: procedures/noise.toml)");
+  sub->add_option("--calibration", opts->calibration_path,
+                  "Calibration file (JSON): results in m/s^2 instead of counts");
+  sub->add_option("--format", opts->format, "text or json")
+      ->check(CLI::IsMember({"text", "json"}))->capture_default_str();
+  sub->add_option("-o,--output", opts->output_path, "Write here instead of standard output");
+  sub->callback([opts] { RunNoise(*opts); });
+}
+
+}  // namespace accelcal::cli
