@@ -27,7 +27,7 @@ mkdir -p "$work/sessions" "$work/one"
 "$make_session" "$work/sessions/cal.db"   # a calibration session (another procedure)
 
 # JSON: per-axis std and density against the truth. White noise sigma (1.5, 1.5, 1.7) counts
-# plus the rounding's 1/12 count^2: std sqrt(sigma^2 + 1/12); density std sqrt(2 / 100 Hz).
+# plus the rounding's 1/12 count^2: std sqrt(sigma^2 + 1/12); density N = std / sqrt(100 Hz).
 expect 0 "$accelcal" noise SN-E2E --sessions-dir "$work/sessions" --format json -o "$work/n.json"
 j() { jq -r "$1" "$work/n.json"; }
 [ "$(j '.records | length')" = 3 ] || fail "expected 3 records"
@@ -36,7 +36,7 @@ j() { jq -r "$1" "$work/n.json"; }
 for axis in x y z; do
   sigma=1.5; [ $axis = z ] && sigma=1.7
   std=$(awk -v s=$sigma 'BEGIN { print sqrt(s * s + 1 / 12) }')
-  density=$(awk -v s="$std" 'BEGIN { print s * sqrt(2 / 100) }')
+  density=$(awk -v s="$std" 'BEGIN { print s / sqrt(100) }')
   for r in 0 1 2; do
     check "record $r $axis std" "$(j ".records[$r].axes.$axis.std")" "$std" "$(awk -v s="$std" 'BEGIN { print 0.05 * s }')"
     check "record $r $axis density" "$(j ".records[$r].axes.$axis.density")" "$density" "$(awk -v s="$density" 'BEGIN { print 0.10 * s }')"

@@ -55,7 +55,7 @@ TEST(NoiseAnalysisTest, WhiteNoiseStdAndDensity) {
   EXPECT_NEAR(r.band_high_hz, 40.0, 1e-9);  // 0.8 Nyquist
   // Rounding to whole counts adds 1/12 count^2 of white noise.
   const double true_std = std::sqrt(sigma * sigma + 1.0 / 12.0);
-  const double true_density = true_std * std::sqrt(2.0 / 100.0);  // one-sided, counts/sqrt(Hz)
+  const double true_density = true_std / std::sqrt(100.0);  // N = s/sqrt(fs), counts/sqrt(Hz)
   for (int a = 0; a < 3; ++a) {
     EXPECT_NEAR(r.axes[a].std / true_std, 1.0, 0.05) << a;
     EXPECT_NEAR(r.axes[a].density / true_density, 1.0, 0.10) << a;

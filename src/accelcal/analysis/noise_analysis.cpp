@@ -129,7 +129,9 @@ RecordNoise AnalyzeRecord(const NoiseRecord& record, const NoiseAnalysisOptions&
     axis.mean = Mean(series.value[a]);
     axis.std = SampleStd(series.value[a]);
     axis.std_counts = SampleStd(series.counts[a]);
-    axis.density = std::sqrt(band_sum[a] / r.band_bins);
+    // N, the convention of IEEE 952 and Kalibr (and of the Allan read-offs): one-sided PSD
+    // = 2 N^2 for white noise.
+    axis.density = std::sqrt(band_sum[a] / r.band_bins / 2.0);
     axis.normality = JarqueBera(series.value[a], axis.std_counts, options.normality_alpha,
                                 options.quantization_limit_counts);
   }

@@ -7,10 +7,16 @@
 // (each reading converted by CalibrationApplier first); NoiseReport::unit names which. Densities
 // are in unit/sqrt(Hz), PSDs in unit^2/Hz (one-sided), frequencies in Hz.
 //
+// Noise density convention: the white-noise coefficient N of IEEE Std 952 (the Allan
+// deviation's slope -1/2 line at 1 s, allan_readoffs.h) and of Kalibr's noise_density, so both
+// analyses give the same number: white noise of per-sample std s at rate fs has N = s/sqrt(fs)
+// and a one-sided PSD of 2 N^2. (A datasheet's "noise density" is usually the one-sided
+// sqrt(PSD), sqrt(2) times larger.)
+//
 // Flat band: white noise is flat in the PSD, flicker and drift rise at low frequency, and the
 // sensor's anti-alias filter rolls off near Nyquist. The band is [max(low_fraction * Nyquist,
 // 4 * resolution), high_fraction * Nyquist] (by default 0.1 to 0.8 of Nyquist: 5 to 40 Hz at
-// 100 Hz), and the density is sqrt of the MEAN PSD over its bins (the mean of Welch estimates
+// 100 Hz), and the density is sqrt of half the MEAN PSD over its bins (the mean of Welch estimates
 // is unbiased for white noise; a median of chi-square-distributed estimates is biased low).
 //
 // Day-to-day: records are grouped by their UTC date; the first record of each day counts
