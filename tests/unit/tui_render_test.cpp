@@ -82,6 +82,7 @@ TEST(TuiRender, RecordingSaysWhenTheAllanCurveIsEmpty) {
   const std::string text = Render(accelcal::testing::RecordingView(), {}, 120, 40).Text();
   EXPECT_TRUE(Contains(text, "Allan curve: waiting for data")) << text;
   EXPECT_TRUE(Contains(text, "03:12:05 of 12:00:00")) << text;
+  EXPECT_TRUE(Contains(text, "08:47:55 to go")) << text;  // 43200 - 11525 s
   EXPECT_TRUE(Contains(text, "gaps 1 (42 s)")) << text;
   EXPECT_TRUE(Contains(text, "[WARN] moved 1 time")) << text;
 }

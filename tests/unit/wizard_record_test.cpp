@@ -200,5 +200,19 @@ TEST(WizardRecordTest, NoMovementIsSeenInAQuietRecord) {
       << journal->DoneSteps().at("drift");
 }
 
+TEST(WizardRecordTest, BackKeepsAFinishedRecordAndReturnsToASkippedOne) {
+  Procedure p = RecordProcedure(20.0, 10.0);
+  ProcedureStep second = p.steps.front();
+  second.id = "drift2";
+  p.steps.push_back(second);
+  std::shared_ptr<SessionJournal> journal(MakeMemoryJournal());
+  Rig rig(p, journal, 1000.0);
+  RunUntil(rig.engine, [](const WizardView& v) { return v.step_index == 3; });  // at drift2
+  rig.engine.Handle({IntentKind::kBack, ""});
+  EXPECT_EQ(rig.engine.View().step_index, 3);
+  EXPECT_NE(rig.engine.View().problem.find("nothing to go back to"), std::string::npos);
+  EXPECT_EQ(journal->RecordSummaryOf("drift").num_samples, 2001);  // untouched
+}
+
 }  // namespace
 }  // namespace accelcal

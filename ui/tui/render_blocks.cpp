@@ -134,10 +134,12 @@ std::vector<Line> RecordBlock(const WizardView& view, int width, int rows) {
   const RecordView& r = *view.record;
   std::vector<Line> out;
   const double p = r.duration_s > 0.0 ? std::clamp(r.elapsed_s / r.duration_s, 0.0, 1.0) : kNaN;
-  out.push_back(Labelled("elapsed", fmt::format("{} of {} {} {} %", FormatClock(r.elapsed_s),
-                                                FormatClock(r.duration_s),
-                                                Bar(std::min(p, 0.999), kBarCells),
-                                                FormatNumber(p * 100.0, 0, 3)),
+  out.push_back(Labelled("elapsed", Clip(fmt::format("{} of {} {} {} %, {} to go",
+                                                     FormatClock(r.elapsed_s), FormatClock(r.duration_s),
+                                                     Bar(std::min(p, 0.999), kBarCells),
+                                                     FormatNumber(p * 100.0, 0, 3),
+                                                     FormatClock(r.duration_s - r.elapsed_s)),
+                                         std::max(width - kLabelWidth, 1)),
                          Role::kPrompt));
   out.push_back(Labelled("recorded",
                          Clip(fmt::format("{} in {} chunks, {} samples; gaps {} ({})",

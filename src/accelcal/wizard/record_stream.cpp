@@ -108,7 +108,9 @@ void RecordStream::Accumulate(const Sample& s) {
     reference_sum_ += s.raw_counts;
     ++reference_n_;
   }
-  const size_t bin = static_cast<size_t>(std::max(0.0, std::floor(since_s / DriftBinS())));
+  // The last sample (at the duration) and any beyond it go into the last bin.
+  const double last_bin = static_cast<double>(options_.drift_points - 1);
+  const size_t bin = static_cast<size_t>(std::clamp(std::floor(since_s / DriftBinS()), 0.0, last_bin));
   if (bin >= bins_.size()) bins_.resize(bin + 1);
   bins_[bin].sum += s.raw_counts;
   bins_[bin].n += 1;

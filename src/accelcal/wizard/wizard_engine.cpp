@@ -180,16 +180,20 @@ void WizardEngine::GoBack() {
     return;
   }
   const std::vector<JournalCapture> captures = journal_.Captures();
+  const std::map<std::string, std::string> done = journal_.DoneSteps();
   for (int i = current_ - 1; i >= 0; --i) {
     const ProcedureStep& s = procedure_.steps[static_cast<size_t>(i)];
     const bool has_capture = std::any_of(captures.begin(), captures.end(),
                                          [&](const JournalCapture& c) { return c.step_id == s.id; });
-    if (IsCaptureStep(s.kind) && !has_capture) {
+    // A record that ran to its end is kept like an accepted capture.
+    const auto d = done.find(s.id);
+    const bool recorded = s.kind == StepKind::kRecord && d != done.end() && d->second != "skipped";
+    if (IsCaptureStep(s.kind) && !has_capture && !recorded) {
       EnterStep(i);
       return;
     }
   }
-  problem_ = "nothing to go back to: every earlier capture is recorded and is kept";
+  problem_ = "nothing to go back to: every earlier capture and record is recorded and is kept";
 }
 
 void WizardEngine::Quit() {
