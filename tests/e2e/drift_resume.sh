@@ -38,16 +38,28 @@ for i, n, t0, t1, blob in rows:
 PY
 }
 
-# kill -9 the wizard once the record holds more than `after` chunks, a random moment later.
+chunk_count() {
+  python3 - "$db" <<'PY'
+import sqlite3, sys
+try:
+    db = sqlite3.connect("file:" + sys.argv[1] + "?mode=ro", uri=True)
+    print(db.execute("SELECT count(*) FROM record_chunks").fetchone()[0])
+except sqlite3.Error:
+    print(0)
+PY
+}
+
+# kill -9 the wizard at a random moment once the record holds more than `after` chunks (of
+# 144: the run is far from its end, however fast the machine).
 run_and_kill() {
   local after=$1 round=$2
   run_wizard >"$work/out.$round" 2>&1 &
   local pid=$! target=""
-  for _ in $(seq 1 600); do
-    [ "$(chunk_sums 2>/dev/null | wc -l)" -gt "$after" ] && break
-    sleep 0.05
+  for _ in $(seq 1 1200); do
+    [ "$(chunk_count)" -gt "$after" ] && break
+    sleep 0.02
   done
-  sleep "0.$(printf '%02d' $((RANDOM % 90 + 5)))"
+  sleep "0.0$((RANDOM % 10))"
   target=$(pgrep -P "$pid" -x accelcal || true)
   [ -n "$target" ] || fail "round $round: the wizard had already ended"
   kill -9 $target
@@ -56,7 +68,7 @@ run_and_kill() {
 
 before=""
 for round in 1 2; do
-  run_and_kill "$(printf '%s' "$before" | grep -c . || true)" "$round"
+  run_and_kill "$(( $(printf '%s' "$before" | grep -c . || true) + 20 + RANDOM % 30 ))" "$round"
   now=$(chunk_sums)
   [ "$(printf '%s\n' "$now" | grep -c .)" -gt "$(printf '%s' "$before" | grep -c . || true)" ] ||
     fail "round $round: no chunk was added"
