@@ -8,13 +8,19 @@
 
 #include <fmt/format.h>
 
+#include "accelcal/wizard/duration_text.h"
 #include "frontend.h"
 
 namespace accelcal::ui {
 namespace {
 
 // A view is busy while the engine works on its own (settling, capturing): poll, don't ask.
-bool Busy(const WizardView& v) { return v.screen == WizardScreen::kCapturing && !v.input; }
+bool Busy(const WizardView& v) {
+  return (v.screen == WizardScreen::kCapturing || v.screen == WizardScreen::kRecording) && !v.input;
+}
+
+// Record time between two progress lines of a record, s.
+constexpr double kRecordLineS = 60.0;
 
 Intent ToIntent(const std::string& answer, const WizardView& v) {
   if (answer == "q") return {IntentKind::kQuit, ""};
@@ -46,6 +52,7 @@ class Printer {
       out_ << fmt::format("\n[{}/{}] {}\n", v.step_index, v.step_count, v.step_title);
       prompt_.clear();
       progress_quarter_ = -1;
+      record_minute_ = -1;
     }
     if (v.lines != lines_) {
       lines_ = v.lines;
@@ -62,6 +69,7 @@ class Printer {
 
  private:
   void ShowBusy(const WizardView& v) {
+    if (v.record) return ShowRecord(v, *v.record);
     // The state word and attempt (the prompt up to ':') change rarely; progress by quarters.
     const std::string head = v.prompt.substr(0, v.prompt.find(':'));
     const int quarter = std::isfinite(v.progress) ? static_cast<int>(v.progress * 4.0) : -1;
@@ -70,6 +78,24 @@ class Printer {
     prompt_ = head;
     progress_quarter_ = quarter;
     out_ << "  " << v.prompt << '\n';
+  }
+
+  // A record: its prompt once (resuming or starting), then one line per minute of record time
+  // (a 12-hour record at 100 Hz is 4.3 million samples: never a line per sample or poll).
+  void ShowRecord(const WizardView& v, const RecordView& r) {
+    const std::string head = v.prompt.substr(0, v.prompt.find(';'));
+    if (head != prompt_) {
+      prompt_ = head;
+      out_ << "  " << head << '\n';
+    }
+    const long minute = std::lround(std::floor(r.elapsed_s / kRecordLineS));
+    if (r.samples == 0 || minute <= record_minute_) return;
+    record_minute_ = minute;
+    out_ << fmt::format("  recording {} of {} ({:.0f} %): {} samples, {} chunks, gaps {} ({:.0f} s), "
+                        "movements {}\n",
+                        FormatClock(r.elapsed_s), FormatClock(r.duration_s),
+                        r.duration_s > 0 ? 100.0 * r.elapsed_s / r.duration_s : 0.0, r.samples,
+                        r.chunks, r.gaps, r.gaps_s, r.bumps);
   }
 
   void ShowQuestion(const WizardView& v) {
@@ -95,6 +121,7 @@ class Printer {
   std::string problem_;
   std::vector<std::string> lines_;
   int progress_quarter_ = -1;
+  long record_minute_ = -1;
 };
 
 }  // namespace

@@ -48,6 +48,8 @@ TEST(ProcedureTest, NoiseAndDriftRecordsLoad) {
   const Procedure drift = LoadProcedure(Shipped("drift.toml"));
   EXPECT_DOUBLE_EQ(drift.steps[0].duration_s, 12 * 3600.0);
   EXPECT_GT(drift.steps[0].timeout_s, drift.steps[0].duration_s);
+  EXPECT_DOUBLE_EQ(drift.steps[0].chunk_s, 10.0);
+  EXPECT_DOUBLE_EQ(noise.steps[0].chunk_s, ProcedureStep::kDefaultRecordChunkS);
 }
 
 const char* kHead = "title = \"t\"\n[sensor]\nnominal_scale_counts_per_mps2 = 34.8\n"
@@ -79,6 +81,11 @@ TEST(ProcedureTest, MalformedProceduresAreRefusedWithLineAndReason) {
                     "radial = \"+z\"\nup_axis = \"-z\"\n").rfind("10: step 1.radial", 0), 0u);
   EXPECT_EQ(Refusal(head + "[[step]]\nid = \"a\"\nkind = \"static\"\nduration_s = 20\ntimeout_s = 10\n")
                 .rfind("9: step 1.timeout_s", 0), 0u);
+  EXPECT_EQ(Refusal(head + "[[step]]\nid = \"a\"\nkind = \"record\"\nchunk_s = 0\n")
+                .rfind("8: step 1.chunk_s", 0), 0u);
+  // chunk_s belongs to records only.
+  EXPECT_EQ(Refusal(head + "[[step]]\nid = \"a\"\nkind = \"static\"\nchunk_s = 5\n"),
+            "8: unknown key 'step 1.chunk_s' (misspelt?)");
   EXPECT_NE(Refusal("title = \"t\"\n[[step]]\nid = \"a\"\nkind = \"fit\"\n").find("[sensor]"),
             std::string::npos);
   EXPECT_EQ(Refusal("title = \"t\n").rfind("1: ", 0), 0u);

@@ -69,6 +69,42 @@ TEST(TuiRender, Tiny40x12) {
                Render(accelcal::testing::StaticPoseView(), {}, 40, 12));
 }
 
+TEST(TuiRender, Recording80x24) {
+  ExpectGolden("recording_80x24", Render(accelcal::testing::RecordingView(), {}, 80, 24));
+}
+
+TEST(TuiRender, RecordingWithAllan120x40) {
+  ExpectGolden("recording_allan_120x40",
+               Render(accelcal::testing::RecordingWithAllanView(), {}, 120, 40));
+}
+
+TEST(TuiRender, RecordingSaysWhenTheAllanCurveIsEmpty) {
+  const std::string text = Render(accelcal::testing::RecordingView(), {}, 120, 40).Text();
+  EXPECT_TRUE(Contains(text, "Allan curve: waiting for data")) << text;
+  EXPECT_TRUE(Contains(text, "03:12:05 of 12:00:00")) << text;
+  EXPECT_TRUE(Contains(text, "08:47:55 to go")) << text;  // 43200 - 11525 s
+  EXPECT_TRUE(Contains(text, "gaps 1 (42 s)")) << text;
+  EXPECT_TRUE(Contains(text, "[WARN] moved 1 time")) << text;
+}
+
+TEST(TuiRender, DriftPlotRisesWithTheWarmUp) {
+  // x warms up by 0.8 counts: its trace starts on the plot's lowest row and ends on its top row.
+  const ScreenModel s = Render(accelcal::testing::RecordingView(), {}, 120, 40);
+  int x_top = -1;
+  for (int r = 0; r < s.height(); ++r)
+    if (s.Row(r).rfind("x+", 0) == 0) x_top = r;
+  ASSERT_GE(x_top, 0) << s.Text();
+  const int first_col = 8;  // kPlotLabelWidth
+  const int last_col = first_col + static_cast<int>(11525.0 / 43200.0 * (120 - 8));
+  int first_row = -1, last_row = -1;
+  for (int r = x_top; r < x_top + 6; ++r) {
+    if (s.CharAt(r, first_col) != ' ') first_row = r;
+    if (s.CharAt(r, last_col) != ' ' && s.CharAt(r, last_col) != '|') last_row = r;
+  }
+  EXPECT_EQ(first_row, x_top + 5) << s.Text();
+  EXPECT_EQ(last_row, x_top) << s.Text();
+}
+
 TEST(TuiRender, NaNDrawnAsDashes) {
   const std::string text = Render(accelcal::testing::FailureView(), {}, 80, 24).Text();
   EXPECT_TRUE(Contains(text, "x     --  y     --  z     --")) << text;
@@ -97,7 +133,8 @@ TEST(TuiRender, KeysAndHeaderSurviveEverySize) {
   const WizardView views[] = {
       accelcal::testing::WelcomeView(), accelcal::testing::StaticPoseView(),
       accelcal::testing::CapturingView(), accelcal::testing::FailureView(),
-      accelcal::testing::ReportView(), accelcal::testing::TurntableView()};
+      accelcal::testing::ReportView(), accelcal::testing::TurntableView(),
+      accelcal::testing::RecordingView(), accelcal::testing::RecordingWithAllanView()};
   for (const WizardView& view : views) {
     for (int w = 0; w <= 130; w += 7) {
       for (int h = 0; h <= 45; ++h) {

@@ -96,4 +96,55 @@ inline WizardView TurntableView() {
   return v;
 }
 
+// A 12-hour drift record 3 h 12 min 5 s in, resumed once, one knock seen; the drift has a
+// warm-up on x, a slope on y and a slow wave on z. The Allan curves are empty.
+inline WizardView RecordingView() {
+  WizardView v = BaseView();
+  v.procedure = "Drift record: 12 hours static, z up";
+  v.step_index = 2;
+  v.step_count = 2;
+  v.resumed = true;
+  v.screen = WizardScreen::kRecording;
+  v.step_title = "Static record for the drift analysis";
+  v.prompt = "Resuming the Static record for the drift analysis: 3 h 11 min recorded, gap of 42 s; "
+             "recording 03:12:05 of 12:00:00";
+  v.pose_name = "+z up";
+  v.expected_up = Eigen::Vector3d(0, 0, 1);
+  v.live_counts = Eigen::Vector3d(2051.0, 2040.0, 2401.0);
+  v.live_g = 1.0004;
+  v.progress = 11525.0 / 43200.0;
+  v.stability_text = "moved 1 time (last at 01:02:03, 41 counts on x); the record goes on";
+  v.keys = {{"s", "skip"}, {"b", "back"}, {"q", "save and quit"}};
+  RecordView r;
+  r.elapsed_s = 11525.0;
+  r.duration_s = 43200.0;
+  r.gaps = 1;
+  r.gaps_s = 42.0;
+  r.recorded_s = r.elapsed_s - r.gaps_s;
+  r.samples = 1148300;
+  r.chunks = 1148;
+  r.bumps = 1;
+  r.last_bump = "at 01:02:03, 41 counts on x";
+  r.drift_bin_s = 216.0;
+  for (int i = 0; i * 216.0 < r.elapsed_s; ++i) {
+    const double t = (i + 0.5) * 216.0;
+    r.drift.push_back({t, Eigen::Vector3d(0.8 * (1.0 - std::exp(-t / 3000.0)), -0.3 * t / 11525.0,
+                                          0.2 * std::sin(t / 2000.0))});
+  }
+  v.record = r;
+  return v;
+}
+
+// The same record with Allan curves: white noise (slope -1/2) turning into drift (+1/2).
+inline WizardView RecordingWithAllanView() {
+  WizardView v = RecordingView();
+  for (int axis = 0; axis < 3; ++axis) {
+    for (double tau = 0.01; tau < 2000.0; tau *= 2.0) {
+      const double adev = (1.5 + 0.1 * axis) / std::sqrt(tau * 100.0) + 0.002 * (axis + 1) * std::sqrt(tau);
+      v.record->allan[static_cast<size_t>(axis)].push_back({tau, adev});
+    }
+  }
+  return v;
+}
+
 }  // namespace accelcal::testing

@@ -37,7 +37,7 @@ struct Rig {
                std::shared_ptr<SessionJournal> shared_journal = nullptr)
       : sim(std::move(scenario), sim_options),
         journal(shared_journal ? std::move(shared_journal) : std::shared_ptr<SessionJournal>(MakeMemoryJournal())),
-        engine(std::move(procedure), sim, *journal, WizardOptions{"test", "op", "SN1", {}, 2.0}) {}
+        engine(std::move(procedure), sim, *journal, WizardOptions{"test", "op", "SN1", {}, 2.0, {}}) {}
   SimSource sim;
   std::shared_ptr<SessionJournal> journal;
   WizardEngine engine;

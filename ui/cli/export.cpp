@@ -27,6 +27,9 @@ void RunExport(const ExportCommandOptions& o) {
   CaptureSet set;
   set.source_name = path;
   for (JournalCapture& c : store->Captures()) set.captures.push_back(std::move(c.capture));
+  if (set.captures.empty() && !DescribeRecords(*store).empty())
+    throw Error(fmt::format("session {} has no accepted captures: it holds records ({}), which are "
+                            "not capture sets", path, DescribeRecords(*store)));
   if (set.captures.empty()) throw Error(fmt::format("session {} has no accepted captures yet", path));
   WriteCaptureSetFile(o.output_path, set);
   std::cout << fmt::format("{} captures of session {} written to {}\n", set.captures.size(), path,

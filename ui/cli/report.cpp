@@ -48,6 +48,9 @@ void RunReport(const ReportCommandOptions& o) {
   const std::unique_ptr<SessionStore> store = SessionStore::Open(path, read_only);
   const SessionInfo info = store->Info();
   const std::optional<nlohmann::json> result = store->Result();
+  if (!result && !DescribeRecords(*store).empty())
+    throw Error(fmt::format("session {} has no calibration: it holds records ({}), which another "
+                            "command analyses", path, DescribeRecords(*store)));
   if (!result)
     throw Error(fmt::format("session {} has no calibration yet: {} captures accepted; run the "
                             "wizard to finish it", path, info.num_captures));

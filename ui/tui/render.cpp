@@ -38,10 +38,16 @@ void Shrink(std::vector<Block>& blocks, int rows) {
 }
 
 // The middle blocks in screen order. The text lines are not among them: they take what is left.
+// A record's panel takes `record_rows` (what the other blocks leave).
 std::vector<Block> MiddleBlocks(const WizardView& view, const RenderState& state, int width,
-                                bool with_drawing) {
-  std::vector<Line> panel = with_drawing ? PanelWithDrawing(view) : std::vector<Line>{};
-  if (panel.empty()) panel = ReadingBlock(view);
+                                bool with_drawing, int record_rows) {
+  std::vector<Line> panel;
+  if (view.record) {
+    panel = RecordBlock(view, width, record_rows);
+  } else {
+    if (with_drawing) panel = PanelWithDrawing(view);
+    if (panel.empty()) panel = ReadingBlock(view);
+  }
   return {
       {7, TitleBlock(view, width)},
       {5, PromptBlock(view, width)},
@@ -78,11 +84,15 @@ ScreenModel Render(const WizardView& view, const RenderState& state, int width, 
   if (height == 1) return screen;
   const int middle_rows = height - 2;  // between the header and the keys
 
+  // A record's panel takes the rows the other blocks leave.
+  std::vector<Block> others = MiddleBlocks(view, state, width, false, 0);
+  others.push_back({3, StatusBlock(view)});
+  const int record_rows = middle_rows - Rows(others);
   // The drawing only when it fits beside the reading and leaves the rest whole.
-  std::vector<Block> blocks = MiddleBlocks(view, state, width, width >= 60);
+  std::vector<Block> blocks = MiddleBlocks(view, state, width, width >= 60, record_rows);
   blocks.push_back({3, StatusBlock(view)});
   if (Rows(blocks) > middle_rows) {
-    blocks = MiddleBlocks(view, state, width, false);
+    blocks = MiddleBlocks(view, state, width, false, record_rows);
     blocks.push_back({3, StatusBlock(view)});
   }
   Shrink(blocks, middle_rows);

@@ -5,8 +5,10 @@
 
 #include <fmt/core.h>
 
+#include "accelcal/wizard/duration_text.h"
 #include "tui/gauge.h"
 #include "tui/prism_drawing.h"
+#include "tui/record_plot.h"
 #include "tui/text_util.h"
 
 namespace accelcal::ui {
@@ -125,6 +127,49 @@ std::vector<Line> PanelWithDrawing(const WizardView& view) {
     rows.push_back(std::move(line));
   }
   return rows;
+}
+
+std::vector<Line> RecordBlock(const WizardView& view, int width, int rows) {
+  if (!view.record || rows <= 0) return {};
+  const RecordView& r = *view.record;
+  std::vector<Line> out;
+  const double p = r.duration_s > 0.0 ? std::clamp(r.elapsed_s / r.duration_s, 0.0, 1.0) : kNaN;
+  out.push_back(Labelled("elapsed", Clip(fmt::format("{} of {} {} {} %, {} to go",
+                                                     FormatClock(r.elapsed_s), FormatClock(r.duration_s),
+                                                     Bar(std::min(p, 0.999), kBarCells),
+                                                     FormatNumber(p * 100.0, 0, 3),
+                                                     FormatClock(r.duration_s - r.elapsed_s)),
+                                         std::max(width - kLabelWidth, 1)),
+                         Role::kPrompt));
+  out.push_back(Labelled("recorded",
+                         Clip(fmt::format("{} in {} chunks, {} samples; gaps {} ({})",
+                                          FormatLongDuration(r.recorded_s), r.chunks, r.samples,
+                                          r.gaps, FormatLongDuration(r.gaps_s)),
+                              std::max(width - kLabelWidth, 1))));
+  out.push_back(r.bumps == 0
+                    ? Labelled("movement", "[ OK ] none", Role::kPass)
+                    : Labelled("movement", Clip("[WARN] " + Asciify(view.stability_text),
+                                                std::max(width - kLabelWidth, 1)),
+                               Role::kWarn));
+  const Eigen::Vector3d& c = view.live_counts;
+  out.push_back(Labelled("counts", fmt::format("x {}  y {}  z {}", FormatNumber(c.x(), 0, 6),
+                                               FormatNumber(c.y(), 0, 6), FormatNumber(c.z(), 0, 6))));
+  const bool allan_data = std::any_of(r.allan.begin(), r.allan.end(),
+                                      [](const std::vector<AllanPoint>& a) { return !a.empty(); });
+  const int allan_rows = allan_data ? std::clamp(rows / 4, 3, 9) : 1;
+  const int fixed = static_cast<int>(out.size()) + 1 + allan_rows;  // + the drift heading
+  const int per_axis = std::clamp((rows - fixed) / 3, 0, 6);
+  if (per_axis > 0) {
+    out.push_back({{Clip(fmt::format("drift, counts vs the first minute ({} per point):",
+                                     FormatLongDuration(r.drift_bin_s)),
+                         width),
+                    Role::kDim}});
+    for (int axis = 0; axis < 3; ++axis)
+      for (const std::string& row : DriftPlot(r, axis, width, per_axis)) out.push_back({{row}});
+  }
+  for (const std::string& row : AllanPlot(r, width, allan_rows))
+    out.push_back({{Clip(row, width), allan_data ? Role::kNormal : Role::kDim}});
+  return out;
 }
 
 std::vector<Line> ProblemBlock(const WizardView& view, int width) {

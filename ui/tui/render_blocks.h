@@ -16,6 +16,10 @@ std::vector<Line> PromptBlock(const WizardView& view, int width);
 std::vector<Line> ReadingBlock(const WizardView& view);
 // The reading rows beside the pose drawing; empty when there is no drawing.
 std::vector<Line> PanelWithDrawing(const WizardView& view);
+// A running record in `rows` rows: elapsed of duration with a gauge, what is recorded (chunks,
+// samples, gaps), movements, the live reading, the drift plot per axis (as tall as the rows
+// allow, up to 6 rows an axis; left out below 3) and the Allan curve panel.
+std::vector<Line> RecordBlock(const WizardView& view, int width, int rows);
 std::vector<Line> ProblemBlock(const WizardView& view, int width);
 std::vector<Line> InputBlock(const WizardView& view, const RenderState& state, int width);
 std::vector<Line> StatusBlock(const WizardView& view);

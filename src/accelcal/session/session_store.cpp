@@ -6,6 +6,7 @@
 
 #include "accelcal/error.h"
 #include "accelcal/session/detail/capture_rows.h"
+#include "accelcal/session/detail/record_rows.h"
 #include "accelcal/session/detail/session_lock.h"
 #include "accelcal/session/detail/session_schema.h"
 #include "accelcal/session/detail/sqlite_db.h"
@@ -77,7 +78,10 @@ std::unique_ptr<SessionStore> SessionStore::Open(const std::string& path,
     detail::CreateSessionSchema(*db, StemOf(path), options.procedure, options.source);
   } else {
     detail::CheckSessionSchema(*db);
-    if (!options.read_only) ConfigureWriter(*db);
+    if (!options.read_only) {
+      ConfigureWriter(*db);
+      detail::MigrateSessionSchema(*db);
+    }
   }
   return std::unique_ptr<SessionStore>(
       new SessionStore(path, std::move(lock), std::move(db), options.read_only));
@@ -145,6 +149,26 @@ void SessionStore::RecordResult(const nlohmann::json& calibration) {
   TouchSession(*db_, now);
   transaction.Commit();
 }
+
+void SessionStore::AppendRecordChunk(const std::string& step_id, const RecordChunk& chunk) {
+  RequireWritable();
+  const std::string now = detail::UtcNowIso8601();
+  SqliteTransaction transaction(*db_);
+  detail::InsertRecordChunk(*db_, step_id, chunk, now);
+  TouchSession(*db_, now);
+  transaction.Commit();
+}
+
+RecordSummary SessionStore::RecordSummaryOf(const std::string& step_id) const {
+  return detail::ReadRecordSummary(*db_, step_id);
+}
+
+void SessionStore::VisitRecordChunks(const std::string& step_id,
+                                     const std::function<void(const RecordChunk&)>& visit) const {
+  detail::VisitRecordRows(*db_, step_id, visit);
+}
+
+std::vector<std::string> SessionStore::RecordSteps() const { return detail::ReadRecordSteps(*db_); }
 
 void SessionStore::MarkDone() {
   RequireWritable();

@@ -70,7 +70,8 @@ class SessionStore final : public SessionJournal {
  public:
   // Opens (or creates) the session at `path`. Throws accelcal::Error: another accelcal holds it
   // ("session PATH is open in another accelcal (pid N)"), it is missing (read-only or
-  // !create_if_missing), not an accelcal session, or of a newer schema version.
+  // !create_if_missing), not an accelcal session, or of a newer schema version. A read-write
+// open migrates an older schema (detail/session_schema.h); a read-only one reads it as it is.
   static std::unique_ptr<SessionStore> Open(const std::string& path, const SessionOpenOptions& options);
   ~SessionStore() override;
 
@@ -79,11 +80,16 @@ class SessionStore final : public SessionJournal {
   void RecordCapture(const std::string& step_id, const Capture& capture) override;
   void RecordStepDone(const std::string& step_id, const std::string& outcome) override;
   void RecordResult(const nlohmann::json& calibration) override;
+  void AppendRecordChunk(const std::string& step_id, const RecordChunk& chunk) override;
 
   std::vector<JournalCapture> Captures() const override;
   std::map<std::string, std::map<std::string, std::string>> Inputs() const override;
   std::map<std::string, std::string> DoneSteps() const override;
   std::optional<nlohmann::json> Result() const override;
+  RecordSummary RecordSummaryOf(const std::string& step_id) const override;
+  void VisitRecordChunks(const std::string& step_id,
+                         const std::function<void(const RecordChunk&)>& visit) const override;
+  std::vector<std::string> RecordSteps() const override;
 
   SessionInfo Info() const;
   // The session is finished (state 'done'); one transaction.

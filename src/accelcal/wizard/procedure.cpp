@@ -110,9 +110,13 @@ ProcedureStep ReadStep(TomlTableReader& r, const CaptureDefaults& d) {
       s.timeout_s = r.Number("timeout_s", d.timeout_s, NumberRange::kPositive);
       break;
     case StepKind::kStatic:
+      ReadPose(r, s);
+      ReadDurations(r, s, d);
+      break;
     case StepKind::kRecord:
       ReadPose(r, s);
       ReadDurations(r, s, d);
+      s.chunk_s = r.Number("chunk_s", ProcedureStep::kDefaultRecordChunkS, NumberRange::kPositive);
       break;
     case StepKind::kTurntable:
       ReadTurntable(r, s);

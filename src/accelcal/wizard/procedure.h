@@ -22,7 +22,7 @@ enum class StepKind {
   kLevel,      // level the table (reversal method)
   kStatic,     // a static pose on the prism
   kTurntable,  // a turntable run
-  kRecord,     // a long static record (noise, drift): a static capture of its own duration
+  kRecord,     // a long static record (noise, drift), streamed to the journal in chunks
   kFit,        // the nine-parameter fit over the accepted captures
   kDiagnosis,  // the diagnosis; asks before adopting an effect
   kReport,     // the calibration report; the session's result is recorded
@@ -47,6 +47,11 @@ struct ProcedureStep {
   double duration_s = 10.0;  // capture length, s
   double timeout_s = 60.0;   // give up after this long without an accepted capture, s
   double tolerance_deg = 1.5;  // kLevel: largest accepted tilt per axis, deg
+  // kRecord: the record is committed in chunks of this much of its time, s (an interruption
+  // loses at most one chunk).
+  double chunk_s = kDefaultRecordChunkS;
+
+  static constexpr double kDefaultRecordChunkS = 10.0;
 };
 
 struct Procedure {

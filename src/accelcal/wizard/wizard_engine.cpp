@@ -20,6 +20,9 @@ namespace accelcal {
 namespace {
 
 constexpr const char* kWelcomeId = "welcome";
+// A fresh record starts this long after the sensor is placed (the hand letting go; the
+// simulator's placement moves for 1.5 s), s.
+constexpr double kRecordSettleS = 2.0;
 
 std::vector<std::string> SplitLines(const std::string& text) {
   std::vector<std::string> out;
@@ -86,6 +89,13 @@ void WizardEngine::ReadJournal() {
   for (const JournalCapture& c : captures)
     resume_lines_.push_back(fmt::format("  done: {} (capture {}, {})", c.step_id, c.capture.id, c.capture.label));
   for (const auto& [id, outcome] : done) resume_lines_.push_back(fmt::format("  done: {} ({})", id, outcome));
+  for (const std::string& id : journal_.RecordSteps()) {
+    if (done.count(id) != 0) continue;
+    const RecordSummary r = journal_.RecordSummaryOf(id);
+    resume_lines_.push_back(fmt::format("  partly recorded: {} ({} recorded over {}, {} chunks)", id,
+                                        FormatLongDuration(r.recorded_s()),
+                                        FormatLongDuration(r.span_s()), r.num_chunks));
+  }
   if (done.count(kWelcomeId) != 0) AdvanceFrom(0);
 }
 
@@ -100,6 +110,7 @@ void WizardEngine::AdvanceFrom(int index) {
 void WizardEngine::EnterStep(int index) {
   current_ = index;
   engine_.reset();
+  record_.reset();
   problem_.clear();
   hint_.clear();
   input_error_.clear();
@@ -125,6 +136,7 @@ void WizardEngine::EnterStep(int index) {
 
 void WizardEngine::EnterPlace() {
   engine_.reset();
+  StopRecord();
   if (!noise_floor_ && NeedsSensor(step().kind)) {
     quiet_ = CaptureStats();
     phase_ = Phase::kQuiet;
@@ -146,6 +158,7 @@ void WizardEngine::SkipStep() {
     return;
   }
   if (source_.bench() != nullptr && kind == StepKind::kTurntable) source_.bench()->StopTurntable();
+  StopRecord();
   FinishStep("skipped");
 }
 
@@ -156,7 +169,8 @@ void WizardEngine::GoBack() {
     phase_ = Phase::kRadius;
     return;
   }
-  if (phase_ == Phase::kCapture || phase_ == Phase::kProblem || phase_ == Phase::kLevelTurn) {
+  if (phase_ == Phase::kCapture || phase_ == Phase::kRecord || phase_ == Phase::kProblem ||
+      phase_ == Phase::kLevelTurn) {
     if (step().kind == StepKind::kTurntable) {
       phase_ = Phase::kRpm;
       engine_.reset();
@@ -166,20 +180,25 @@ void WizardEngine::GoBack() {
     return;
   }
   const std::vector<JournalCapture> captures = journal_.Captures();
+  const std::map<std::string, std::string> done = journal_.DoneSteps();
   for (int i = current_ - 1; i >= 0; --i) {
     const ProcedureStep& s = procedure_.steps[static_cast<size_t>(i)];
     const bool has_capture = std::any_of(captures.begin(), captures.end(),
                                          [&](const JournalCapture& c) { return c.step_id == s.id; });
-    if (IsCaptureStep(s.kind) && !has_capture) {
+    // A record that ran to its end is kept like an accepted capture.
+    const auto d = done.find(s.id);
+    const bool recorded = s.kind == StepKind::kRecord && d != done.end() && d->second != "skipped";
+    if (IsCaptureStep(s.kind) && !has_capture && !recorded) {
       EnterStep(i);
       return;
     }
   }
-  problem_ = "nothing to go back to: every earlier capture is recorded and is kept";
+  problem_ = "nothing to go back to: every earlier capture and record is recorded and is kept";
 }
 
 void WizardEngine::Quit() {
   engine_.reset();
+  StopRecord();
   quit_ = true;
   phase_ = Phase::kDone;
 }
@@ -242,10 +261,59 @@ void WizardEngine::StartCaptureEngine() {
   phase_ = Phase::kCapture;
 }
 
-// The operator says the sensor is in place (on the sim, this places it).
+// The operator says the sensor is in place (on the sim, this places it). A record resumed
+// after an interruption assumes the sensor was left where it was: it is not placed again.
 void WizardEngine::BeginCapture() {
+  if (step().kind == StepKind::kRecord) {
+    if (!RecordResumable()) PlaceOnBench();
+    StartRecord();
+    return;
+  }
   PlaceOnBench();
   StartCaptureEngine();
+}
+
+// ---- records --------------------------------------------------------------------------------
+
+bool WizardEngine::RecordResumable() const {
+  return journal_.RecordSummaryOf(step().id).num_chunks > 0;
+}
+
+void WizardEngine::StartRecord() {
+  const ProcedureStep& s = step();
+  record_settle_until_s_ = kNaN;
+  record_settling_ = !RecordResumable();  // a fresh placement: let the hand go first
+  RecordStreamOptions o;
+  o.duration_s = s.duration_s;
+  o.chunk_s = s.chunk_s;
+  o.noise_std_counts = noise_floor_->std_counts;
+  o.wall_now_s = options_.wall_now_s;
+  record_ = std::make_unique<RecordStream>(journal_, s.id, o);
+  problem_.clear();
+  hint_.clear();
+  phase_ = Phase::kRecord;
+  // Killed after the last chunk but before the step was marked done: nothing left to record.
+  if (record_->complete()) FinishStep(record_->Outcome());
+}
+
+void WizardEngine::FeedRecord(const std::vector<Sample>& chunk) {
+  std::vector<Sample> samples = chunk;
+  if (record_settling_) {
+    // The record starts kRecordSettleS after the first sample following the placement.
+    if (std::isnan(record_settle_until_s_)) record_settle_until_s_ = chunk.front().t_s + kRecordSettleS;
+    std::erase_if(samples, [&](const Sample& x) { return x.t_s < record_settle_until_s_; });
+    if (samples.empty()) return;
+    record_settling_ = false;
+  }
+  record_->Feed(samples);
+  if (record_->complete()) FinishStep(record_->Outcome());
+}
+
+// Leaving a running record (q, b, s, the source ended): the chunk being filled is committed, so
+// only an unclean end loses it.
+void WizardEngine::StopRecord() {
+  if (record_ && !record_->complete()) record_->Flush();
+  record_.reset();
 }
 
 void WizardEngine::FeedQuiet(const std::vector<Sample>& chunk) {
@@ -397,9 +465,11 @@ void WizardEngine::Poll(double timeout_s) {
   source_.Read(timeout_s, &chunk);
   UpdateLive(chunk);
   if (chunk.empty()) {
-    if (source_.status().link == LinkState::kEnded && (phase_ == Phase::kCapture || phase_ == Phase::kQuiet)) {
+    if (source_.status().link == LinkState::kEnded &&
+        (phase_ == Phase::kCapture || phase_ == Phase::kQuiet || phase_ == Phase::kRecord)) {
       // Nothing more will come (a recording replayed to its end): say so instead of waiting.
       engine_.reset();
+      StopRecord();
       problem_ = "the source has ended: no more samples from " + source_.Describe();
       hint_ = "q leaves; everything accepted is in the session";
       phase_ = Phase::kProblem;
@@ -408,6 +478,7 @@ void WizardEngine::Poll(double timeout_s) {
   }
   if (phase_ == Phase::kQuiet) FeedQuiet(chunk);
   else if (phase_ == Phase::kCapture && engine_) FeedCapture(chunk);
+  else if (phase_ == Phase::kRecord && record_) FeedRecord(chunk);
 }
 
 // ---- intents --------------------------------------------------------------------------------
@@ -521,6 +592,7 @@ void WizardEngine::HandleCaptureIntent(const Intent& intent) {
     case Phase::kCapture:
       if (intent.kind == IntentKind::kRetry) BeginCapture();
       return;
+    case Phase::kRecord: return;  // a record runs to its end (s, b and q aside)
     case Phase::kLevelResult:
       if (intent.kind == IntentKind::kRetry || (accept && !level_ok_)) return EnterPlace();
       if (accept) {

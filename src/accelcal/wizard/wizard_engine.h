@@ -7,6 +7,12 @@
 // face refused), turntable runs (radius and rpm asked, checked against the range), fit,
 // diagnosis (asks before adopting), report (the calibration JSON is the journal's result).
 //
+// Records (kind "record": the noise and drift records) are streamed to the journal in chunks
+// by RecordStream (record_stream.h): never refused for drift, a movement is shown and the
+// record goes on; q commits the chunk being filled. An interrupted record resumes where it
+// stopped (without placing the sensor again) and its gap is recorded; the step is done
+// (RecordStepDone with the recorded and gap times) when its duration is covered.
+//
 // Journal contract: an accepted capture is recorded (RecordCapture) before the wizard moves on,
 // inputs with RecordInput, finished steps without a capture with RecordStepDone, so quitting or
 // dying at any moment loses only the capture in progress. On construction the journal is read:
@@ -15,6 +21,7 @@
 // Time comes from the samples' t (the simulator may run faster than real time).
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -26,6 +33,7 @@
 #include "accelcal/gravity.h"
 #include "accelcal/source/sample_source.h"
 #include "accelcal/wizard/procedure.h"
+#include "accelcal/wizard/record_stream.h"
 #include "accelcal/wizard/session_journal.h"
 #include "accelcal/wizard/wizard_driver.h"
 
@@ -39,6 +47,9 @@ struct WizardOptions {
   // Before the first capture of a run the sensor rests this long to measure the noise floor,
   // s; > 0.
   double quiet_period_s = 2.0;
+  // The computer's clock for record gaps, s since the Unix epoch; empty = the system clock
+  // (tests give their own).
+  std::function<double()> wall_now_s;
 
   std::string Validate() const;
 };
@@ -63,6 +74,7 @@ class WizardEngine final : public WizardDriver {
     kQuiet,        // measuring the noise floor
     kPlace,        // asking to place the prism / mount the turntable
     kCapture,      // the capture engine runs
+    kRecord,       // a record step streams to the journal
     kProblem,      // a capture was rejected or timed out
     kLevelTurn,    // leveling: turn the prism 180 deg
     kLevelResult,  // leveling: the tilt, level or not
@@ -85,6 +97,10 @@ class WizardEngine final : public WizardDriver {
   CaptureContext MakeContext() const;
   void FeedQuiet(const std::vector<Sample>& chunk);
   void FeedCapture(const std::vector<Sample>& chunk);
+  void StartRecord();
+  void FeedRecord(const std::vector<Sample>& chunk);
+  void StopRecord();
+  bool RecordResumable() const;
   void OnCaptureAccepted();
   void OnLevelCapture(const Eigen::Vector3d& mean_counts);
   void FinishStep(const std::string& outcome);
@@ -111,6 +127,7 @@ class WizardEngine final : public WizardDriver {
   void SetResultView(WizardView& v) const;
   void SetDoneView(WizardView& v) const;
   void SetCaptureView(WizardView& v) const;
+  void SetRecordView(WizardView& v) const;
 
   Procedure procedure_;
   SampleSource& source_;    // borrowed: outlives the engine
@@ -130,6 +147,9 @@ class WizardEngine final : public WizardDriver {
   bool quit_ = false;
 
   std::unique_ptr<CaptureEngine> engine_;
+  std::unique_ptr<RecordStream> record_;  // phase kRecord
+  bool record_settling_ = false;          // a fresh record waits for the hand to let go
+  double record_settle_until_s_ = kNaN;   // source t at which it starts, s
   std::optional<NoiseFloor> noise_floor_;
   CaptureStats quiet_;
   std::vector<CapturedPose> captured_;

@@ -86,6 +86,8 @@ void WizardEngine::SetPhaseView(WizardView& v) const {
     case Phase::kCapture:
     case Phase::kProblem:
       return SetCaptureView(v);
+    case Phase::kRecord:
+      return SetRecordView(v);
     case Phase::kResult:
       return SetResultView(v);
     case Phase::kDone:
@@ -118,8 +120,20 @@ void WizardEngine::SetPlaceView(WizardView& v) const {
   v.screen = step().kind == StepKind::kTurntable ? WizardScreen::kMountTurntable
              : step().kind == StepKind::kLevel   ? WizardScreen::kLevel
                                                  : WizardScreen::kPlacePose;
+  if (step().kind == StepKind::kRecord && RecordResumable()) {
+    const RecordSummary r = journal_.RecordSummaryOf(step().id);
+    v.prompt = fmt::format("Resuming the {}: {} recorded of {}. Leave the sensor as it is and "
+                           "press Enter to go on recording (the gap is recorded).",
+                           step().title, FormatLongDuration(r.recorded_s()),
+                           FormatLongDuration(step().duration_s));
+    v.keys = WithNavigation({{"Enter", "resume"}});
+    return;
+  }
   v.prompt =
-      step().kind == StepKind::kTurntable
+      step().kind == StepKind::kRecord
+          ? fmt::format("Put the prism on the table with {} and let go; press Enter to start the "
+                        "{} record.", step().pose_name, FormatLongDuration(step().duration_s))
+      : step().kind == StepKind::kTurntable
           ? fmt::format(
                 "Mount the sensor on the turntable with {} at {:g} mm from the axis and run "
                 "it at {:g} rpm; press Enter when it turns steadily.",
@@ -193,6 +207,30 @@ void WizardEngine::SetDoneView(WizardView& v) const {
   } else {
     v.prompt = calibrates ? "Calibration complete." : "Procedure complete: every step is recorded.";
   }
+}
+
+void WizardEngine::SetRecordView(WizardView& v) const {
+  v.screen = WizardScreen::kRecording;
+  v.keys = {{"s", "skip"}, {"b", "back"}, {"q", "save and quit"}};
+  const RecordView r = record_->View();
+  v.progress = std::clamp(r.elapsed_s / r.duration_s, 0.0, 1.0);
+  const std::string clock = fmt::format("{} of {}", FormatClock(r.elapsed_s), FormatClock(r.duration_s));
+  if (record_settling_) {
+    v.prompt = fmt::format("Recording the {} with {}; letting the sensor settle", step().title,
+                           step().pose_name);
+  } else if (record_->resuming()) {
+    const std::string gap = r.gaps > record_->resumed_from().num_gaps
+                                ? fmt::format("gap of {:.0f} s", r.gaps_s - record_->resumed_from().gaps_s)
+                                : "waiting for the first sample";
+    v.prompt = fmt::format("Resuming the {}: {} recorded, {}; recording {}", step().title,
+                           FormatLongDuration(record_->resumed_from().recorded_s()), gap, clock);
+  } else {
+    v.prompt = fmt::format("Recording the {} with {}; {}", step().title, step().pose_name, clock);
+  }
+  v.stability_text = r.bumps == 0 ? "still"
+                                  : fmt::format("moved {} time{} (last {}); the record goes on",
+                                                r.bumps, r.bumps == 1 ? "" : "s", r.last_bump);
+  v.record = r;
 }
 
 void WizardEngine::SetCaptureView(WizardView& v) const {

@@ -10,6 +10,7 @@ std::string_view WizardScreenToString(WizardScreen screen) {
     case WizardScreen::kMountTurntable: return "mount_turntable";
     case WizardScreen::kInput: return "input";
     case WizardScreen::kCapturing: return "capturing";
+    case WizardScreen::kRecording: return "recording";
     case WizardScreen::kFit: return "fit";
     case WizardScreen::kDiagnosis: return "diagnosis";
     case WizardScreen::kReport: return "report";

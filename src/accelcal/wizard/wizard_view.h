@@ -7,6 +7,7 @@
 // fit), progress and stability as fractions.
 #pragma once
 
+#include <array>
 #include <optional>
 #include <string>
 #include <vector>
@@ -25,6 +26,7 @@ enum class WizardScreen {
   kMountTurntable,  // mount on the turntable; radius and rpm asked
   kInput,           // a value is asked (radius, rpm, operator, ...)
   kCapturing,       // a capture is running (progress, stability)
+  kRecording,       // a record step runs (elapsed, drift plot, Allan curve)
   kFit,             // the fit's result
   kDiagnosis,       // the diagnosis: effects proposed, asks before adopting
   kReport,          // the printed calibration report
@@ -48,6 +50,41 @@ struct InputRequest {
   std::string error;         // why the last answer was refused; empty when none
 };
 
+// One point of the drift plot: the mean of each axis over one bin of the record, minus the
+// mean of the record's first minute, counts.
+struct DriftPoint {
+  double t_s = 0.0;  // middle of the bin, from the record's first sample, s
+  Eigen::Vector3d drift_counts = Eigen::Vector3d::Zero();
+};
+
+// One point of an Allan deviation curve.
+struct AllanPoint {
+  double tau_s = 0.0;        // averaging time, s
+  double adev_counts = 0.0;  // Allan deviation, counts
+};
+
+// A record step (noise, drift) while it runs: time on the record's clock (gaps included).
+struct RecordView {
+  double elapsed_s = 0.0;     // from the first sample to the latest, gaps included, s
+  double duration_s = 0.0;    // what the step records, s
+  double recorded_s = 0.0;    // elapsed_s minus the gaps, s
+  long samples = 0;           // recorded so far (committed and in the chunk being filled)
+  long chunks = 0;            // committed chunks
+  long gaps = 0;
+  double gaps_s = 0.0;        // total length of the gaps, s
+  long bumps = 0;             // movements seen (a reading far from the running mean)
+  std::string last_bump;      // "at 03:12:05, 41 counts on x"; empty when none
+  double drift_bin_s = 0.0;   // width of the drift plot's bins, s
+  std::vector<DriftPoint> drift;  // in time order; bins without samples (gaps) are absent
+  // The Allan deviation so far, per axis (x, y, z), tau increasing. Filled by RecordStream
+  // (record_stream.h) from one streaming AllanAccumulator per axis
+  // (src/accelcal/analysis/allan_deviation.h, written alongside this by another change): the
+  // accumulators take each recorded sample in RecordStream::Accumulate and the missing samples
+  // of a resumed gap, and View() copies their Curve() here. Until that is wired the curves stay
+  // empty and front ends say they are waiting for data.
+  std::array<std::vector<AllanPoint>, 3> allan;
+};
+
 struct WizardView {
   std::string session;        // session name or file
   std::string procedure;      // procedure title
@@ -69,6 +106,7 @@ struct WizardView {
   double stability = kNaN;        // 0 = still ... >= 1 = beyond the limit (worst axis)
   std::string stability_text;     // "still", "moving: x std 4.1 counts, limit 2.5"
   double progress = kNaN;         // 0..1 during a capture
+  std::optional<RecordView> record;  // a record step is running (screen kRecording)
 
   std::string problem;            // what failed, in words; empty when nothing did
   std::string hint;               // what to do about it

@@ -34,6 +34,19 @@ CREATE TABLE results (seq INTEGER PRIMARY KEY AUTOINCREMENT, calibration_json TE
   recorded_utc TEXT NOT NULL);
 )sql";
 
+// Added in version 2: the chunks and gaps of record steps.
+constexpr const char* kRecordTables = R"sql(
+CREATE TABLE record_chunks (
+  step_id TEXT NOT NULL, chunk_index INTEGER NOT NULL CHECK (chunk_index >= 0),
+  n INTEGER NOT NULL CHECK (n > 0), t_first_s REAL NOT NULL, t_last_s REAL NOT NULL,
+  wall_end_s REAL NOT NULL, samples BLOB NOT NULL, recorded_utc TEXT NOT NULL,
+  PRIMARY KEY (step_id, chunk_index));
+CREATE TABLE record_gaps (
+  step_id TEXT NOT NULL, before_chunk INTEGER NOT NULL, t_start_s REAL NOT NULL,
+  t_end_s REAL NOT NULL, reason TEXT NOT NULL, recorded_utc TEXT NOT NULL,
+  PRIMARY KEY (step_id, before_chunk));
+)sql";
+
 }  // namespace
 
 bool IsEmptyDatabase(SqliteDb& db) {
@@ -49,6 +62,7 @@ void CreateSessionSchema(SqliteDb& db, const std::string& name, const std::strin
                          const std::string& source) {
   SqliteTransaction transaction(db);
   db.Exec(kTables);
+  db.Exec(kRecordTables);
   const std::string now = UtcNowIso8601();
   SqliteStatement insert(db,
                          "INSERT INTO session (id, name, procedure, source, created_utc, "
@@ -71,6 +85,21 @@ void CheckSessionSchema(SqliteDb& db) {
                             "({}): use a newer accelcal", db.path(), version, kSessionSchemaVersion));
   if (version < 1)
     throw Error(fmt::format("session {} has an unknown schema version {}", db.path(), version));
+}
+
+bool HasTable(SqliteDb& db, const std::string& name) {
+  SqliteStatement query(db, "SELECT 1 FROM sqlite_schema WHERE type = 'table' AND name = ?");
+  query.Bind(1, name);
+  return query.Step();
+}
+
+void MigrateSessionSchema(SqliteDb& db) {
+  SqliteTransaction transaction(db);
+  const std::int64_t version = db.QueryInt("PRAGMA user_version");
+  if (version >= kSessionSchemaVersion) return;  // rolled back: nothing was written
+  if (version < 2 && !HasTable(db, "record_chunks")) db.Exec(kRecordTables);
+  db.Exec(fmt::format("PRAGMA user_version = {}", kSessionSchemaVersion));
+  transaction.Commit();
 }
 
 }  // namespace accelcal::detail

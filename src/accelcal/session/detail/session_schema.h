@@ -10,6 +10,15 @@
 //   inputs     (step_id, key) PRIMARY KEY, value, recorded_utc
 //   steps_done step_id PRIMARY KEY, outcome, recorded_utc
 //   results    seq, calibration_json (the calibration file's JSON text), recorded_utc
+//   record_chunks  (step_id, chunk_index) PRIMARY KEY, n, t_first_s, t_last_s, wall_end_s,
+//              samples (BLOB, see sample_blob.h), recorded_utc: a record step's samples, one
+//              row per chunk (version 2)
+//   record_gaps    (step_id, before_chunk) PRIMARY KEY, t_start_s, t_end_s, reason,
+//              recorded_utc: the hole just before chunk `before_chunk` (version 2)
+//
+// Version 1 (no record tables) is migrated by the first read-write open: the two tables are
+// created and user_version set to 2 in one transaction. A read-only open of a version-1 file
+// reads it as it is (no records).
 //
 // NaN (no radius, no temperature) is stored as NULL. Times are UTC ISO 8601 text.
 #pragma once
@@ -20,7 +29,7 @@
 
 namespace accelcal::detail {
 
-inline constexpr int kSessionSchemaVersion = 1;
+inline constexpr int kSessionSchemaVersion = 2;
 inline constexpr int kSessionApplicationId = 0x41434331;  // "ACC1"
 
 // Creates the tables and the session row in a new, empty database (one transaction).
@@ -31,5 +40,10 @@ bool IsEmptyDatabase(SqliteDb& db);
 // Throws accelcal::Error when the file is not an accelcal session or has a schema version this
 // build does not know ("written by a newer accelcal").
 void CheckSessionSchema(SqliteDb& db);
+// Brings a session of an older known version up to kSessionSchemaVersion (read-write opens;
+// one transaction; nothing to do when it is current).
+void MigrateSessionSchema(SqliteDb& db);
+// True when the database has the table `name` (a version-1 file has no record tables).
+bool HasTable(SqliteDb& db, const std::string& name);
 
 }  // namespace accelcal::detail
