@@ -77,7 +77,20 @@ void MakeNoiseSession(const std::string& path, const std::string& procedure_path
     auto store = SessionStore::Open(path, options);
     store->RecordInput(kSessionStep, kDeviceKey, serial);
     store->RecordInput(kSessionStep, kOperatorKey, "e2e");
-    store->RecordCapture(record->id, captures[0]);
+    // As the wizard keeps a record step: chunks of the step's chunk_s (record_stream.h).
+    long index = 0;
+    RecordChunk chunk;
+    for (const Sample& sample : captures[0].samples) {
+      if (!chunk.samples.empty() && sample.t_s - chunk.samples.front().t_s >= record->chunk_s) {
+        chunk.index = index++;
+        store->AppendRecordChunk(record->id, chunk);
+        chunk.samples.clear();
+      }
+      chunk.samples.push_back(sample);
+    }
+    chunk.index = index;
+    store->AppendRecordChunk(record->id, chunk);
+    store->RecordStepDone(record->id, "recorded");
     store->MarkDone();
   }
   // Backdate: the store stamps the current time; the analysis groups records by day.

@@ -239,7 +239,7 @@ TEST_F(NoiseSessionsTest, FindsTheDevicesRecordsSortedByCreation) {
   EXPECT_EQ(set.records[1].date, "2026-03-03");
   EXPECT_EQ(set.records[0].samples.size(), r.samples.size());
   ASSERT_EQ(set.notes.size(), 1u);
-  EXPECT_TRUE(testing::Contains(set.notes[0], "session b has no accepted record")) << set.notes[0];
+  EXPECT_TRUE(testing::Contains(set.notes[0], "session b has no record yet")) << set.notes[0];
 
   try {
     NoiseRecordsOfDevice(dir_.string(), "SN-9", procedure_);

@@ -41,11 +41,18 @@ TEST(ProcedureTest, SeedCalibrationLoads) {
 
 TEST(ProcedureTest, NoiseAndDriftRecordsLoad) {
   const Procedure noise = LoadProcedure(Shipped("noise.toml"));
-  ASSERT_EQ(noise.steps.size(), 1u);
+  ASSERT_EQ(noise.steps.size(), 2u);
   EXPECT_EQ(noise.steps[0].kind, StepKind::kRecord);
+  EXPECT_EQ(noise.steps[1].kind, StepKind::kAnalysis);
+  EXPECT_EQ(noise.steps[1].record_step, "noise");
+  EXPECT_EQ(noise.steps[1].method, "noise");
   EXPECT_DOUBLE_EQ(noise.steps[0].duration_s, 60.0);
   EXPECT_GT(noise.steps[0].timeout_s, 60.0);
   const Procedure drift = LoadProcedure(Shipped("drift.toml"));
+  ASSERT_EQ(drift.steps.size(), 2u);
+  EXPECT_EQ(drift.steps[1].kind, StepKind::kAnalysis);
+  EXPECT_EQ(drift.steps[1].record_step, "drift");
+  EXPECT_EQ(drift.steps[1].method, "allan");
   EXPECT_DOUBLE_EQ(drift.steps[0].duration_s, 12 * 3600.0);
   EXPECT_GT(drift.steps[0].timeout_s, drift.steps[0].duration_s);
   EXPECT_DOUBLE_EQ(drift.steps[0].chunk_s, 10.0);
@@ -83,6 +90,12 @@ TEST(ProcedureTest, MalformedProceduresAreRefusedWithLineAndReason) {
                 .rfind("9: step 1.timeout_s", 0), 0u);
   EXPECT_EQ(Refusal(head + "[[step]]\nid = \"a\"\nkind = \"record\"\nchunk_s = 0\n")
                 .rfind("8: step 1.chunk_s", 0), 0u);
+  // An analysis names an earlier record step and a known method.
+  EXPECT_EQ(Refusal(head + "[[step]]\nid = \"n\"\nkind = \"analysis\"\nrecord = \"r\"\nmethod = \"allan\"\n")
+                .rfind("8: step 1.record: 'r' is not an earlier record step", 0), 0u);
+  EXPECT_EQ(Refusal(head + "[[step]]\nid = \"r\"\nkind = \"record\"\n[[step]]\nid = \"n\"\n"
+                    "kind = \"analysis\"\nrecord = \"r\"\nmethod = \"fft\"\n")
+                .rfind("12: step 2.method: 'fft' is not an analysis", 0), 0u);
   // chunk_s belongs to records only.
   EXPECT_EQ(Refusal(head + "[[step]]\nid = \"a\"\nkind = \"static\"\nchunk_s = 5\n"),
             "8: unknown key 'step 1.chunk_s' (misspelt?)");

@@ -124,7 +124,19 @@ TEST(WizardRecordTest, TheViewShowsElapsedTimeAndTheDriftSeries) {
   // The sim has no drift: each 3-s mean (300 samples) is within 6 sigma of the first minute's.
   for (const DriftPoint& p : v.record->drift)
     for (int a = 0; a < 3; ++a) EXPECT_LT(std::abs(p.drift_counts(a)), 6.0 * 1.7 / std::sqrt(300.0) + 0.5);
-  for (const auto& curve : v.record->allan) EXPECT_TRUE(curve.empty());
+  // The live Allan curve: the default bench's white noise (1.5, 1.5, 1.7 counts, plus the
+  // rounding's 1/12 count^2) at the first tau, one sample, where AVAR = sigma^2; taus up to a
+  // quarter of the record.
+  const double sigma[3] = {1.5, 1.5, 1.7};
+  for (size_t a = 0; a < 3; ++a) {
+    const std::vector<AllanCurvePoint>& curve = v.record->allan[a];
+    ASSERT_GT(curve.size(), 10u) << a;
+    EXPECT_NEAR(curve.front().tau_s, 0.01, 1e-9);
+    const double white = std::sqrt(sigma[a] * sigma[a] + 1.0 / 12.0);
+    EXPECT_NEAR(curve.front().adev_counts, white, 0.05 * white) << a;
+    for (size_t i = 1; i < curve.size(); ++i) EXPECT_GT(curve[i].tau_s, curve[i - 1].tau_s);
+    EXPECT_LE(curve.back().tau_s, v.record->elapsed_s / 4.0 + 0.01);
+  }
   EXPECT_NE(v.prompt.find("00:05:00 of 00:10:00"), std::string::npos) << v.prompt;
 }
 

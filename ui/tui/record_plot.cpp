@@ -70,8 +70,8 @@ std::vector<std::string> DriftPlot(const RecordView& record, int axis, int width
 
 std::vector<std::string> AllanPlot(const RecordView& record, int width, int rows) {
   double tau_lo = INFINITY, tau_hi = -INFINITY, a_lo = INFINITY, a_hi = -INFINITY;
-  for (const std::vector<AllanPoint>& curve : record.allan) {
-    for (const AllanPoint& p : curve) {
+  for (const std::vector<AllanCurvePoint>& curve : record.allan) {
+    for (const AllanCurvePoint& p : curve) {
       if (!(p.tau_s > 0.0) || !(p.adev_counts > 0.0)) continue;
       tau_lo = std::min(tau_lo, std::log10(p.tau_s));
       tau_hi = std::max(tau_hi, std::log10(p.tau_s));
@@ -89,7 +89,7 @@ std::vector<std::string> AllanPlot(const RecordView& record, int width, int rows
   Label(canvas.back(), fmt::format("{:.2g}", std::pow(10.0, a_lo)));
   const int cols = width - kPlotLabelWidth;
   for (int axis = 0; axis < 3; ++axis) {
-    for (const AllanPoint& p : record.allan[static_cast<size_t>(axis)]) {
+    for (const AllanCurvePoint& p : record.allan[static_cast<size_t>(axis)]) {
       if (!(p.tau_s > 0.0) || !(p.adev_counts > 0.0)) continue;
       const double f = tau_hi > tau_lo ? (std::log10(p.tau_s) - tau_lo) / (tau_hi - tau_lo) : 0.5;
       const int col = std::clamp(static_cast<int>(f * (cols - 1) + 0.5), 0, cols - 1);

@@ -155,7 +155,7 @@ std::vector<Line> RecordBlock(const WizardView& view, int width, int rows) {
   out.push_back(Labelled("counts", fmt::format("x {}  y {}  z {}", FormatNumber(c.x(), 0, 6),
                                                FormatNumber(c.y(), 0, 6), FormatNumber(c.z(), 0, 6))));
   const bool allan_data = std::any_of(r.allan.begin(), r.allan.end(),
-                                      [](const std::vector<AllanPoint>& a) { return !a.empty(); });
+                                      [](const std::vector<AllanCurvePoint>& a) { return !a.empty(); });
   const int allan_rows = allan_data ? std::clamp(rows / 4, 3, 9) : 1;
   const int fixed = static_cast<int>(out.size()) + 1 + allan_rows;  // + the drift heading
   const int per_axis = std::clamp((rows - fixed) / 3, 0, 6);

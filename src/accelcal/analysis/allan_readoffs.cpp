@@ -1,11 +1,8 @@
 #include "accelcal/analysis/allan_readoffs.h"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
-#include <limits>
 
-#include <Eigen/Dense>
 #include <fmt/core.h>
 
 #include "accelcal/error.h"
@@ -16,15 +13,12 @@ namespace {
 // sqrt(2 ln 2 / pi): the Allan deviation of flicker noise relative to its coefficient B
 // (IEEE Std 952-1997, Table C.1).
 constexpr double kFlickerFloor = 0.664;
-constexpr int kTerms = 3;  // N^2 / tau, C, K^2 tau / 3
-
-double Basis(int term, double tau_s) {
-  switch (term) {
-    case 0: return 1.0 / tau_s;
-    case 1: return 1.0;
-    default: return tau_s / 3.0;
-  }
-}
+// A point belongs to the white region when the curve's local slope is at most -kSlopeLimit,
+// to the random-walk region when it is at least +kSlopeLimit: the term of that slope is then
+// the larger part of the variance.
+constexpr double kSlopeLimit = 0.3;
+// The local slope is the least-squares slope over the points within this many decades.
+constexpr double kSlopeHalfWidthDecades = 0.25;
 
 void CheckInput(const std::vector<double>& tau_s, const std::vector<double>& adev,
                 const std::vector<double>& edf) {
@@ -45,67 +39,46 @@ void CheckInput(const std::vector<double>& tau_s, const std::vector<double>& ade
   }
 }
 
-// Weighted least squares of avar against the chosen subset of terms (bit i of `mask` set: term
-// i used); false when a coefficient comes out negative or the system is singular.
-bool FitSubset(const std::vector<double>& tau_s, const std::vector<double>& avar,
-               const std::vector<double>& weight, unsigned mask, std::array<double, kTerms>* c,
-               double* cost) {
-  std::vector<int> terms;
-  for (int k = 0; k < kTerms; ++k)
-    if (mask & (1u << k)) terms.push_back(k);
-  const auto n = static_cast<Eigen::Index>(tau_s.size());
-  const auto p = static_cast<Eigen::Index>(terms.size());
-  Eigen::MatrixXd a(n, p);
-  Eigen::VectorXd b(n);
-  for (Eigen::Index i = 0; i < n; ++i) {
-    const double sw = std::sqrt(weight[static_cast<size_t>(i)]);
-    for (Eigen::Index j = 0; j < p; ++j)
-      a(i, j) = sw * Basis(terms[static_cast<size_t>(j)], tau_s[static_cast<size_t>(i)]);
-    b(i) = sw * avar[static_cast<size_t>(i)];
-  }
-  const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(a);
-  if (qr.rank() < p) return false;
-  const Eigen::VectorXd x = qr.solve(b);
-  if ((x.array() < 0.0).any()) return false;
-  c->fill(0.0);
-  for (Eigen::Index j = 0; j < p; ++j) (*c)[static_cast<size_t>(terms[static_cast<size_t>(j)])] = x(j);
-  *cost = (a * x - b).squaredNorm();
-  return true;
-}
-
-// Non-negative least squares over three terms: the best of the feasible subsets.
-std::array<double, kTerms> FitNonNegative(const std::vector<double>& tau_s,
-                                          const std::vector<double>& avar,
-                                          const std::vector<double>& weight) {
-  std::array<double, kTerms> best{};
-  double best_cost = std::numeric_limits<double>::infinity();
-  for (unsigned mask = 1; mask < (1u << kTerms); ++mask) {
-    std::array<double, kTerms> c{};
-    double cost = 0.0;
-    if (FitSubset(tau_s, avar, weight, mask, &c, &cost) && cost < best_cost) {
-      best = c;
-      best_cost = cost;
+// d log(adev) / d log(tau) at each point: the least-squares slope over its neighbours within
+// kSlopeHalfWidthDecades (smooths the scatter of single points).
+std::vector<double> LocalSlopes(const std::vector<double>& tau_s, const std::vector<double>& adev) {
+  const size_t n = tau_s.size();
+  std::vector<double> slopes(n, 0.0);
+  for (size_t i = 0; i < n; ++i) {
+    double sx = 0, sy = 0, sxx = 0, sxy = 0;
+    int count = 0;
+    for (size_t j = 0; j < n; ++j) {
+      const double x = std::log10(tau_s[j] / tau_s[i]);
+      if (std::abs(x) > kSlopeHalfWidthDecades) continue;
+      const double y = std::log10(adev[j]);
+      sx += x, sy += y, sxx += x * x, sxy += x * y, ++count;
+    }
+    const double denominator = count * sxx - sx * sx;
+    if (count >= 2 && denominator > 0) {
+      slopes[i] = (count * sxy - sx * sy) / denominator;
+    } else {  // isolated point: the slope to its nearest neighbour
+      const size_t j = i + 1 < n ? i + 1 : i - 1;
+      slopes[i] = std::log(adev[j] / adev[i]) / std::log(tau_s[j] / tau_s[i]);
     }
   }
-  return best;
+  return slopes;
 }
 
-double Model(const std::array<double, kTerms>& c, double tau_s) {
-  double v = 0.0;
-  for (int k = 0; k < kTerms; ++k) v += c[static_cast<size_t>(k)] * Basis(k, tau_s);
-  return v;
-}
-
-// Term `k` is the largest of the three at some tau of the curve.
-bool Dominates(const std::array<double, kTerms>& c, int k, const std::vector<double>& tau_s) {
-  for (const double tau : tau_s) {
-    const double mine = c[static_cast<size_t>(k)] * Basis(k, tau);
-    bool largest = mine > 0.0;
-    for (int j = 0; j < kTerms && largest; ++j)
-      if (j != k && c[static_cast<size_t>(j)] * Basis(j, tau) >= mine) largest = false;
-    if (largest) return true;
+// The edf-weighted geometric mean of `coefficient(i)` over the points where `in_region(i)`;
+// NaN when there is none.
+template <typename InRegion, typename Coefficient>
+double RegionCoefficient(size_t n, const std::vector<double>& edf, InRegion in_region,
+                         Coefficient coefficient) {
+  double sum_w = 0.0, sum = 0.0;
+  for (size_t i = 0; i < n; ++i) {
+    if (!in_region(i)) continue;
+    const double c = coefficient(i);
+    if (!(c > 0.0)) continue;
+    const double w = edf.empty() ? 1.0 : edf[i];
+    sum_w += w;
+    sum += w * std::log(c);
   }
-  return false;
+  return sum_w > 0.0 ? std::exp(sum / sum_w) : kNaN;
 }
 
 }  // namespace
@@ -114,25 +87,25 @@ AllanReadOffs ReadOffAllan(const std::vector<double>& tau_s, const std::vector<d
                            const std::vector<double>& edf) {
   CheckInput(tau_s, adev, edf);
   const size_t n = tau_s.size();
-  std::vector<double> avar(n), weight(n);
-  for (size_t i = 0; i < n; ++i) avar[i] = adev[i] * adev[i];
-
-  // Var(avar estimate) ~ 2 avar^2 / edf: weights edf / avar^2, with avar first the measured
-  // value, then (twice) the fitted model, so a point that happens to fall low is not favoured.
-  std::array<double, kTerms> c{};
-  for (int pass = 0; pass < 3; ++pass) {
-    for (size_t i = 0; i < n; ++i) {
-      const double level = pass == 0 ? avar[i] : std::max(Model(c, tau_s[i]), 1e-300);
-      weight[i] = (edf.empty() ? 1.0 : edf[i]) / (level * level);
-    }
-    c = FitNonNegative(tau_s, avar, weight);
-  }
-
+  const std::vector<double> slope = LocalSlopes(tau_s, adev);
   AllanReadOffs r;
-  r.noise_density = std::sqrt(c[0]);
-  r.random_walk = std::sqrt(c[2]);
-  r.white_noise_observed = Dominates(c, 0, tau_s);
-  r.random_walk_observed = Dominates(c, 2, tau_s);
+
+  // White noise: sigma = N / sqrt(tau) on the points of slope <= -kSlopeLimit.
+  auto white = [&](size_t i) { return slope[i] <= -kSlopeLimit; };
+  r.noise_density = RegionCoefficient(n, edf, white, [&](size_t i) { return adev[i] * std::sqrt(tau_s[i]); });
+  r.white_noise_observed = !std::isnan(r.noise_density);
+  if (!r.white_noise_observed) r.noise_density = adev.front() * std::sqrt(tau_s.front());
+
+  // Random walk: sigma^2 = K^2 tau / 3 on the points of slope >= +kSlopeLimit, with the white
+  // term (known from the short taus) taken off so the region's lower edge is not biased high.
+  const double n2 = r.white_noise_observed ? r.noise_density * r.noise_density : 0.0;
+  auto walk = [&](size_t i) { return slope[i] >= kSlopeLimit; };
+  r.random_walk = RegionCoefficient(n, edf, walk, [&](size_t i) {
+    return std::sqrt(std::max(0.0, adev[i] * adev[i] - n2 / tau_s[i]) * 3.0 / tau_s[i]);
+  });
+  r.random_walk_observed = !std::isnan(r.random_walk);
+  if (!r.random_walk_observed) r.random_walk = adev.back() / std::sqrt(tau_s.back() / 3.0);
+
   const size_t at_min = static_cast<size_t>(std::min_element(adev.begin(), adev.end()) - adev.begin());
   r.bias_instability = adev[at_min] / kFlickerFloor;
   r.bias_instability_tau_s = tau_s[at_min];

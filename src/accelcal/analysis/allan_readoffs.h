@@ -12,13 +12,15 @@
 //   (acceleration     at tau = 3 s. Unit: unit/sqrt(s) (for m/s^2, m/s^3/sqrt(Hz), Kalibr's
 //    random walk)     accelerometer_random_walk).
 //
-// N and K are the coefficients of a weighted least-squares fit of the whole curve to
-// sigma^2(tau) = N^2/tau + C + K^2 tau / 3 (IEEE 952 Annex C.2 fits such a sum of power terms),
-// all coefficients >= 0, each point weighted by its equivalent degrees of freedom (the variance of
-// an Allan variance estimate is ~ 2 sigma^4 / edf): the lines' values at tau = 1 s and 3 s
-// without having to pick the slope regions by eye. A term is "observed" when it is the largest
-// of the three somewhere in the curve's tau range; otherwise its coefficient is only what the
-// fit could not rule out, and the result says so.
+// Where each line is read: the curve's local slope (least squares over +-0.25 decade) tells
+// which term dominates each point; N is the edf-weighted (geometric) mean of sigma sqrt(tau)
+// over the points of slope <= -0.3, K that of sqrt((sigma^2 - N^2/tau) 3 / tau) over the points
+// of slope >= +0.3 (the white term, known, is taken off). A global fit of
+// sigma^2 = N^2/tau + C + K^2 tau/3 was tried first and rejected: real flicker is not a
+// constant over the decades where it and the other terms overlap, and the fit, dominated by
+// the many-edf short taus, pushed K off by a factor of 3 on a simulated record. A term without
+// its region is "not observed": the value given is the bound the curve's end allows (N from the
+// first point, K from the last), and the notes say so.
 #pragma once
 
 #include <string>

@@ -1,9 +1,13 @@
 #include "accelcal/analysis/analyze_recording.h"
 
+#include <cmath>
 #include <memory>
 #include <vector>
 
+#include <fmt/core.h>
+
 #include "accelcal/apply.h"
+#include "accelcal/error.h"
 #include "accelcal/io/recording_stream.h"
 
 namespace accelcal {
@@ -23,6 +27,22 @@ RecordAnalysis AnalyzeRecordingFile(const std::string& path, const RecordAnalysi
     read += static_cast<long>(block.size());
     if (progress) progress(read);
   }
+  return analyzer.Result();
+}
+
+}  // namespace accelcal
+
+namespace accelcal {
+
+RecordAnalysis AnalyzeJournalRecord(const SessionJournal& journal, const std::string& step_id,
+                                    const RecordAnalysisOptions& options) {
+  if (journal.RecordSummaryOf(step_id).num_samples == 0)
+    throw Error(fmt::format("the session has no record at step '{}'", step_id));
+  RecordAnalyzer analyzer(options, "counts");
+  journal.VisitRecordChunks(step_id, [&](const RecordChunk& chunk) {
+    for (const Sample& s : chunk.samples)
+      analyzer.Add(s.t_s, s.raw_counts, std::isfinite(s.temp_c) ? s.temp_c : kNaN);
+  });
   return analyzer.Result();
 }
 

@@ -10,6 +10,7 @@
 
 #include "accelcal/analysis/record_analysis.h"
 #include "accelcal/io/calibration_file.h"
+#include "accelcal/wizard/session_journal.h"
 
 namespace accelcal {
 
@@ -20,5 +21,16 @@ namespace accelcal {
 RecordAnalysis AnalyzeRecordingFile(const std::string& path, const RecordAnalysisOptions& options,
                                     const std::optional<Calibration>& calibration,
                                     const std::function<void(long samples)>& progress = {});
+
+}  // namespace accelcal
+
+namespace accelcal {
+
+// The record analysis of the record step `step_id` of a session journal (the wizard streams
+// records there in chunks: session_journal.h), read one chunk at a time, in counts. The gaps of
+// a resumed record show as steps in its t and are handled as in a file. Throws accelcal::Error
+// when the step has no record.
+RecordAnalysis AnalyzeJournalRecord(const SessionJournal& journal, const std::string& step_id,
+                                    const RecordAnalysisOptions& options);
 
 }  // namespace accelcal

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <map>
+#include <memory>
 #include <set>
 
 #include <fmt/core.h>
@@ -56,15 +57,24 @@ NoiseRecordSet NoiseRecordsOfDevice(const std::string& sessions_dir, const std::
   SessionOpenOptions read_only;
   read_only.read_only = true;
   for (const SessionInfo& info : listing.sessions) {
-    const std::vector<JournalCapture> captures = SessionStore::Open(info.path, read_only)->Captures();
-    const auto it = std::find_if(captures.begin(), captures.end(), [&](const JournalCapture& c) {
-      return record_steps.count(c.step_id) > 0;
-    });
-    if (it == captures.end()) {
-      set.notes.push_back(fmt::format("session {} has no accepted record yet: passed over", info.name));
+    const std::unique_ptr<SessionStore> store = SessionStore::Open(info.path, read_only);
+    // The wizard streams a record step in chunks (record_stream.h); sessions of schema 1 kept
+    // it as one capture.
+    std::vector<Sample> samples;
+    for (const std::string& step : store->RecordSteps())
+      if (record_steps.count(step) > 0 && samples.empty()) samples = ReadRecord(*store, step).samples;
+    if (samples.empty()) {
+      const std::vector<JournalCapture> captures = store->Captures();
+      const auto it = std::find_if(captures.begin(), captures.end(), [&](const JournalCapture& c) {
+        return record_steps.count(c.step_id) > 0;
+      });
+      if (it != captures.end()) samples = it->capture.samples;
+    }
+    if (samples.empty()) {
+      set.notes.push_back(fmt::format("session {} has no record yet: passed over", info.name));
       continue;
     }
-    set.records.push_back({info.name, info.created_utc.substr(0, 10), it->capture.samples});
+    set.records.push_back({info.name, info.created_utc.substr(0, 10), std::move(samples)});
   }
   if (set.records.empty()) ThrowNoRecords(sessions_dir, device, noise_procedure.title, set);
   return set;

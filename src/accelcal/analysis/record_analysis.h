@@ -51,7 +51,7 @@ struct RecordAnalysisOptions {
   std::string Validate() const;  // empty when valid
 };
 
-struct RecordGap {
+struct RecordAnalysisGap {
   double t_before_s = kNaN;        // last sample before the gap, s
   double t_after_s = kNaN;         // first sample after it, s
   std::int64_t missing_samples = 0;
@@ -71,7 +71,7 @@ struct RecordAnalysis {
   std::int64_t missing_samples = 0;
   double t_first_s = kNaN;
   double t_last_s = kNaN;
-  std::vector<RecordGap> gaps;
+  std::vector<RecordAnalysisGap> gaps;
   bool has_temperature = false;
   std::array<AxisAnalysis, 3> axes;  // x, y, z
 };
@@ -110,7 +110,7 @@ class RecordAnalyzer {
   double t_last_s_ = kNaN;
   std::int64_t received_ = 0;
   bool has_temperature_ = false;
-  std::vector<RecordGap> gaps_;
+  std::vector<RecordAnalysisGap> gaps_;
   void FlushAllan();  // hands the pending readings to the accumulators
 
   // Readings go to the accumulators in batches (their batch Add is several times faster).

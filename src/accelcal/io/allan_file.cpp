@@ -81,7 +81,7 @@ nlohmann::json RecordAnalysisToJson(const RecordAnalysis& r, const std::string& 
   j["missing_samples"] = r.missing_samples;
   j["duration_s"] = Number(r.t_last_s - r.t_first_s);
   json gaps = json::array();
-  for (const RecordGap& g : r.gaps)
+  for (const RecordAnalysisGap& g : r.gaps)
     gaps.push_back({{"t_before_s", g.t_before_s}, {"t_after_s", g.t_after_s},
                     {"missing_samples", g.missing_samples}});
   j["gaps"] = gaps;

@@ -1,5 +1,6 @@
 #include "accelcal/wizard/procedure.h"
 
+#include <algorithm>
 #include <cmath>
 #include <set>
 
@@ -22,7 +23,7 @@ constexpr std::pair<StepKind, std::string_view> kKindNames[] = {
     {StepKind::kLevel, "level"},         {StepKind::kStatic, "static"},
     {StepKind::kTurntable, "turntable"}, {StepKind::kRecord, "record"},
     {StepKind::kFit, "fit"},             {StepKind::kDiagnosis, "diagnosis"},
-    {StepKind::kReport, "report"}};
+    {StepKind::kReport, "report"},       {StepKind::kAnalysis, "analysis"}};
 
 void ReadSensor(TomlTableReader& r, Procedure& p) {
   p.range_g = r.Number("range_g", 6.0, NumberRange::kPositive);
@@ -100,7 +101,7 @@ ProcedureStep ReadStep(TomlTableReader& r, const CaptureDefaults& d) {
   if (!k) {
     r.Fail(*r.Get("kind"), "kind",
            "'" + kind + "' is not a step kind: expected level, static, turntable, record, fit, "
-           "diagnosis or report");
+           "diagnosis, report or analysis");
   }
   s.kind = *k;
   switch (s.kind) {
@@ -121,6 +122,12 @@ ProcedureStep ReadStep(TomlTableReader& r, const CaptureDefaults& d) {
     case StepKind::kTurntable:
       ReadTurntable(r, s);
       ReadDurations(r, s, d);
+      break;
+    case StepKind::kAnalysis:
+      s.record_step = r.String("record", std::nullopt);
+      s.method = r.String("method", std::nullopt);
+      if (s.method != "allan" && s.method != "noise")
+        r.Fail(*r.Get("method"), "method", "'" + s.method + "' is not an analysis: expected allan or noise");
       break;
     default: break;
   }
@@ -151,6 +158,13 @@ void ReadSteps(TomlTableReader& root, const CaptureDefaults& d, const std::strin
     ProcedureStep s = ReadStep(r, d);
     r.Finish();
     if (!ids.insert(s.id).second) r.Fail(*r.Get("id"), "id", "'" + s.id + "' is used twice");
+    if (s.kind == StepKind::kAnalysis) {
+      const bool earlier_record = std::any_of(p.steps.begin(), p.steps.end(), [&](const ProcedureStep& e) {
+        return e.id == s.record_step && e.kind == StepKind::kRecord;
+      });
+      if (!earlier_record)
+        r.Fail(*r.Get("record"), "record", "'" + s.record_step + "' is not an earlier record step");
+    }
     p.steps.push_back(std::move(s));
   }
 }

@@ -26,9 +26,10 @@ enum class StepKind {
   kFit,        // the nine-parameter fit over the accepted captures
   kDiagnosis,  // the diagnosis; asks before adopting an effect
   kReport,     // the calibration report; the session's result is recorded
+  kAnalysis,   // the noise or drift analysis of an earlier record step, shown
 };
 
-// "level", "static", "turntable", "record", "fit", "diagnosis", "report".
+// "level", "static", "turntable", "record", "fit", "diagnosis", "report", "analysis".
 std::string_view StepKindToString(StepKind kind);
 std::optional<StepKind> StringToStepKind(std::string_view text);
 
@@ -50,6 +51,11 @@ struct ProcedureStep {
   // kRecord: the record is committed in chunks of this much of its time, s (an interruption
   // loses at most one chunk).
   double chunk_s = kDefaultRecordChunkS;
+  // kAnalysis: the record step analysed (an earlier step of kind record), and how: "allan"
+  // (Allan deviation, IEEE 952 read-offs, drift: analysis/record_analysis.h) or "noise"
+  // (standard deviation, Welch noise density, normality: analysis/noise_analysis.h).
+  std::string record_step;
+  std::string method;
 
   static constexpr double kDefaultRecordChunkS = 10.0;
 };

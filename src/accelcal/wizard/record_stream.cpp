@@ -21,6 +21,13 @@ constexpr double kMinGapS = 1e-3;
 constexpr const char* kResumeReason = "resumed after interruption";
 constexpr const char* kAxisNames = "xyz";
 
+// The record analysis as the wizard runs it: a resumed record may have been down for days.
+RecordAnalysisOptions LiveAnalysisOptions() {
+  RecordAnalysisOptions o;
+  o.max_gap_s = 60 * 86400.0;
+  return o;
+}
+
 }  // namespace
 
 std::string RecordStreamOptions::Validate() const {
@@ -36,7 +43,10 @@ std::string RecordStreamOptions::Validate() const {
 }
 
 RecordStream::RecordStream(SessionJournal& journal, std::string step_id, RecordStreamOptions options)
-    : journal_(journal), step_id_(std::move(step_id)), options_(std::move(options)) {
+    : journal_(journal),
+      step_id_(std::move(step_id)),
+      options_(std::move(options)),
+      analyzer_(LiveAnalysisOptions(), "counts") {
   if (std::string why = options_.Validate(); !why.empty()) throw Error("record: " + why);
   if (!options_.wall_now_s) options_.wall_now_s = SystemNowS;
   resumed_from_ = journal_.RecordSummaryOf(step_id_);
@@ -114,6 +124,8 @@ void RecordStream::Accumulate(const Sample& s) {
   if (bin >= bins_.size()) bins_.resize(bin + 1);
   bins_[bin].sum += s.raw_counts;
   bins_[bin].n += 1;
+  // Gaps show as steps in t (a resumed record's samples are shifted past its gap).
+  analyzer_.Add(s.t_s, s.raw_counts, std::isfinite(s.temp_c) ? s.temp_c : kNaN);
 }
 
 // A movement: far from the running mean on some axis. Flagged samples within one running-mean
@@ -171,8 +183,19 @@ RecordView RecordStream::View() const {
                          bins_[i].sum / static_cast<double>(bins_[i].n) - reference});
     }
   }
+  if (allan_at_samples_ < 0 || v.samples - allan_at_samples_ >= std::max(1L, v.samples / 100)) {
+    allan_at_samples_ = v.samples;
+    const RecordAnalysis a = analyzer_.Result();
+    for (size_t axis = 0; axis < 3; ++axis) {
+      allan_[axis].clear();
+      for (const AllanPoint& p : a.axes[axis].curve.points) allan_[axis].push_back({p.tau_s, p.adev});
+    }
+  }
+  v.allan = allan_;
   return v;
 }
+
+RecordAnalysis RecordStream::Analysis() const { return analyzer_.Result(); }
 
 std::string RecordStream::Outcome() const {
   const RecordView v = View();

@@ -23,6 +23,7 @@
 
 #include <Eigen/Core>
 
+#include "accelcal/analysis/record_analysis.h"
 #include "accelcal/capture.h"
 #include "accelcal/wizard/duration_text.h"
 #include "accelcal/wizard/session_journal.h"
@@ -75,6 +76,9 @@ class RecordStream {
   RecordView View() const;
   // "45 min recorded over 46 min, 1 gap (12 s), no movement": the step's outcome.
   std::string Outcome() const;
+  // The noise and drift analysis of everything recorded so far, in counts (Allan deviation,
+  // read-offs, drift of 1-minute means).
+  RecordAnalysis Analysis() const;
 
  private:
   struct Bin {
@@ -110,6 +114,12 @@ class RecordStream {
   double last_bump_t_s_ = -1e300;  // latest flagged sample, s
   double bump_start_t_s_ = 0.0;    // first flagged sample of the latest movement, s
   std::string last_bump_;
+
+  // The live analysis. Mutable: asking for a curve brings the accumulators' sums up to date
+  // (record_analysis.h), which the const View() does, at most once per new ~1 % of samples.
+  mutable RecordAnalyzer analyzer_;
+  mutable long allan_at_samples_ = -1;
+  mutable std::array<std::vector<AllanCurvePoint>, 3> allan_;
 };
 
 }  // namespace accelcal

@@ -7,17 +7,47 @@
 #include <fmt/core.h>
 #include <fmt/format.h>
 
+#include "accelcal/analysis/analyze_recording.h"
+#include "accelcal/analysis/noise_analysis.h"
 #include "accelcal/capture_screening.h"
 #include "accelcal/error.h"
+#include "accelcal/io/allan_file.h"
 #include "accelcal/fit/calibration_fit.h"
 #include "accelcal/io/calibration_file.h"
+#include "accelcal/report/allan_text.h"
 #include "accelcal/report/fit_text.h"
+#include "accelcal/report/noise_text.h"
 #include "accelcal/source/bench_control.h"
 #include "accelcal/wizard/leveling.h"
 #include "accelcal/wizard/quantity_input.h"
 
 namespace accelcal {
 namespace {
+
+// The figures of an analysis step in one line: its outcome in the journal.
+std::string AllanOutcome(const nlohmann::json& allan) {
+  std::string out = fmt::format("Allan, {}: noise density", allan.value("unit", "?"));
+  for (const char* axis : {"x", "y", "z"}) {
+    const nlohmann::json& n = allan["axes"][axis]["noise_density"];
+    out += fmt::format(" {} {}", axis, n.is_number() ? fmt::format("{:.4g}", n.get<double>()) : "-");
+  }
+  out += "; bias instability";
+  for (const char* axis : {"x", "y", "z"}) {
+    const nlohmann::json& b = allan["axes"][axis]["bias_instability"];
+    out += fmt::format(" {} {}", axis, b.is_number() ? fmt::format("{:.4g}", b.get<double>()) : "-");
+  }
+  return out;
+}
+
+std::string NoiseOutcome(const analysis::NoiseReport& n) {
+  std::string out = fmt::format("noise, {}: std", n.unit);
+  const analysis::RecordNoise& r = n.records.front();
+  for (size_t a = 0; a < 3; ++a) out += fmt::format(" {} {:.4g}", "xyz"[a], r.axes[a].std);
+  out += "; density";
+  for (size_t a = 0; a < 3; ++a) out += fmt::format(" {} {:.4g}", "xyz"[a], r.axes[a].density);
+  return out;
+}
+
 
 constexpr const char* kWelcomeId = "welcome";
 // A fresh record starts this long after the sensor is placed (the hand letting go; the
@@ -130,6 +160,7 @@ void WizardEngine::EnterStep(int index) {
     case StepKind::kFit: RunFit(); break;
     case StepKind::kDiagnosis: RunDiagnosis(); break;
     case StepKind::kReport: RunReport(); break;
+    case StepKind::kAnalysis: RunAnalysis(); break;
     default: EnterPlace(); break;
   }
 }
@@ -451,6 +482,39 @@ void WizardEngine::RunReport() {
                          : "Model: the nine-parameter base model");
 }
 
+// The analysis of a record step: read back from the journal one chunk at a time (a 12-hour
+// record does not fit the view), analysed, and shown.
+void WizardEngine::RunAnalysis() {
+  phase_ = Phase::kResult;
+  lines_.clear();
+  const ProcedureStep& s = step();
+  if (journal_.RecordSummaryOf(s.record_step).num_samples == 0) {
+    problem_ = fmt::format("nothing to analyse: the record step '{}' holds no samples (skipped?)",
+                           s.record_step);
+    hint_ = "s skips the analysis; b goes back to the record";
+    return;
+  }
+  try {
+    if (s.method == "allan") {
+      const RecordAnalysis a = AnalyzeJournalRecord(journal_, s.record_step, RecordAnalysisOptions());
+      const nlohmann::json j = RecordAnalysisToJson(a, options_.session_name + ":" + s.record_step,
+                                                    RecordAnalysisOptions().drift.window_s);
+      lines_ = SplitLines(FormatAllanText(j));
+      analysis_outcome_ = AllanOutcome(j);
+    } else {
+      analysis::NoiseRecord record{s.record_step, "", ReadRecord(journal_, s.record_step).samples};
+      const analysis::NoiseReport n = analysis::AnalyzeNoise({record});
+      lines_ = SplitLines(FormatNoiseText(n));
+      lines_.push_back("The day-to-day repeatability of the bias takes three such records on "
+                       "different days: accelcal noise DEVICE.");
+      analysis_outcome_ = NoiseOutcome(n);
+    }
+  } catch (const Error& e) {
+    problem_ = std::string("the analysis failed: ") + e.what();
+    hint_ = "s skips the analysis; the record is kept in the session";
+  }
+}
+
 // ---- polling --------------------------------------------------------------------------------
 
 void WizardEngine::UpdateLive(const std::vector<Sample>& chunk) {
@@ -577,6 +641,7 @@ void WizardEngine::HandleResult(const Intent& intent) {
     return;
   }
   if (kind == StepKind::kReport && accept && problem_.empty()) FinishStep("written");
+  if (kind == StepKind::kAnalysis && accept && problem_.empty()) FinishStep(analysis_outcome_);
 }
 
 void WizardEngine::HandleCaptureIntent(const Intent& intent) {

@@ -114,6 +114,7 @@ class WizardEngine final : public WizardDriver {
   void RunFit();
   void RunDiagnosis();
   void RunReport();
+  void RunAnalysis();
   std::vector<Capture> JournalCaptures() const;
   void UpdateLive(const std::vector<Sample>& chunk);
   void SetStepView(WizardView& v) const;
@@ -165,6 +166,7 @@ class WizardEngine final : public WizardDriver {
   FitSummary fit_;
   std::optional<DiagnosisReport> diagnosis_;
   bool adopt_effects_ = true;
+  std::string analysis_outcome_;  // the analysis step's figures, for the journal
 
   Eigen::Vector3d live_counts_ = Eigen::Vector3d::Constant(kNaN);
 };

@@ -58,7 +58,7 @@ struct DriftPoint {
 };
 
 // One point of an Allan deviation curve.
-struct AllanPoint {
+struct AllanCurvePoint {
   double tau_s = 0.0;        // averaging time, s
   double adev_counts = 0.0;  // Allan deviation, counts
 };
@@ -76,13 +76,10 @@ struct RecordView {
   std::string last_bump;      // "at 03:12:05, 41 counts on x"; empty when none
   double drift_bin_s = 0.0;   // width of the drift plot's bins, s
   std::vector<DriftPoint> drift;  // in time order; bins without samples (gaps) are absent
-  // The Allan deviation so far, per axis (x, y, z), tau increasing. Filled by RecordStream
-  // (record_stream.h) from one streaming AllanAccumulator per axis
-  // (src/accelcal/analysis/allan_deviation.h, written alongside this by another change): the
-  // accumulators take each recorded sample in RecordStream::Accumulate and the missing samples
-  // of a resumed gap, and View() copies their Curve() here. Until that is wired the curves stay
-  // empty and front ends say they are waiting for data.
-  std::array<std::vector<AllanPoint>, 3> allan;
+  // The Allan deviation so far, per axis (x, y, z), tau increasing, counts: RecordStream's
+  // streaming record analysis (analysis/record_analysis.h) of every recorded sample, gaps
+  // declared missing. Empty until the record holds a few averaging times.
+  std::array<std::vector<AllanCurvePoint>, 3> allan;
 };
 
 struct WizardView {
