@@ -1,38 +1,79 @@
 // `accelcal allan`: the Allan deviation and the IEEE 952 read-offs of a long static record.
+#include <fstream>
 #include <iostream>
 #include <memory>
 #include <optional>
 
+#include <algorithm>
+
 #include <fmt/core.h>
+#include <fmt/format.h>
 
 #include "accelcal/analysis/analyze_recording.h"
 #include "accelcal/error.h"
 #include "accelcal/io/allan_file.h"
 #include "accelcal/io/calibration_file.h"
 #include "accelcal/report/allan_text.h"
+#include "accelcal/session/session_store.h"
 #include "cli/commands.h"
 
 namespace accelcal::cli {
 namespace {
 
 struct AllanCommandOptions {
-  std::string recording_path;
+  std::string recording_path;   // a recording file, or a session file holding a record
+  std::string step;             // the session's record step; empty: its only (or first) one
   std::string calibration_path;  // empty: figures in counts
   std::string output_path;       // allan.json; empty: none
   double rate_hz = kNaN;         // NaN: from the time stamps
   double drift_window_s = 60.0;
 };
 
+// A session file (SQLite) rather than a recording: its first 16 bytes say so.
+bool IsSessionFile(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  char magic[16] = {};
+  in.read(magic, sizeof magic);
+  return in.gcount() == sizeof magic && std::string(magic, sizeof magic) == std::string("SQLite format 3\0", 16);
+}
+
+// The record of a wizard session (the drift procedure's), read chunk by chunk.
+RecordAnalysis AnalyzeSessionRecord(const AllanCommandOptions& o, const RecordAnalysisOptions& options,
+                                    std::string* source) {
+  if (!o.calibration_path.empty())
+    throw Error("--calibration applies to recording files; a session's record is analysed in "
+                "counts (export it with accelcal record, or apply the calibration first)");
+  SessionOpenOptions read_only;
+  read_only.read_only = true;
+  const std::unique_ptr<SessionStore> store = SessionStore::Open(o.recording_path, read_only);
+  const std::vector<std::string> steps = store->RecordSteps();
+  if (steps.empty())
+    throw Error(fmt::format("session {} holds no record (run the drift or noise procedure)",
+                            o.recording_path));
+  const std::string step = o.step.empty() ? steps.front() : o.step;
+  if (std::find(steps.begin(), steps.end(), step) == steps.end())
+    throw Error(fmt::format("session {} has no record at step '{}'; its records: {}",
+                            o.recording_path, step, fmt::join(steps, ", ")));
+  *source = o.recording_path + ":" + step;
+  return AnalyzeJournalRecord(*store, step, options);
+}
+
 void RunAllan(const AllanCommandOptions& o) {
-  std::optional<Calibration> cal;
-  if (!o.calibration_path.empty()) cal = ReadCalibrationFile(o.calibration_path);
   RecordAnalysisOptions options;
   options.rate_hz = o.rate_hz;
   options.drift.window_s = o.drift_window_s;
-  const RecordAnalysis analysis = AnalyzeRecordingFile(o.recording_path, options, cal);
+  std::string source = o.recording_path;
+  RecordAnalysis analysis;
+  if (o.recording_path != "-" && IsSessionFile(o.recording_path)) {
+    analysis = AnalyzeSessionRecord(o, options, &source);
+  } else {
+    std::optional<Calibration> cal;
+    if (!o.calibration_path.empty()) cal = ReadCalibrationFile(o.calibration_path);
+    analysis = AnalyzeRecordingFile(o.recording_path, options, cal);
+  }
   if (analysis.samples < 2)
-    throw Error(fmt::format("{}: {} samples: nothing to analyse", o.recording_path, analysis.samples));
-  const nlohmann::json allan = RecordAnalysisToJson(analysis, o.recording_path, o.drift_window_s);
+    throw Error(fmt::format("{}: {} samples: nothing to analyse", source, analysis.samples));
+  const nlohmann::json allan = RecordAnalysisToJson(analysis, source, o.drift_window_s);
   std::cout << FormatAllanText(allan);
   if (!o.output_path.empty()) {
     WriteAllanFile(o.output_path, allan);
@@ -53,9 +94,12 @@ void SetupAllanCommand(CLI::App& app) {
       "or in m/s^2 with a calibration file. Streams the file: any length in bounded memory.\n\n"
       "Examples:\n"
       "  accelcal allan drift.txt\n"
-      "  accelcal allan drift.txt --calibration cal.json -o allan.json");
-  sub->add_option("recording", opts->recording_path, "Recording file ('-': standard input)")
+      "  accelcal allan drift.txt --calibration cal.json -o allan.json\n"
+      "  accelcal allan drift-session.db -o allan.json      # a wizard session's record");
+  sub->add_option("recording", opts->recording_path,
+                  "Recording file ('-': standard input), or a session file holding a record")
       ->required();
+  sub->add_option("--step", opts->step, "The session's record step (default: its first record)");
   sub->add_option("--calibration", opts->calibration_path,
                   "Calibration file: figures in m/s^2 instead of counts")
       ->check(CLI::ExistingFile);
