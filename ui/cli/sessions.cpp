@@ -8,6 +8,7 @@
 #include <fmt/core.h>
 
 #include "accelcal/error.h"
+#include "accelcal/session/session_catalog.h"
 #include "accelcal/session/session_paths.h"
 #include "accelcal/session/session_store.h"
 #include "cli/commands.h"
@@ -22,15 +23,6 @@ struct SessionsCommandOptions {
 };
 
 constexpr const char* kRowFormat = "{:<22} {:<20} {:<14} {:<12} {:<14} {:>8} {:<5} {}\n";
-
-// The *.db files of `dir`, sorted by name (= by creation time for default names).
-std::vector<std::string> SessionFilesIn(const fs::path& dir) {
-  std::vector<std::string> files;
-  for (const fs::directory_entry& entry : fs::directory_iterator(dir))
-    if (entry.is_regular_file() && entry.path().extension() == ".db") files.push_back(entry.path().string());
-  std::sort(files.begin(), files.end());
-  return files;
-}
 
 // One line for a session; one line with the reason for a file that cannot be read as one.
 std::string Row(const std::string& path) {
