@@ -5,11 +5,19 @@
 // scenario's sensor with OFFSETS (counts, "x,y,z") added to its bias, white noise only, seed
 // SEED, the session's creation time backdated to DATE (YYYY-MM-DD, 09:00 UTC).
 //
-//   accelcal_make_session OUT.db [--no-result]
 //   accelcal_make_session OUT.db --noise PROCEDURE.toml SERIAL DATE OFFSETS SEED
+//   accelcal_make_session OUT.db [--no-result] [--device SERIAL] [--date ISO8601]
+//                         [--bias-offset-counts X,Y,Z] [--scale-offset-counts-per-mps2 X,Y,Z]
+//                         [--misalignment-offset-rad YZ,ZY,ZX]
+//
+// --device (default SIM-0001) and --date (the session's creation time, e.g.
+// 2025-03-01T14:05:09.000Z; default now) set what `accelcal history` sorts and groups by. The
+// offsets are added to the default scenario's true sensor, so a later session of the same
+// device shows a known change (the noise is the same seed's: the fitted change is the offset).
 #include <cstdio>
 #include <cstring>
 #include <exception>
+#include <sstream>
 #include <string>
 
 #include <fmt/core.h>
@@ -25,30 +33,60 @@
 
 namespace {
 
-void MakeSession(const std::string& path, bool with_result) {
+struct MakeSessionOptions {
+  std::string path;
+  bool with_result = true;
+  std::string device = "SIM-0001";
+  std::string date_utc;  // empty: now
+  Eigen::Vector3d bias_offset_counts = Eigen::Vector3d::Zero();
+  Eigen::Vector3d scale_offset_counts_per_mps2 = Eigen::Vector3d::Zero();
+  Eigen::Vector3d misalignment_offset_rad = Eigen::Vector3d::Zero();  // yz, zy, zx
+};
+
+Eigen::Vector3d ParseTriple(const std::string& text) {
+  Eigen::Vector3d v;
+  char c1 = 0, c2 = 0;
+  std::istringstream in(text);
+  if (!(in >> v.x() >> c1 >> v.y() >> c2 >> v.z()) || c1 != ',' || c2 != ',' || !in.eof())
+    throw accelcal::Error(fmt::format("'{}' is not X,Y,Z", text));
+  return v;
+}
+
+// The store stamps "now"; the tests need sessions of other dates (history, day-to-day noise).
+void Backdate(const std::string& path, const std::string& created_utc, const std::string& updated_utc) {
+  accelcal::detail::SqliteDb db(path, false);
+  accelcal::detail::SqliteStatement(db, "UPDATE session SET created_utc = ?, updated_utc = ? WHERE id = 1")
+      .Bind(1, created_utc).Bind(2, updated_utc).Run();
+}
+
+void MakeSession(const MakeSessionOptions& o) {
   using namespace accelcal;
-  sim::VirtualBench bench(sim::DefaultScenario());
+  sim::Scenario scenario = sim::DefaultScenario();
+  SensorModel& truth = scenario.sensor.model;
+  truth.bias_counts += o.bias_offset_counts;
+  truth.scale_counts_per_mps2 += o.scale_offset_counts_per_mps2;
+  truth.a_yz_rad += o.misalignment_offset_rad.x();
+  truth.a_zy_rad += o.misalignment_offset_rad.y();
+  truth.a_zx_rad += o.misalignment_offset_rad.z();
+  sim::VirtualBench bench(scenario);
   const std::vector<Capture> captures = bench.SimulateCaptureSet();
   SessionOpenOptions options;
   options.procedure = "bench_default";
   options.source = "sim";
-  auto store = SessionStore::Open(path, options);
-  store->RecordInput(kSessionStep, kDeviceKey, "SIM-0001");
-  store->RecordInput(kSessionStep, kOperatorKey, "e2e");
-  for (const Capture& c : captures) store->RecordCapture(fmt::format("capture_{}", c.id), c);
-  if (!with_result) return;
-  FitOptions fit;
-  const FitSummary summary = FitCalibration(captures, fit);
-  if (!summary.IsUsable()) throw Error("the default scenario did not fit: " + summary.message);
-  store->RecordResult(CalibrationToJson(MakeCalibration(summary, fit.gravity, captures, path)));
-  store->MarkDone();
-}
-
-Eigen::Vector3d ParseOffsets(const std::string& text) {
-  Eigen::Vector3d v;
-  if (std::sscanf(text.c_str(), "%lf,%lf,%lf", &v(0), &v(1), &v(2)) != 3)
-    throw accelcal::Error("OFFSETS must be x,y,z in counts, got '" + text + "'");
-  return v;
+  {
+    auto store = SessionStore::Open(o.path, options);
+    store->RecordInput(kSessionStep, kDeviceKey, o.device);
+    store->RecordInput(kSessionStep, kOperatorKey, "e2e");
+    for (const Capture& c : captures) store->RecordCapture(fmt::format("capture_{}", c.id), c);
+    if (o.with_result) {
+      FitOptions fit;
+      const FitSummary summary = FitCalibration(captures, fit);
+      if (!summary.IsUsable()) throw Error("the scenario did not fit: " + summary.message);
+      store->RecordResult(CalibrationToJson(MakeCalibration(summary, fit.gravity, captures, o.path)));
+      store->MarkDone();
+    }
+  }
+  if (!o.date_utc.empty()) Backdate(o.path, o.date_utc, o.date_utc);
 }
 
 void MakeNoiseSession(const std::string& path, const std::string& procedure_path,
@@ -61,7 +99,7 @@ void MakeNoiseSession(const std::string& path, const std::string& procedure_path
     if (step.kind == StepKind::kRecord) record = &step;
   if (record == nullptr) throw Error(procedure_path + " has no record step");
   sim::Scenario s = sim::DefaultScenario();
-  s.sensor.model.bias_counts += ParseOffsets(offsets);
+  s.sensor.model.bias_counts += ParseTriple(offsets);
   s.bench.seed = std::stoull(seed);
   s.bench.placement_error_deg = 0.0;
   s.captures.resize(1);
@@ -93,28 +131,48 @@ void MakeNoiseSession(const std::string& path, const std::string& procedure_path
     store->RecordStepDone(record->id, "recorded");
     store->MarkDone();
   }
-  // Backdate: the store stamps the current time; the analysis groups records by day.
-  detail::SqliteDb db(path, false);
-  detail::SqliteStatement(db, "UPDATE session SET created_utc = ?, updated_utc = ? WHERE id = 1")
-      .Bind(1, date + "T09:00:00.000Z").Bind(2, date + "T09:01:00.000Z").Run();
+  // The analysis groups records by day.
+  Backdate(path, date + "T09:00:00.000Z", date + "T09:01:00.000Z");
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  const bool noise = argc == 8 && std::strcmp(argv[2], "--noise") == 0;
-  if (!noise && (argc < 2 || argc > 3 || (argc == 3 && std::strcmp(argv[2], "--no-result") != 0))) {
-    std::fprintf(stderr,
-                 "usage: accelcal_make_session OUT.db [--no-result]\n"
-                 "       accelcal_make_session OUT.db --noise PROCEDURE.toml SERIAL DATE OFFSETS SEED\n");
+  if (argc == 8 && std::strcmp(argv[2], "--noise") == 0) {
+    try {
+      MakeNoiseSession(argv[1], argv[3], argv[4], argv[5], argv[6], argv[7]);
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "accelcal_make_session: %s\n", e.what());
+      return 1;
+    }
+    return 0;
+  }
+  MakeSessionOptions o;
+  try {
+    for (int i = 1; i < argc; ++i) {
+      const std::string arg = argv[i];
+      auto value = [&]() -> std::string {
+        if (i + 1 >= argc) throw accelcal::Error(arg + " needs a value");
+        return argv[++i];
+      };
+      if (arg == "--no-result") o.with_result = false;
+      else if (arg == "--device") o.device = value();
+      else if (arg == "--date") o.date_utc = value();
+      else if (arg == "--bias-offset-counts") o.bias_offset_counts = ParseTriple(value());
+      else if (arg == "--scale-offset-counts-per-mps2") o.scale_offset_counts_per_mps2 = ParseTriple(value());
+      else if (arg == "--misalignment-offset-rad") o.misalignment_offset_rad = ParseTriple(value());
+      else if (o.path.empty() && arg.rfind("--", 0) != 0) o.path = arg;
+      else throw accelcal::Error("unknown argument " + arg);
+    }
+    if (o.path.empty()) throw accelcal::Error("no output file");
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "accelcal_make_session: %s\nusage: accelcal_make_session OUT.db [--no-result] "
+                 "[--device SERIAL] [--date ISO8601] [--bias-offset-counts X,Y,Z] "
+                 "[--scale-offset-counts-per-mps2 X,Y,Z] [--misalignment-offset-rad YZ,ZY,ZX]\n", e.what());
     return 2;
   }
   try {
-    if (noise) {
-      MakeNoiseSession(argv[1], argv[3], argv[4], argv[5], argv[6], argv[7]);
-    } else {
-      MakeSession(argv[1], argc == 2);
-    }
+    MakeSession(o);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "accelcal_make_session: %s\n", e.what());
     return 1;

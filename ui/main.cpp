@@ -28,6 +28,8 @@ int main(int argc, char** argv) {
   accelcal::cli::SetupRecordCommand(app);
   accelcal::cli::SetupSessionsCommand(app);
   accelcal::cli::SetupExportCommand(app);
+  accelcal::cli::SetupExportCalCommand(app);
+  accelcal::cli::SetupHistoryCommand(app);
   accelcal::cli::SetupReportCommand(app);
   accelcal::cli::SetupWizardCommand(app);
   accelcal::cli::SetupAllanCommand(app);

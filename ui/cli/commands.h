@@ -16,6 +16,8 @@ void SetupSimulateCommand(CLI::App& app);
 void SetupRecordCommand(CLI::App& app);
 void SetupSessionsCommand(CLI::App& app);
 void SetupExportCommand(CLI::App& app);
+void SetupExportCalCommand(CLI::App& app);
+void SetupHistoryCommand(CLI::App& app);
 void SetupReportCommand(CLI::App& app);
 void SetupWizardCommand(CLI::App& app);
 void SetupAllanCommand(CLI::App& app);
