@@ -12,6 +12,8 @@
 #include "accelcal/fit/calibration_fit.h"
 #include "accelcal/io/calibration_file.h"
 #include "accelcal/report/fit_text.h"
+#include "accelcal/report/report_files.h"
+#include "accelcal/session/detail/utc_time.h"
 #include "accelcal/source/bench_control.h"
 #include "accelcal/wizard/leveling.h"
 #include "accelcal/wizard/quantity_input.h"
@@ -381,6 +383,18 @@ void WizardEngine::RunReport() {
   lines_ = SplitLines(FormatFitReport(cal, summary));
   lines_.push_back(adopt ? "Effects adopted: " + fmt::format("{}", fmt::join(d.adopted_names(), ", "))
                          : "Model: the nine-parameter base model");
+  if (options_.report_beside.empty()) return;
+  try {
+    ReportMeta meta;
+    meta.session_path = options_.report_beside;
+    meta.procedure = procedure_.title;
+    meta.source = source_.Describe();
+    meta.date_utc = detail::UtcNowIso8601();
+    for (const std::string& path : WriteSessionReports(journal_, meta, procedure_.limits, options_.report_beside))
+      lines_.push_back("Report written to " + path);
+  } catch (const Error& e) {
+    lines_.push_back(std::string("The report was not written: ") + e.what());
+  }
 }
 
 // ---- polling --------------------------------------------------------------------------------

@@ -39,6 +39,9 @@ struct WizardOptions {
   // Before the first capture of a run the sensor rests this long to measure the noise floor,
   // s; > 0.
   double quiet_period_s = 2.0;
+  // Non-empty: the report step also writes the calibration report beside this session file
+  // (report_files.h: SESSION.report.html and SESSION.report.txt). Empty: nothing is written.
+  std::string report_beside = {};
 
   std::string Validate() const;
 };
