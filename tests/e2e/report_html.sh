@@ -11,7 +11,8 @@
 #    http(s) URL appears at all (the page cannot make a network request);
 #  - --screenshot (1200x2000): a PNG whose IHDR says 1200x2000, decoded here (zlib + PNG row
 #    filters, python3's standard library only) to check it is not blank: enough non-white
-#    pixels, many distinct colours, and the report's accent blue present;
+#    pixels, enough dark ones (text, rules, plot lines), many distinct colours, and the
+#    report's accent blue present;
 #  - --print-to-pdf: a PDF of at least one page (the print stylesheet's path).
 # Usage: bash report_html.sh ACCELCAL SOURCE_DIR SHARED_DATA_DIR
 set -euo pipefail
@@ -113,7 +114,7 @@ while pos < len(png):
         idat += png[pos + 8:pos + 8 + n]
     pos += 12 + n
 raw, bpp = zlib.decompress(idat), 3 if ctype == 2 else 4
-stride, prev, non_white, colours, blue = w * bpp, bytearray(w * bpp), 0, set(), 0
+stride, prev, non_white, colours, blue, ink = w * bpp, bytearray(w * bpp), 0, set(), 0, 0
 for y in range(h):  # PNG row filters (ISO/IEC 15948, section 9)
     f, row = raw[y * (stride + 1)], bytearray(raw[y * (stride + 1) + 1:(y + 1) * (stride + 1)])
     for i in range(stride):
@@ -130,10 +131,12 @@ for y in range(h):  # PNG row filters (ISO/IEC 15948, section 9)
         px = bytes(row[x:x + 3])
         colours.add(px)
         if px != b"\xff\xff\xff": non_white += 1
+        if max(px) < 120: ink += 1
         if abs(px[0] - 0x1f) < 24 and abs(px[1] - 0x4e) < 24 and abs(px[2] - 0x79) < 24: blue += 1
     prev = row
 sampled = w * h // 2
 assert non_white > sampled * 0.05, f"screenshot nearly blank: {non_white} of {sampled} pixels not white"
+assert ink > sampled * 0.005, f"too little text or line work: {ink} dark pixels of {sampled}"
 assert len(colours) > 200, f"only {len(colours)} colours"
 assert blue > 500, f"the report's accent colour is missing ({blue} pixels)"
 
@@ -141,6 +144,6 @@ pdf = open(sys.argv[3], "rb").read()
 assert pdf[:5] == b"%PDF-", "not a PDF"
 pages = len(re.findall(rb"/Type\s*/Page\b", pdf))
 assert pages >= 1, "a PDF without pages"
-print(f"ok: 3 plots, {non_white}/{sampled} non-white sampled pixels, {len(colours)} colours, {pages} PDF pages")
+print(f"ok: 3 plots, {non_white}/{sampled} non-white and {ink} dark sampled pixels, {len(colours)} colours, {pages} PDF pages")
 PY
 echo ok

@@ -33,6 +33,13 @@ std::string Unit(const std::string& u) {
   return out;
 }
 
+// A unit inside an SVG label (plain text, UTF-8): m/s^2 -> m/s².
+std::string PlotUnit(std::string u) {
+  for (size_t at = u.find("^2"); at != std::string::npos; at = u.find("^2", at))
+    u.replace(at, 2, "\u00b2");
+  return u;
+}
+
 constexpr const char* kCss = R"CSS(
 :root { --ink: #1b1b1b; --muted: #5f6368; --rule: #c9ced6; --accent: #1f4e79; --pass: #1e7b34; --fail: #b3261e; }
 * { box-sizing: border-box; }
@@ -137,7 +144,7 @@ std::string ResidualPlot(const ReportModel& m) {
   SvgPlotOptions o;
   o.title = "Residual per capture, before and after each adopted effect";
   o.x_label = "capture id";
-  o.y_label = "residual |a| - |f| (m/s^2)";
+  o.y_label = PlotUnit("residual |a| - |f| (m/s^2)");
   o.zero_line = true;
   o.integer_x_ticks = true;
   SvgPlot plot(o);
@@ -163,8 +170,8 @@ std::string ResidualPlot(const ReportModel& m) {
 std::string MagnitudePlot(const ReportModel& m) {
   SvgPlotOptions o;
   o.title = "Measured magnitude against the reference";
-  o.x_label = "reference |f| (m/s^2)";
-  o.y_label = "calibrated |a| (m/s^2)";
+  o.x_label = PlotUnit("reference |f| (m/s^2)");
+  o.y_label = PlotUnit("calibrated |a| (m/s^2)");
   SvgPlot plot(o);
   SvgSeries ideal, stat, turn;
   ideal.name = "|a| = |f|";
@@ -269,7 +276,7 @@ std::string Captures(const ReportModel& m) {
 void AddStackedMarks(std::vector<SvgMark> marks, SvgPlot* plot) {
   std::sort(marks.begin(), marks.end(), [](const SvgMark& a, const SvgMark& b) { return a.y < b.y; });
   for (size_t k = 0; k < marks.size(); ++k) {
-    marks[k].label_dy_px = -8.0 - 13.0 * static_cast<double>(k);
+    marks[k].label_dy_px = -8.0 - 15.0 * static_cast<double>(k);
     plot->Mark(marks[k]);
   }
 }
@@ -277,8 +284,8 @@ void AddStackedMarks(std::vector<SvgMark> marks, SvgPlot* plot) {
 std::string AllanPlot(const AllanSection& a) {
   SvgPlotOptions o;
   o.title = "Allan deviation";
-  o.x_label = "averaging time tau (s)";
-  o.y_label = "Allan deviation (" + a.unit + ")";
+  o.x_label = "averaging time \u03c4 (s)";
+  o.y_label = PlotUnit("Allan deviation (" + a.unit + ")");
   o.log_x = o.log_y = true;
   o.height_px = 360;
   SvgPlot plot(o);
