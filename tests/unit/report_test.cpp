@@ -169,6 +169,20 @@ TEST(ReportModel, FromACalibrationFileAlone) {
   EXPECT_NEAR(m.noise_rms_mps2, std::sqrt(sum / n), 1e-15);
 }
 
+TEST(ReportModel, EffectFieldsOfTheWrongTypeShowAsAbsent) {
+  ReportInputs in;
+  in.calibration = ReadCalibrationFile(kDataDir + "calibration.json");
+  in.calibration.effects = json::array(
+      {{{"name", 3}, {"rms_before_mps2", "x"}, {"corrects_readings", "yes"}, {"parameters", 5}}});
+  const ReportModel m = BuildReportModel(in);
+  ASSERT_EQ(m.effects.size(), 1u);
+  EXPECT_EQ(m.effects[0].name, "?");
+  EXPECT_TRUE(std::isnan(m.effects[0].rms_before_mps2));
+  EXPECT_FALSE(m.effects[0].corrects_readings);
+  EXPECT_TRUE(m.effects[0].parameters.empty());
+  EXPECT_TRUE(Contains(RenderReportText(m), "Effect: ?"));
+}
+
 TEST(ReportModel, LimitsAreCheckedAgainstIndependentFigures) {
   ReportInputs in = FixtureInputs();
   const json j = ReadJson("calibration.json");

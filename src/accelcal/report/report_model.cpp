@@ -100,18 +100,25 @@ double JsonNumber(const json& j, const char* key) {
   return (j.contains(key) && j[key].is_number()) ? j[key].get<double>() : kNaN;
 }
 
+std::string JsonString(const json& j, const char* key, const std::string& fallback) {
+  return (j.contains(key) && j[key].is_string()) ? j[key].get<std::string>() : fallback;
+}
+
+// Effects come from the calibration file, which CalibrationFromJson reads loosely here: a field
+// of the wrong type shows as absent ("-"), never as an exception or a made-up number.
 ReportEffect ReadEffect(const json& e) {
   ReportEffect r;
-  r.name = e.value("name", std::string("?"));
+  r.name = JsonString(e, "name", "?");
   r.rms_before_mps2 = JsonNumber(e, "rms_before_mps2");
   r.rms_after_mps2 = JsonNumber(e, "rms_after_mps2");
   r.chi2_per_dof_before = JsonNumber(e, "chi2_per_dof_before");
   r.chi2_per_dof_after = JsonNumber(e, "chi2_per_dof_after");
-  r.corrects_readings = e.value("corrects_readings", false);
-  r.evidence = e.value("evidence", std::string());
-  const json params = e.value("parameters", json::array());
-  const json sigmas = e.value("uncertainty", json::array());
-  const json units = e.value("units", json::array());
+  r.corrects_readings = e.contains("corrects_readings") && e["corrects_readings"].is_boolean() &&
+                        e["corrects_readings"].get<bool>();
+  r.evidence = JsonString(e, "evidence", "");
+  const json params = e.contains("parameters") ? e["parameters"] : json::array();
+  const json sigmas = e.contains("uncertainty") ? e["uncertainty"] : json::array();
+  const json units = e.contains("units") ? e["units"] : json::array();
   // "parameters" is a list of values or an object name -> value (both shapes are read).
   if (params.is_object()) {
     for (const auto& [name, value] : params.items()) {
@@ -162,7 +169,7 @@ std::vector<ResidualStage> RefitStages(const ReportInputs& in, const std::vector
   LeastSquaresOptions solver = options.solver;
   solver.gravity_mps2 = options.gravity.gravity_mps2;
   for (const json& e : in.calibration.effects) {
-    const std::string name = e.value("name", std::string());
+    const std::string name = e.is_object() ? JsonString(e, "name", "") : "";
     const Effect* effect = FindEffect(name);
     if (effect == nullptr) throw InputError(in.calibration.source, 0, 0, "unknown effect '" + name + "'");
     effects.push_back(effect);
