@@ -126,6 +126,36 @@ TEST(ReportAnalyses, NoiseFixtureAndErrors) {
   EXPECT_TRUE(Contains(ExpectInputError([&] { ParseNoiseJson(j, "n.json"); }, "no unit").what(), "n.json"));
 }
 
+TEST(ReportAnalyses, NullsAndTheNoiseCommandsFileShape) {
+  json j = ReadJson("allan.json");
+  j["axes"]["x"]["adev"][0] = nullptr;
+  j["axes"]["x"]["adev_lo"][0] = nullptr;
+  j["axes"]["x"]["bias_instability"] = nullptr;
+  const AllanSection a = ParseAllanJson(j, "a.json");
+  EXPECT_TRUE(std::isnan(a.axes[0]->adev[0]));
+  EXPECT_TRUE(std::isnan(a.axes[0]->bias_instability));
+  EXPECT_EQ(a.axes[0]->adev[1], j["axes"]["x"]["adev"][1].get<double>());
+  j["axes"]["x"]["tau_s"][0] = nullptr;  // tau is never null
+  ExpectInputError([&] { ParseAllanJson(j, "a.json"); }, "null tau");
+
+  const json noise = {{"format", "accelcal-noise/1"},
+                      {"unit", "m/s^2"},
+                      {"records", json::array({{{"axes", {{"x", {{"std", 0.01}, {"density", 0.002}}},
+                                                          {"z", {{"std", 0.03}, {"density", nullptr}}}}}},
+                                               {{"axes", json::object()}}})},
+                      {"repeatability", {{"std_of_means", {0.001, nullptr, 0.003}}}}};
+  const NoiseSection n = ParseNoiseJson(noise, "n.json");
+  EXPECT_EQ(n.unit, "m/s^2");
+  EXPECT_EQ(n.source, "n.json, record 1 of 2");
+  ASSERT_TRUE(n.axes[0] && n.axes[2]);
+  EXPECT_FALSE(n.axes[1].has_value());
+  EXPECT_EQ(n.axes[0]->std, 0.01);
+  EXPECT_EQ(n.axes[0]->noise_density, 0.002);
+  EXPECT_EQ(n.axes[0]->bias_repeatability, 0.001);
+  EXPECT_TRUE(std::isnan(n.axes[2]->noise_density));
+  EXPECT_EQ(n.axes[2]->bias_repeatability, 0.003);
+}
+
 TEST(ReportAnalyses, ReadFromASessionResult) {
   json result = CalibrationToJson(ReadCalibrationFile(kDataDir + "calibration.json"));
   result["allan"] = ReadJson("allan.json");

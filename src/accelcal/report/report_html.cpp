@@ -306,7 +306,10 @@ std::string AllanPlot(const AllanSection& a) {
     // Read-offs: white-noise density at tau = 1 s, and the flat minimum (bias instability).
     if (std::isfinite(ax.noise_density) && ax.tau_s.front() <= 1.0 && ax.tau_s.back() >= 1.0)
       n_marks.push_back({1.0, ax.noise_density, fmt::format("{}: N {:.3g}", kAxisNames[i], ax.noise_density), kAxisColors[i]});
-    const size_t k = static_cast<size_t>(std::min_element(ax.adev.begin(), ax.adev.end()) - ax.adev.begin());
+    size_t k = 0;  // the curve's minimum, skipping points the analysis could not give (NaN)
+    for (size_t i2 = 0; i2 < ax.adev.size(); ++i2)
+      if (std::isfinite(ax.adev[i2]) && !(ax.adev[k] <= ax.adev[i2])) k = i2;
+    if (!std::isfinite(ax.adev[k])) continue;
     b_marks.push_back({ax.tau_s[k], ax.adev[k],
                        std::isfinite(ax.bias_instability) ? fmt::format("{}: B {:.3g}", kAxisNames[i], ax.bias_instability)
                                                           : fmt::format("{}: min", kAxisNames[i]),

@@ -31,13 +31,19 @@ double OptionalFinite(const json& j, const std::string& key, const std::string& 
   return v.get<double>();
 }
 
+// An array of finite numbers; with `null_ok`, null entries (a point the analysis could not
+// give, as `accelcal allan` writes them) become NaN.
 std::vector<double> NumberArray(const json& j, const std::string& key, const std::string& path,
-                                const std::string& source) {
+                                const std::string& source, bool null_ok) {
   std::vector<double> out;
-  if (!j.contains(key)) return out;
+  if (!j.contains(key) || j.at(key).is_null()) return out;
   const json& a = j.at(key);
   if (!a.is_array()) Fail(source, path + key, "must be an array of numbers");
   for (size_t i = 0; i < a.size(); ++i) {
+    if (null_ok && a[i].is_null()) {
+      out.push_back(kNaN);
+      continue;
+    }
     if (!a[i].is_number() || !std::isfinite(a[i].get<double>()))
       Fail(source, fmt::format("{}{}[{}]", path, key, i), "must be a finite number");
     out.push_back(a[i].get<double>());
@@ -246,24 +252,52 @@ AllanSection ParseAllanJson(const json& j, const std::string& source) {
     ax.bias_instability = OptionalFinite(x, "bias_instability", path, source);
     ax.random_walk = OptionalFinite(x, "random_walk", path, source);
     ax.max_drift = OptionalFinite(x, "max_drift", path, source);
-    ax.tau_s = NumberArray(x, "tau_s", path, source);
-    ax.adev = NumberArray(x, "adev", path, source);
-    ax.adev_lo = NumberArray(x, "adev_lo", path, source);
-    ax.adev_hi = NumberArray(x, "adev_hi", path, source);
+    ax.tau_s = NumberArray(x, "tau_s", path, source, false);
+    ax.adev = NumberArray(x, "adev", path, source, true);
+    ax.adev_lo = NumberArray(x, "adev_lo", path, source, true);
+    ax.adev_hi = NumberArray(x, "adev_hi", path, source, true);
     if (ax.adev.size() != ax.tau_s.size()) Fail(source, path + "adev", "must have as many values as tau_s");
     if (!ax.adev_lo.empty() && ax.adev_lo.size() != ax.tau_s.size())
       Fail(source, path + "adev_lo", "must have as many values as tau_s");
     if (!ax.adev_hi.empty() && ax.adev_hi.size() != ax.tau_s.size())
       Fail(source, path + "adev_hi", "must have as many values as tau_s");
     for (size_t k = 0; k < ax.tau_s.size(); ++k)
-      if (ax.tau_s[k] <= 0.0 || ax.adev[k] <= 0.0)
+      if (ax.tau_s[k] <= 0.0 || ax.adev[k] <= 0.0)  // false for a NaN (null) adev
         Fail(source, fmt::format("{}tau_s[{}]", path, k), "tau and adev must be positive (log axes)");
     a.axes[i] = ax;
   }
   return a;
 }
 
+// `accelcal noise -o FILE` (format "accelcal-noise/1"): the first record's std and density,
+// and the bias repeatability (std of the records' means) when there are several records.
+NoiseSection ParseNoiseReportJson(const json& j, const std::string& source) {
+  NoiseSection n;
+  n.unit = ReadUnit(j, source);
+  const json& records = j["records"];
+  if (!records.is_array() || records.empty() || !records[0].is_object())
+    Fail(source, "records", "must be a non-empty array of records");
+  n.source = records.size() > 1 ? fmt::format("{}, record 1 of {}", source, records.size()) : source;
+  const json& axes = ReadAxes(records[0], source);
+  std::vector<double> repeat;
+  if (j.contains("repeatability") && j["repeatability"].is_object())
+    repeat = NumberArray(j["repeatability"], "std_of_means", "repeatability.", source, true);
+  for (int i = 0; i < 3; ++i) {
+    if (!axes.contains(kAxisNames[i])) continue;
+    const std::string path = fmt::format("records[0].axes.{}.", kAxisNames[i]);
+    const json& x = axes[kAxisNames[i]];
+    if (!x.is_object()) Fail(source, path, "must be an object");
+    NoiseAxis ax;
+    ax.std = OptionalFinite(x, "std", path, source);
+    ax.noise_density = OptionalFinite(x, "density", path, source);
+    if (repeat.size() == 3) ax.bias_repeatability = repeat[static_cast<size_t>(i)];
+    n.axes[i] = ax;
+  }
+  return n;
+}
+
 NoiseSection ParseNoiseJson(const json& j, const std::string& source) {
+  if (j.is_object() && j.contains("records") && !j.contains("axes")) return ParseNoiseReportJson(j, source);
   NoiseSection n;
   n.source = source;
   n.unit = ReadUnit(j, source);

@@ -70,6 +70,9 @@ struct NoiseSection {
 
 // Strict readers: a wrong type, a non-finite number, an unknown unit or arrays of different
 // lengths throw InputError naming `source` and the field. At least one axis must be present.
+// Null figures (and null adev points, as `accelcal allan` writes them) read as NaN: absent.
+// ParseNoiseJson also reads `accelcal noise`'s file ("accelcal-noise/1": records[0]'s std and
+// density, bias repeatability = repeatability.std_of_means).
 AllanSection ParseAllanJson(const nlohmann::json& j, const std::string& source);
 NoiseSection ParseNoiseJson(const nlohmann::json& j, const std::string& source);
 nlohmann::json AllanToJson(const AllanSection& a);
