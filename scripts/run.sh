@@ -4,7 +4,7 @@
 # (e.g. --speed 1 for real time, --session FILE to resume one, --plain).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-./scripts/setup.sh
+./scripts/setup.sh --no-test   # Chromium is for the tests only
 ./scripts/build.sh
 # --speed 20: the simulated bench runs 20 times faster than real time, so a whole session of
 # 18 ten-second captures takes a minute or two of pressing Enter.

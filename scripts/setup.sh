@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # Installs the Debian packages accelcal needs, only those missing. Debian/Ubuntu, as root or
 # with sudo. Safe to run again.
+#   setup.sh            what building, running and testing need
+#   setup.sh --no-test  only what building and running need
 set -euo pipefail
 
 packages=(
@@ -8,6 +10,9 @@ packages=(
   libeigen3-dev libnlopt-cxx-dev libncurses-dev libsqlite3-dev libtomlplusplus-dev
   nlohmann-json3-dev libcli11-dev libfmt-dev libgtest-dev libbenchmark-dev
 )
+# Only the tests need these: headless Chromium renders the HTML report (tests/e2e/report_html.sh).
+test_packages=(chromium)
+[ "${1:-}" = "--no-test" ] || packages+=("${test_packages[@]}")
 
 missing=()
 for p in "${packages[@]}"; do

@@ -41,6 +41,6 @@ run_wizard >"$work/final" 2>&1 || { tail "$work/final" >&2; fail "final run fail
 "$accelcal" sessions "$work/s.db" >"$work/list"
 grep -Eq ' 18 (open|done) +yes$' "$work/list" || { cat "$work/list"; fail "session not complete"; }
 "$accelcal" report "$work/s.db" >"$work/report" || fail "report"
-grep -q "^parameters (1-sigma):" "$work/report" || fail "report text"
+grep -q "^2. Parameters (1-sigma uncertainties)$" "$work/report" || fail "report text"
 [ "$previous" -eq 18 ] || [ "$resumed" -gt 0 ] || fail "no round was interrupted mid-session"
 echo "ok: $resumed resumed runs"

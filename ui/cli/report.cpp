@@ -1,13 +1,19 @@
-// `accelcal report`: a session's calibration, as text or as the calibration file.
+// `accelcal report`: the calibration report of a session or of a calibration file, as text,
+// HTML or JSON; or the session's calibration file itself.
 #include <fstream>
 #include <iostream>
 #include <memory>
+#include <sstream>
 
 #include <fmt/core.h>
 
 #include "accelcal/error.h"
 #include "accelcal/io/calibration_file.h"
-#include "accelcal/report/calibration_text.h"
+#include "accelcal/report/report_files.h"
+#include "accelcal/report/report_html.h"
+#include "accelcal/report/report_json.h"
+#include "accelcal/report/report_model.h"
+#include "accelcal/report/report_text.h"
 #include "accelcal/session/session_paths.h"
 #include "accelcal/session/session_store.h"
 #include "cli/commands.h"
@@ -16,18 +22,16 @@ namespace accelcal::cli {
 namespace {
 
 struct ReportCommandOptions {
-  std::string session;           // path or name in the default directory
-  std::string format = "text";   // text | json
+  std::string input;             // session path or name, or a calibration file (JSON)
+  std::string format = "text";   // text | html | json | calibration
   std::string output_path;       // empty: stdout
+  std::string allan_path;        // allan.json (README "Reports"); empty: the session's, if any
+  std::string noise_path;        // noise.json; empty: the session's, if any
+  std::string procedure_path;    // limits from here; empty: the default procedure when it matches
 };
 
-std::string SessionHeader(const SessionInfo& info) {
-  return fmt::format("session {} ({})\ncreated {}, updated {}, {}\nprocedure {}, source {}, device "
-                     "{}, operator {}\n{} captures accepted\n",
-                     info.name, info.path, info.created_utc, info.updated_utc,
-                     SessionStateToString(info.state), info.procedure.empty() ? "-" : info.procedure,
-                     info.source.empty() ? "-" : info.source, info.device.empty() ? "-" : info.device,
-                     info.operator_name.empty() ? "-" : info.operator_name, info.num_captures);
+std::string DefaultProcedurePath() {
+  return std::string(ACCELCAL_PROCEDURES_DIR) + "/seed_calibration.toml";
 }
 
 void WriteText(const std::string& path, const std::string& text) {
@@ -35,16 +39,34 @@ void WriteText(const std::string& path, const std::string& text) {
     std::cout << text;
     return;
   }
-  std::ofstream out(path, std::ios::binary | std::ios::trunc);
-  out << text;
-  out.close();
-  if (!out) throw Error(fmt::format("cannot write {}", path));
+  WriteReportFile(path, text);
 }
 
-void RunReport(const ReportCommandOptions& o) {
+nlohmann::json ReadJsonFile(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw Error(fmt::format("cannot open '{}'", path));
+  std::stringstream text;
+  text << in.rdbuf();
+  try {
+    return nlohmann::json::parse(text.str());
+  } catch (const nlohmann::json::parse_error&) {
+    throw InputError(path, 0, 0, "not valid JSON");
+  }
+}
+
+// A calibration file is JSON (its first non-blank byte is '{'); a session is SQLite.
+bool LooksLikeJson(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  char c = 0;
+  while (in.get(c))
+    if (c != ' ' && c != '\n' && c != '\r' && c != '\t') return c == '{';
+  return false;
+}
+
+ReportInputs FromSession(const std::string& input, nlohmann::json* calibration_json) {
   SessionOpenOptions read_only;
   read_only.read_only = true;
-  const std::string path = ResolveSessionPath(o.session);
+  const std::string path = ResolveSessionPath(input);
   const std::unique_ptr<SessionStore> store = SessionStore::Open(path, read_only);
   const SessionInfo info = store->Info();
   const std::optional<nlohmann::json> result = store->Result();
@@ -54,14 +76,63 @@ void RunReport(const ReportCommandOptions& o) {
   if (!result)
     throw Error(fmt::format("session {} has no calibration yet: {} captures accepted; run the "
                             "wizard to finish it", path, info.num_captures));
-  // Checked strictly even for json, so a damaged result is never handed on as good.
-  const Calibration cal = CalibrationFromJson(*result, path);
-  if (o.format == "json") {
-    WriteText(o.output_path, result->dump(2) + "\n");
+  *calibration_json = *result;
+  ReportInputs in = ReportInputsFromJournal(*store, path);
+  in.meta.device = info.device;
+  in.meta.operator_name = info.operator_name;
+  in.meta.date_utc = info.updated_utc;
+  in.meta.session_name = info.name;
+  in.meta.session_path = info.path;
+  in.meta.procedure = info.procedure;
+  in.meta.source = info.source;
+  return in;
+}
+
+void AddLimits(const ReportCommandOptions& o, ReportInputs* in) {
+  if (!o.procedure_path.empty()) {
+    const Procedure p = LoadProcedure(o.procedure_path);
+    in->limits = p.limits;
+    if (in->meta.procedure.empty()) in->meta.procedure = p.title;
+    return;
+  }
+  // The session names its procedure by title: its limits are the default procedure's only when
+  // that is the one it ran (a calibration file alone states no procedure).
+  if (in->meta.procedure.empty()) return;
+  try {
+    const Procedure p = LoadProcedure(DefaultProcedurePath());
+    if (p.title == in->meta.procedure) in->limits = p.limits;
+  } catch (const Error&) {
+    // No default procedure installed: the report says no limits were stated.
+  }
+}
+
+void RunReport(const ReportCommandOptions& o) {
+  ReportInputs in;
+  nlohmann::json calibration_json;
+  if (LooksLikeJson(o.input)) {
+    calibration_json = ReadJsonFile(o.input);
+    in.calibration = CalibrationFromJson(calibration_json, o.input);
+    ReadAnalysesFromResult(calibration_json, o.input, &in);
+  } else {
+    in = FromSession(o.input, &calibration_json);
+  }
+  if (o.format == "calibration") {
+    WriteText(o.output_path, calibration_json.dump(2) + "\n");
     if (!o.output_path.empty()) std::cout << fmt::format("calibration written to {}\n", o.output_path);
     return;
   }
-  WriteText(o.output_path, SessionHeader(info) + FormatCalibrationText(cal));
+  AddLimits(o, &in);
+  if (!o.allan_path.empty()) in.allan = ParseAllanJson(ReadJsonFile(o.allan_path), o.allan_path);
+  if (!o.noise_path.empty()) in.noise = ParseNoiseJson(ReadJsonFile(o.noise_path), o.noise_path);
+  const ReportModel model = BuildReportModel(in);
+  std::string text;
+  if (o.format == "html") text = RenderReportHtml(model);
+  else if (o.format == "json") text = ReportToJson(model).dump(2) + "\n";
+  else text = RenderReportText(model);
+  WriteText(o.output_path, text);
+  if (!o.output_path.empty())
+    std::cout << fmt::format("{} report written to {} ({})\n", o.format, o.output_path,
+                             VerdictToString(model.verdict));
 }
 
 }  // namespace
@@ -70,16 +141,27 @@ void SetupReportCommand(CLI::App& app) {
   auto opts = std::make_shared<ReportCommandOptions>();
   CLI::App* sub = app.add_subcommand(
       "report",
-      "Print a session's calibration as text (parameters with 1-sigma uncertainties, residuals,\n"
-      "every capture), or write it as the calibration file (JSON) that `accelcal apply` reads.\n\n"
+      "The calibration report of a session or of a calibration file: device, operator, date,\n"
+      "gravity, procedure, captures, parameters with 1-sigma uncertainties, residuals, the\n"
+      "diagnosis before/after, noise and drift, pass/fail against the procedure's limits.\n"
+      "As text (80 columns, for paper), one self-contained HTML file with plots, or JSON;\n"
+      "--format calibration writes the session's calibration file that `accelcal apply` reads.\n\n"
       "Examples:\n"
       "  accelcal report 20250301T140509Z\n"
-      "  accelcal report /tmp/s.db --format json -o cal.json");
-  sub->add_option("session", opts->session, "Session file, or a session's name in the default directory")
+      "  accelcal report /tmp/s.db --format html -o report.html --allan allan.json\n"
+      "  accelcal report cal.json --format json\n"
+      "  accelcal report /tmp/s.db --format calibration -o cal.json");
+  sub->add_option("input", opts->input,
+                  "Session file, a session's name in the default directory, or a calibration file")
       ->required();
-  sub->add_option("--format", opts->format, "text or json (the calibration file)")
-      ->check(CLI::IsMember({"text", "json"}))->capture_default_str();
+  sub->add_option("--format", opts->format, "text, html, json (the report) or calibration")
+      ->check(CLI::IsMember({"text", "html", "json", "calibration"}))->capture_default_str();
   sub->add_option("-o,--output", opts->output_path, "Write here instead of standard output");
+  sub->add_option("--allan", opts->allan_path, "Allan-deviation analysis (JSON) to include");
+  sub->add_option("--noise", opts->noise_path, "Noise analysis (JSON) to include");
+  sub->add_option("--procedure", opts->procedure_path,
+                  "Procedure whose [limits] decide pass/fail (default: the seed procedure, when "
+                  "the session ran it)");
   sub->callback([opts] { RunReport(*opts); });
 }
 

@@ -49,6 +49,7 @@ int RunWizard(const WizardCommandOptions& options) {
   wizard.default_operator = OperatorFromEnvironment();
   wizard.default_device = options.source == "sim" ? "SIM-0001" : "";
   wizard.gravity = options.gravity;
+  wizard.report_beside = session;
   WizardEngine engine(procedure, *source, *journal, wizard);
 
   const bool terminal = ::isatty(STDIN_FILENO) == 1 && ::isatty(STDOUT_FILENO) == 1;

@@ -54,6 +54,19 @@ CaptureDefaults ReadChecks(TomlTableReader& r, Procedure& p) {
   return d;
 }
 
+ProcedureLimits ReadLimits(TomlTableReader& r) {
+  ProcedureLimits l;
+  l.max_residual_rms_mps2 = r.Number("max_residual_rms_mps2", kNaN, NumberRange::kPositive);
+  l.max_residual_rms_noise = r.Number("max_residual_rms_noise", kNaN, NumberRange::kPositive);
+  l.max_bias_sigma_counts = r.Number("max_bias_sigma_counts", kNaN, NumberRange::kPositive);
+  l.max_scale_sigma_ppm = r.Number("max_scale_sigma_ppm", kNaN, NumberRange::kPositive);
+  l.max_misalignment_sigma_rad = r.Number("max_misalignment_sigma_rad", kNaN, NumberRange::kPositive);
+  const std::int64_t n = r.Integer("min_captures", 0);
+  if (n < 0 || n > 100000) r.Fail(*r.Get("min_captures"), "min_captures", "must be 0..100000");
+  l.min_captures = static_cast<int>(n);
+  return l;
+}
+
 SensorAxis ReadAxis(TomlTableReader& r, std::string_view key, SensorAxis fallback) {
   const std::string text = r.String(key, std::string(SensorAxisToString(fallback)));
   const std::optional<SensorAxis> axis = StringToSensorAxis(text);
@@ -192,6 +205,12 @@ std::vector<Eigen::Vector3d> Procedure::TiltedPoses() const {
   return out;
 }
 
+bool ProcedureLimits::Any() const {
+  return std::isfinite(max_residual_rms_mps2) || std::isfinite(max_residual_rms_noise) ||
+         std::isfinite(max_bias_sigma_counts) || std::isfinite(max_scale_sigma_ppm) ||
+         std::isfinite(max_misalignment_sigma_rad) || min_captures > 0;
+}
+
 Procedure ParseProcedure(std::string_view toml_text, const std::string& source_name) {
   const toml::table doc = detail::ParseTomlDocument(toml_text, source_name);
   Procedure p;
@@ -207,6 +226,7 @@ Procedure ParseProcedure(std::string_view toml_text, const std::string& source_n
   CaptureDefaults defaults;
   WithTable(root, "checks", source_name,
             [&](TomlTableReader& r) { defaults = ReadChecks(r, p); });
+  WithTable(root, "limits", source_name, [&](TomlTableReader& r) { p.limits = ReadLimits(r); });
   ReadSteps(root, defaults, source_name, p);
   root.Finish();
   return p;

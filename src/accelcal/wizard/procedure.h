@@ -60,6 +60,19 @@ struct ProcedureStep {
   static constexpr double kDefaultRecordChunkS = 10.0;
 };
 
+// Pass/fail limits of the calibration, checked by the report ([limits] in the procedure file).
+// NaN (or 0 for min_captures): no limit stated. Units in the names.
+struct ProcedureLimits {
+  double max_residual_rms_mps2 = kNaN;      // RMS of the final fit's residuals
+  double max_residual_rms_noise = kNaN;     // same, over the RMS of the captures' own sigma
+  double max_bias_sigma_counts = kNaN;      // largest 1-sigma of bias_x/y/z
+  double max_scale_sigma_ppm = kNaN;        // largest 1-sigma of scale_i over scale_i, ppm
+  double max_misalignment_sigma_rad = kNaN; // largest 1-sigma of a_yz, a_zy, a_zx
+  int min_captures = 0;                     // captures used by the fit
+
+  bool Any() const;  // at least one limit stated
+};
+
 struct Procedure {
   std::string title;
   std::string source_name;  // the file it came from
@@ -70,6 +83,7 @@ struct Procedure {
   double std_multiplier = 1.5;        // static stability: std limit in noise-floor sigmas
   double trend_multiplier = 2.0;      // static stability: trend limit in noise-floor sigmas
   double turntable_tolerance = 0.10;  // relative centripetal mismatch accepted
+  ProcedureLimits limits;             // [limits]; all absent when the table is
   std::vector<ProcedureStep> steps;
 
   // The poses of the static steps other than the six faces (to name a wrong pose).

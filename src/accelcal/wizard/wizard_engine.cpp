@@ -11,12 +11,14 @@
 #include "accelcal/analysis/noise_analysis.h"
 #include "accelcal/capture_screening.h"
 #include "accelcal/error.h"
-#include "accelcal/io/allan_file.h"
 #include "accelcal/fit/calibration_fit.h"
+#include "accelcal/io/allan_file.h"
 #include "accelcal/io/calibration_file.h"
 #include "accelcal/report/allan_text.h"
 #include "accelcal/report/fit_text.h"
 #include "accelcal/report/noise_text.h"
+#include "accelcal/report/report_files.h"
+#include "accelcal/session/detail/utc_time.h"
 #include "accelcal/source/bench_control.h"
 #include "accelcal/wizard/leveling.h"
 #include "accelcal/wizard/quantity_input.h"
@@ -480,6 +482,18 @@ void WizardEngine::RunReport() {
   lines_ = SplitLines(FormatFitReport(cal, summary));
   lines_.push_back(adopt ? "Effects adopted: " + fmt::format("{}", fmt::join(d.adopted_names(), ", "))
                          : "Model: the nine-parameter base model");
+  if (options_.report_beside.empty()) return;
+  try {
+    ReportMeta meta;
+    meta.session_path = options_.report_beside;
+    meta.procedure = procedure_.title;
+    meta.source = source_.Describe();
+    meta.date_utc = detail::UtcNowIso8601();
+    for (const std::string& path : WriteSessionReports(journal_, meta, procedure_.limits, options_.report_beside))
+      lines_.push_back("Report written to " + path);
+  } catch (const Error& e) {
+    lines_.push_back(std::string("The report was not written: ") + e.what());
+  }
 }
 
 // The analysis of a record step: read back from the journal one chunk at a time (a 12-hour
@@ -501,6 +515,12 @@ void WizardEngine::RunAnalysis() {
                                                     RecordAnalysisOptions().drift.window_s);
       lines_ = SplitLines(FormatAllanText(j));
       analysis_outcome_ = AllanOutcome(j);
+      if (!options_.report_beside.empty()) {
+        const std::string path = FileBesideSession(options_.report_beside, ".allan.json");
+        WriteAllanFile(path, j);
+        lines_.push_back(fmt::format("Allan analysis written to {} (accelcal report --allan, "
+                                     "accelcal export-cal --to kalibr --allan).", path));
+      }
     } else {
       analysis::NoiseRecord record{s.record_step, "", ReadRecord(journal_, s.record_step).samples};
       const analysis::NoiseReport n = analysis::AnalyzeNoise({record});

@@ -50,6 +50,9 @@ struct WizardOptions {
   // The computer's clock for record gaps, s since the Unix epoch; empty = the system clock
   // (tests give their own).
   std::function<double()> wall_now_s;
+  // Non-empty: the report step also writes the calibration report beside this session file
+  // (report_files.h: SESSION.report.html and SESSION.report.txt). Empty: nothing is written.
+  std::string report_beside = {};
 
   std::string Validate() const;
 };

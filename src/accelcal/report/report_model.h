@@ -1,0 +1,186 @@
+// The calibration report's content, gathered once so that the three renderers (report_text.h,
+// report_html.h, report_json.h) show the same numbers and never derive any themselves.
+//
+// Built from a calibration (the calibration file's content, io/calibration_file.h) plus, when
+// the report comes from a session, what the session recorded: its metadata (device, operator,
+// dates), the captures with their raw samples (per-capture noise, temperature range, and the
+// per-capture residuals before and after each adopted effect, by refitting the base model and
+// each prefix of the adopted effects), the procedure's pass/fail limits, and optional noise and
+// Allan-deviation analyses (JSON, shapes below). Whatever is absent is reported as
+// "not recorded"; nothing is guessed.
+//
+// Units: SI (m/s^2, s, degC) except where a name says counts; the noise and Allan sections keep
+// the unit their JSON states ("counts" or "m/s^2").
+#pragma once
+
+#include <array>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "accelcal/capture.h"
+#include "accelcal/io/calibration_file.h"
+#include "accelcal/wizard/procedure.h"
+#include "accelcal/wizard/session_journal.h"
+
+namespace accelcal {
+
+// Who, what, when, where. Empty strings mean "not recorded".
+struct ReportMeta {
+  std::string device;         // serial, as typed
+  std::string operator_name;  // as typed
+  std::string date_utc;       // when the calibration was made (ISO 8601)
+  std::string place;          // as typed (input key "place"); the gravity's location is separate
+  std::string session_name;
+  std::string session_path;
+  std::string procedure;      // the procedure's title
+  std::string source;         // the sample source ("sim", "serial:/dev/ttyUSB0")
+};
+
+// One axis of an Allan-deviation analysis (the shape of allan.json, README "Reports").
+struct AllanAxis {
+  double noise_density = kNaN;     // unit/sqrt(Hz)
+  double bias_instability = kNaN;  // unit
+  double random_walk = kNaN;       // unit*sqrt(Hz) = unit/sqrt(s) (rate random walk K); NaN when absent
+  double max_drift = kNaN;         // unit
+  std::vector<double> tau_s, adev, adev_lo, adev_hi;  // same length; lo/hi may be empty
+};
+
+struct AllanSection {
+  std::string unit;                // "counts" or "m/s^2"
+  double rate_hz = kNaN;
+  std::array<std::optional<AllanAxis>, 3> axes;  // x, y, z; absent axes stay empty
+  std::string source;              // file or "session result"
+};
+
+struct NoiseAxis {
+  double std = kNaN;                 // unit
+  double noise_density = kNaN;       // unit/sqrt(Hz)
+  double bias_repeatability = kNaN;  // unit
+};
+
+struct NoiseSection {
+  std::string unit;
+  std::array<std::optional<NoiseAxis>, 3> axes;
+  std::string source;
+};
+
+// Strict readers: a wrong type, a non-finite number, an unknown unit or arrays of different
+// lengths throw InputError naming `source` and the field. At least one axis must be present.
+// Null figures (and null adev points, as `accelcal allan` writes them) read as NaN: absent.
+// ParseNoiseJson also reads `accelcal noise`'s file ("accelcal-noise/1": records[0]'s std and
+// density, bias repeatability = repeatability.std_of_means).
+AllanSection ParseAllanJson(const nlohmann::json& j, const std::string& source);
+NoiseSection ParseNoiseJson(const nlohmann::json& j, const std::string& source);
+nlohmann::json AllanToJson(const AllanSection& a);
+nlohmann::json NoiseToJson(const NoiseSection& n);
+
+struct ReportCapture {
+  CaptureRecord record;
+  double noise_counts = kNaN;  // RMS over the axes of the samples' std; NaN without samples
+  double temp_min_c = kNaN;
+  double temp_max_c = kNaN;
+  // |a^p| of the final model = reference + residual, m/s^2; NaN when not used.
+  double magnitude_mps2() const { return record.reference_mps2 + record.residual_mps2; }
+};
+
+struct ReportParameter {
+  std::string name, unit;
+  double value = kNaN;
+  double sigma = kNaN;  // 1-sigma
+};
+
+// The residuals of every capture under one model: the base model, then after each adopted effect.
+struct ResidualStage {
+  std::string name;                    // "base model", "+ temperature_bias", ...
+  std::vector<double> residual_mps2;   // one per ReportModel::captures entry; NaN when not used
+  double rms_mps2 = kNaN;
+};
+
+struct ReportEffect {
+  std::string name;
+  double rms_before_mps2 = kNaN;
+  double rms_after_mps2 = kNaN;
+  double chi2_per_dof_before = kNaN;
+  double chi2_per_dof_after = kNaN;
+  bool corrects_readings = false;
+  std::string evidence;
+  std::vector<ReportParameter> parameters;
+};
+
+struct LimitCheck {
+  std::string what;      // "residual RMS"
+  std::string unit;      // "m/s^2"
+  double value = kNaN;   // measured
+  double limit = kNaN;
+  bool at_least = false; // true: value >= limit passes; false: value <= limit passes
+  bool pass = false;
+};
+
+enum class Verdict { kPass, kFail, kNoLimits };
+std::string_view VerdictToString(Verdict v);  // "PASS", "FAIL", "NO LIMITS STATED"
+
+struct ReportModel {
+  ReportMeta meta;
+  std::string gravity_text;          // GravitySpec::Describe()
+  double gravity_mps2 = kNaN;
+  std::string fit_source;            // the calibration's "source"
+  std::string tool;                  // "accelcal X.Y.Z" that made the report
+  std::vector<ReportParameter> parameters;  // the nine, in ParameterIndex order
+  // Fit statistics (the calibration's "fit"); NaN / empty when the file lacks them.
+  std::string termination, optimizer;
+  int captures_used = 0;
+  int dof = 0;
+  double chi2_per_dof = kNaN;
+  double condition_number = kNaN;
+  std::vector<std::string> warnings;
+  double residual_rms_mps2 = kNaN;
+  double residual_max_abs_mps2 = kNaN;
+  double noise_rms_mps2 = kNaN;      // RMS of the used captures' sigma: what noise explains
+  std::vector<ReportCapture> captures;
+  int captures_left_out = 0;
+  std::vector<ResidualStage> stages; // base first; only the final one from a file alone
+  std::vector<ReportEffect> effects; // adopted, in order
+  double temp_min_c = kNaN;          // over all samples of all captures; NaN: not recorded
+  double temp_max_c = kNaN;
+  std::optional<NoiseSection> noise;
+  std::optional<AllanSection> allan;
+  std::vector<LimitCheck> checks;
+  Verdict verdict = Verdict::kNoLimits;
+};
+
+struct ReportInputs {
+  Calibration calibration;
+  ReportMeta meta;
+  // The session's captures with their samples; empty when the report comes from a file alone.
+  std::vector<Capture> captures;
+  std::optional<ProcedureLimits> limits;
+  std::optional<AllanSection> allan;
+  std::optional<NoiseSection> noise;
+};
+
+// Gathers everything. Refits (base model and each prefix of the adopted effects) only when
+// `inputs.captures` is non-empty. Throws InputError when an adopted effect is unknown.
+ReportModel BuildReportModel(const ReportInputs& inputs);
+
+// Device, operator and place from a journal's inputs (keys "device", "operator", "place" at
+// any step; the latest step id wins when two steps hold one).
+void FillMetaFromInputs(const std::map<std::string, std::map<std::string, std::string>>& inputs,
+                        ReportMeta* meta);
+
+// The "allan" and "noise" keys of a session's result JSON, when present (strictly read).
+void ReadAnalysesFromResult(const nlohmann::json& result, const std::string& source,
+                            ReportInputs* inputs);
+
+// The inputs a journal holds: its result as the calibration (InputError naming `source_name`
+// when damaged; Error when there is none yet), its captures, device/operator/place, and the
+// result's "allan"/"noise" analyses. Limits and the rest of the meta are the caller's.
+ReportInputs ReportInputsFromJournal(const SessionJournal& journal, const std::string& source_name);
+
+// Text for an absent value in every renderer.
+inline constexpr const char* kNotRecorded = "not recorded";
+
+}  // namespace accelcal
