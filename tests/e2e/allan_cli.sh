@@ -61,6 +61,16 @@ expect 0 "$accelcal" allan "$work/short.txt" --calibration "$work/cal.json" -o "
 check "x noise density in m/s^2" "$(jq .axes.x.noise_density "$work/si.json")" \
   "$(awk -v n="$n_true" 'BEGIN { print n / 34.62 }')" 0.10
 
+# Kalibr's imu.yaml: the largest axis's N in m/s^2/sqrt(Hz); needs the calibration.
+expect 0 "$accelcal" allan "$work/short.txt" --calibration "$work/cal.json" --kalibr "$work/imu.yaml"
+worst=$(jq '[.axes[].noise_density] | max' "$work/si.json")
+got=$(awk '/^accelerometer_noise_density:/ { print $2 }' "$work/imu.yaml")
+check "kalibr noise density" "$got" "$worst" 1e-6
+grep -q '^update_rate: 100' "$work/imu.yaml" || fail "kalibr update_rate: $(cat "$work/imu.yaml")"
+grep -q '^accelerometer_random_walk: [0-9]' "$work/imu.yaml" || fail "kalibr random walk"
+expect 1 "$accelcal" allan "$work/short.txt" --kalibr "$work/imu.yaml"
+grep -q "Kalibr wants m/s^2" "$work/err" || fail "kalibr without calibration: $(cat "$work/err")"
+
 # Errors: a missing file; a malformed line named by file and line.
 expect 1 "$accelcal" allan "$work/none.txt"
 grep -q "cannot open" "$work/err" || fail "missing file: $(cat "$work/err")"

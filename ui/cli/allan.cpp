@@ -1,17 +1,19 @@
 // `accelcal allan`: the Allan deviation and the IEEE 952 read-offs of a long static record.
+#include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <iostream>
 #include <memory>
 #include <optional>
-
-#include <algorithm>
 
 #include <fmt/core.h>
 #include <fmt/format.h>
 
 #include "accelcal/analysis/analyze_recording.h"
 #include "accelcal/error.h"
+#include "accelcal/export/kalibr_imu_yaml.h"
 #include "accelcal/io/allan_file.h"
+#include "accelcal/io/atomic_write.h"
 #include "accelcal/io/calibration_file.h"
 #include "accelcal/report/allan_text.h"
 #include "accelcal/session/session_store.h"
@@ -25,9 +27,27 @@ struct AllanCommandOptions {
   std::string step;             // the session's record step; empty: its only (or first) one
   std::string calibration_path;  // empty: figures in counts
   std::string output_path;       // allan.json; empty: none
+  std::string kalibr_path;       // imu.yaml; empty: none
   double rate_hz = kNaN;         // NaN: from the time stamps
   double drift_window_s = 60.0;
 };
+
+// Kalibr's imu.yaml from the analysis: the worst axis of each figure (Kalibr takes one).
+void WriteKalibr(const AllanCommandOptions& o, const nlohmann::json& allan, const Calibration& cal) {
+  const AllanNoiseFigures f = AllanNoiseForKalibr(allan, cal, o.recording_path);
+  if (!std::isfinite(f.noise_density_mps2_per_sqrt_hz) || !std::isfinite(f.random_walk_mps3_per_sqrt_hz))
+    throw Error("--kalibr: the record gives no noise density or random walk (too short?)");
+  KalibrImuYamlOptions k;
+  k.accelerometer_noise_density = f.noise_density_mps2_per_sqrt_hz;
+  k.accelerometer_random_walk = f.random_walk_mps3_per_sqrt_hz;
+  k.update_rate_hz = allan["rate_hz"].get<double>();
+  k.comment = fmt::format("accelcal allan {}: noise density from axis {}, random walk from axis {} "
+                          "(the largest)", o.recording_path, f.noise_density_axis, f.random_walk_axis);
+  const ExportResult r = WriteKalibrImuYaml(k);
+  WriteFileAtomically(o.kalibr_path, r.text);
+  std::cout << fmt::format("Kalibr imu.yaml written to {}\n", o.kalibr_path);
+  for (const std::string& c : r.cannot_hold) std::cout << fmt::format("  note: {}\n", c);
+}
 
 // A session file (SQLite) rather than a recording: its first 16 bytes say so.
 bool IsSessionFile(const std::string& path) {
@@ -39,10 +59,7 @@ bool IsSessionFile(const std::string& path) {
 
 // The record of a wizard session (the drift procedure's), read chunk by chunk.
 RecordAnalysis AnalyzeSessionRecord(const AllanCommandOptions& o, const RecordAnalysisOptions& options,
-                                    std::string* source) {
-  if (!o.calibration_path.empty())
-    throw Error("--calibration applies to recording files; a session's record is analysed in "
-                "counts (export it with accelcal record, or apply the calibration first)");
+                                    const std::optional<Calibration>& cal, std::string* source) {
   SessionOpenOptions read_only;
   read_only.read_only = true;
   const std::unique_ptr<SessionStore> store = SessionStore::Open(o.recording_path, read_only);
@@ -55,7 +72,7 @@ RecordAnalysis AnalyzeSessionRecord(const AllanCommandOptions& o, const RecordAn
     throw Error(fmt::format("session {} has no record at step '{}'; its records: {}",
                             o.recording_path, step, fmt::join(steps, ", ")));
   *source = o.recording_path + ":" + step;
-  return AnalyzeJournalRecord(*store, step, options);
+  return AnalyzeJournalRecord(*store, step, options, cal);
 }
 
 void RunAllan(const AllanCommandOptions& o) {
@@ -63,12 +80,14 @@ void RunAllan(const AllanCommandOptions& o) {
   options.rate_hz = o.rate_hz;
   options.drift.window_s = o.drift_window_s;
   std::string source = o.recording_path;
+  std::optional<Calibration> cal;
+  if (!o.calibration_path.empty()) cal = ReadCalibrationFile(o.calibration_path);
+  if (!o.kalibr_path.empty() && !cal)
+    throw Error("--kalibr: Kalibr wants m/s^2; give the sensor's --calibration");
   RecordAnalysis analysis;
   if (o.recording_path != "-" && IsSessionFile(o.recording_path)) {
-    analysis = AnalyzeSessionRecord(o, options, &source);
+    analysis = AnalyzeSessionRecord(o, options, cal, &source);
   } else {
-    std::optional<Calibration> cal;
-    if (!o.calibration_path.empty()) cal = ReadCalibrationFile(o.calibration_path);
     analysis = AnalyzeRecordingFile(o.recording_path, options, cal);
   }
   if (analysis.samples < 2)
@@ -79,6 +98,7 @@ void RunAllan(const AllanCommandOptions& o) {
     WriteAllanFile(o.output_path, allan);
     std::cout << fmt::format("\nAllan analysis written to {}\n", o.output_path);
   }
+  if (!o.kalibr_path.empty()) WriteKalibr(o, allan, *cal);
 }
 
 }  // namespace
@@ -104,6 +124,8 @@ void SetupAllanCommand(CLI::App& app) {
                   "Calibration file: figures in m/s^2 instead of counts")
       ->check(CLI::ExistingFile);
   sub->add_option("-o,--output", opts->output_path, "Write the analysis (allan.json) here");
+  sub->add_option("--kalibr", opts->kalibr_path,
+                  "Also write Kalibr's imu.yaml (needs --calibration: Kalibr wants m/s^2)");
   sub->add_option("--rate-hz", opts->rate_hz,
                   "Sample rate, Hz (default: the median interval of the first samples)")
       ->check(CLI::PositiveNumber);

@@ -35,13 +35,17 @@ RecordAnalysis AnalyzeRecordingFile(const std::string& path, const RecordAnalysi
 namespace accelcal {
 
 RecordAnalysis AnalyzeJournalRecord(const SessionJournal& journal, const std::string& step_id,
-                                    const RecordAnalysisOptions& options) {
+                                    const RecordAnalysisOptions& options,
+                                    const std::optional<Calibration>& calibration) {
   if (journal.RecordSummaryOf(step_id).num_samples == 0)
     throw Error(fmt::format("the session has no record at step '{}'", step_id));
-  RecordAnalyzer analyzer(options, "counts");
+  std::unique_ptr<CalibrationApplier> applier;
+  if (calibration) applier = std::make_unique<CalibrationApplier>(*calibration);
+  RecordAnalyzer analyzer(options, applier ? "m/s^2" : "counts");
   journal.VisitRecordChunks(step_id, [&](const RecordChunk& chunk) {
     for (const Sample& s : chunk.samples)
-      analyzer.Add(s.t_s, s.raw_counts, std::isfinite(s.temp_c) ? s.temp_c : kNaN);
+      analyzer.Add(s.t_s, applier ? applier->Apply(s) : s.raw_counts,
+                   std::isfinite(s.temp_c) ? s.temp_c : kNaN);
   });
   return analyzer.Result();
 }

@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "accelcal/detail/write_file.h"
+#include "accelcal/io/atomic_write.h"
 
 namespace accelcal {
 namespace {
@@ -99,7 +99,7 @@ nlohmann::json RecordAnalysisToJson(const RecordAnalysis& r, const std::string& 
 }
 
 void WriteAllanFile(const std::string& path, const nlohmann::json& allan) {
-  detail::WriteFileAtomically(path, allan.dump(2) + "\n");
+  WriteFileAtomically(path, allan.dump(2) + "\n");
 }
 
 }  // namespace accelcal

@@ -8,7 +8,7 @@
 
 #include <fmt/core.h>
 
-#include "accelcal/detail/write_file.h"
+#include "accelcal/io/atomic_write.h"
 #include "accelcal/error.h"
 
 namespace accelcal {
@@ -256,7 +256,7 @@ Calibration CalibrationFromJson(const json& j, const std::string& source) {
 
 void WriteCalibrationFile(const std::string& path, const Calibration& cal) {
   // Beside and renamed, so a crash never leaves a half-written calibration behind.
-  detail::WriteFileAtomically(path, CalibrationToJson(cal).dump(2) + "\n");
+  WriteFileAtomically(path, CalibrationToJson(cal).dump(2) + "\n");
 }
 
 Calibration ReadCalibrationFile(const std::string& path) {

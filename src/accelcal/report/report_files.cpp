@@ -1,9 +1,8 @@
 #include "accelcal/report/report_files.h"
 
-
 #include <fmt/core.h>
 
-#include "accelcal/detail/write_file.h"
+#include "accelcal/io/atomic_write.h"
 #include "accelcal/error.h"
 #include "accelcal/report/report_html.h"
 #include "accelcal/report/report_text.h"
@@ -21,7 +20,7 @@ std::string ReportPathFor(const std::string& session_path, const std::string& ex
 }
 
 void WriteReportFile(const std::string& path, const std::string& text) {
-  detail::WriteFileAtomically(path, text);
+  WriteFileAtomically(path, text);
 }
 
 std::vector<std::string> WriteSessionReports(const SessionJournal& journal, const ReportMeta& meta,

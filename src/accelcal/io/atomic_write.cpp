@@ -1,4 +1,4 @@
-#include "accelcal/detail/write_file.h"
+#include "accelcal/io/atomic_write.h"
 
 #include <cerrno>
 #include <cstdio>
@@ -9,7 +9,7 @@
 
 #include "accelcal/error.h"
 
-namespace accelcal::detail {
+namespace accelcal {
 
 void WriteFileAtomically(const std::string& path, std::string_view bytes) {
   const std::string tmp = path + ".tmp";
@@ -24,4 +24,4 @@ void WriteFileAtomically(const std::string& path, std::string_view bytes) {
     throw Error(fmt::format("cannot write '{}': {}", path, std::strerror(errno)));
 }
 
-}  // namespace accelcal::detail
+}  // namespace accelcal

@@ -5,9 +5,9 @@
 #include <string>
 #include <string_view>
 
-namespace accelcal::detail {
+namespace accelcal {
 
 // Throws accelcal::Error "cannot write 'PATH': <reason>".
 void WriteFileAtomically(const std::string& path, std::string_view bytes);
 
-}  // namespace accelcal::detail
+}  // namespace accelcal
