@@ -49,7 +49,7 @@ expect 1 "$accelcal" history DEV-Z --sessions-dir "$d"
 grep -q "no session of device DEV-Z in $d; devices there: DEV-A, DEV-B" "$work/err" || { cat "$work/err"; fail "unknown device message"; }
 [ "$(wc -l <"$work/err")" -eq 1 ] || fail "more than one line on stderr"
 expect 1 "$accelcal" history DEV-A --sessions-dir "$work/nowhere"
-grep -q "no session directory" "$work/err" || fail "missing directory message"
+grep -q "cannot list sessions in $work/nowhere" "$work/err" || { cat "$work/err"; fail "missing directory message"; }
 # The default directory comes from XDG_DATA_HOME.
 mkdir -p "$work/xdg/accelcal"
 cp -r "$d" "$work/xdg/accelcal/sessions"

@@ -60,7 +60,7 @@ grep -Eq '^  x +[0-9.]+ +1\.[45][0-9]* +0\.1[45][0-9]* +normal' "$work/out" || {
 awk 'length($0) > 80 { exit 1 }' "$work/out" || fail "text wider than 80 columns"
 
 # With a calibration: m/s^2, z reads gravity.
-"$accelcal" report "$work/sessions/cal.db" --format json -o "$work/cal.json" >/dev/null
+"$accelcal" report "$work/sessions/cal.db" --format calibration -o "$work/cal.json" >/dev/null
 expect 0 "$accelcal" noise SN-E2E --sessions-dir "$work/sessions" --calibration "$work/cal.json" --format json -o "$work/n.json"
 [ "$(j '.unit')" = "m/s^2" ] || fail "calibrated unit"
 check "calibrated z mean" "$(j '.records[0].axes.z.mean')" 9.80665 0.05

@@ -17,6 +17,8 @@
 #include "accelcal/session/session_store.h"
 #include "accelcal/wizard/session_journal.h"
 
+#include "session_test_support.h"
+
 namespace accelcal {
 namespace {
 
@@ -53,25 +55,7 @@ void ExpectSameSamples(const std::vector<Sample>& a, const std::vector<Sample>& 
   }
 }
 
-class SessionRecordTest : public ::testing::Test {
- protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("accelcal_record_" + std::to_string(getpid()) + "_" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-    path_ = (dir_ / "s.db").string();
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  static SessionOpenOptions Reader() {
-    SessionOpenOptions o;
-    o.read_only = true;
-    return o;
-  }
-  fs::path dir_;
-  std::string path_;
-};
+using SessionRecordTest = testing::SessionDirTest;
 
 // Chunks 0 and 1, a gap of 7.25 s, chunk 2: what a record interrupted once holds.
 void WriteInterruptedRecord(SessionJournal& journal, std::vector<Sample>* expected) {

@@ -16,6 +16,7 @@
 #include <sqlite3.h>
 
 #include "accelcal/error.h"
+#include "session_test_support.h"
 #include "test_support.h"
 
 namespace accelcal {
@@ -24,33 +25,7 @@ namespace {
 namespace fs = std::filesystem;
 using testing::Contains;
 
-class SessionStoreTest : public ::testing::Test {
- protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("accelcal_store_" + std::to_string(getpid()) + "_" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-    path_ = (dir_ / "s.db").string();
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  static SessionOpenOptions Writer() {
-    SessionOpenOptions o;
-    o.procedure = "bench_default";
-    o.source = "sim";
-    return o;
-  }
-  static SessionOpenOptions Reader() {
-    SessionOpenOptions o;
-    o.read_only = true;
-    return o;
-  }
-
-  fs::path dir_;
-  std::string path_;
-};
+using SessionStoreTest = testing::SessionDirTest;
 
 // A capture with awkward values: fractions, a NaN temperature, negative zero.
 Capture MakeCapture(int id, int n, unsigned seed) {

@@ -70,6 +70,19 @@ const json& ReadAxes(const json& j, const std::string& source) {
 
 constexpr const char* kAxisNames[3] = {"x", "y", "z"};
 
+// Calls fn(index, axis object, "axes.x.") for each of x, y, z present in `axes`; an axis that is
+// not an object is refused.
+template <typename Fn>
+void ForEachAxis(const json& axes, const std::string& source, Fn&& fn) {
+  for (int i = 0; i < 3; ++i) {
+    if (!axes.contains(kAxisNames[i])) continue;
+    const json& x = axes[kAxisNames[i]];
+    const std::string path = fmt::format("axes.{}.", kAxisNames[i]);
+    if (!x.is_object()) Fail(source, path, "must be an object");
+    fn(i, x, path);
+  }
+}
+
 json Num(double v) { return std::isfinite(v) ? json(v) : json(nullptr); }
 
 double Rms(const std::vector<double>& v) {
@@ -241,12 +254,7 @@ AllanSection ParseAllanJson(const json& j, const std::string& source) {
   a.source = source;
   a.unit = ReadUnit(j, source);
   a.rate_hz = OptionalFinite(j, "rate_hz", "", source);
-  const json& axes = ReadAxes(j, source);
-  for (int i = 0; i < 3; ++i) {
-    if (!axes.contains(kAxisNames[i])) continue;
-    const json& x = axes[kAxisNames[i]];
-    const std::string path = fmt::format("axes.{}.", kAxisNames[i]);
-    if (!x.is_object()) Fail(source, path, "must be an object");
+  ForEachAxis(ReadAxes(j, source), source, [&](int i, const json& x, const std::string& path) {
     AllanAxis ax;
     ax.noise_density = OptionalFinite(x, "noise_density", path, source);
     ax.bias_instability = OptionalFinite(x, "bias_instability", path, source);
@@ -265,7 +273,7 @@ AllanSection ParseAllanJson(const json& j, const std::string& source) {
       if (ax.tau_s[k] <= 0.0 || ax.adev[k] <= 0.0)  // false for a NaN (null) adev
         Fail(source, fmt::format("{}tau_s[{}]", path, k), "tau and adev must be positive (log axes)");
     a.axes[i] = ax;
-  }
+  });
   return a;
 }
 
@@ -301,18 +309,13 @@ NoiseSection ParseNoiseJson(const json& j, const std::string& source) {
   NoiseSection n;
   n.source = source;
   n.unit = ReadUnit(j, source);
-  const json& axes = ReadAxes(j, source);
-  for (int i = 0; i < 3; ++i) {
-    if (!axes.contains(kAxisNames[i])) continue;
-    const json& x = axes[kAxisNames[i]];
-    const std::string path = fmt::format("axes.{}.", kAxisNames[i]);
-    if (!x.is_object()) Fail(source, path, "must be an object");
+  ForEachAxis(ReadAxes(j, source), source, [&](int i, const json& x, const std::string& path) {
     NoiseAxis ax;
     ax.std = OptionalFinite(x, "std", path, source);
     ax.noise_density = OptionalFinite(x, "noise_density", path, source);
     ax.bias_repeatability = OptionalFinite(x, "bias_repeatability", path, source);
     n.axes[i] = ax;
-  }
+  });
   return n;
 }
 
