@@ -110,8 +110,11 @@ TEST(WizardEngineTest, WelcomeTakesTypedAnswersAndGoesBack) {
   EXPECT_EQ(rig.engine.View().input->key, "device");
   rig.engine.Handle({IntentKind::kSubmitText, "SN43"});
   rig.engine.Handle({IntentKind::kSubmitText, "ada"});
+  EXPECT_EQ(rig.engine.View().input->key, "place");
+  rig.engine.Handle({IntentKind::kSubmitText, "Lab 2, bench B <east>"});
   EXPECT_EQ(rig.journal->Inputs().at("welcome").at("device"), "SN43");
   EXPECT_EQ(rig.journal->Inputs().at("welcome").at("operator"), "ada");
+  EXPECT_EQ(rig.journal->Inputs().at("welcome").at("place"), "Lab 2, bench B <east>");
   EXPECT_EQ(rig.engine.View().step_title, "Level the table");
 }
 

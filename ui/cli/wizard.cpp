@@ -48,6 +48,7 @@ int RunWizard(const WizardCommandOptions& options) {
   wizard.session_name = session;
   wizard.default_operator = OperatorFromEnvironment();
   wizard.default_device = options.source == "sim" ? "SIM-0001" : "";
+  wizard.default_place = options.place;
   wizard.gravity = options.gravity;
   wizard.report_beside = session;
   WizardEngine engine(procedure, *source, *journal, wizard);
@@ -84,6 +85,7 @@ void SetupWizardCommand(CLI::App& app) {
                   "sim: virtual-bench scenario (TOML); default: the built-in default bench");
   sub->add_option("--procedure", options->procedure_path,
                   "Procedure file (TOML); default: procedures/seed_calibration.toml");
+  sub->add_option("--place", options->place, "The lab or bench, offered at the welcome (for the report)");
   sub->add_option("--session", options->session_path,
                   "Session file: created when new, resumed when it exists (default: a new one)");
   sub->add_flag("--plain", options->plain, "Plain line mode even on a terminal");

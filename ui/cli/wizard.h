@@ -17,6 +17,7 @@ struct WizardCommandOptions {
   std::string procedure_path;       // empty = procedures/seed_calibration.toml of the source tree
   std::string session_path;         // empty = a new session named by the time
   bool plain = false;               // line mode even on a terminal
+  std::string place;                // offered at the welcome (the lab, the bench)
   GravitySpec gravity;
 };
 

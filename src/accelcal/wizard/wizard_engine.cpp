@@ -582,17 +582,29 @@ void WizardEngine::Handle(const Intent& intent) {
   }
 }
 
+// Device, operator and place: what the report's identification names (the place, the lab
+// where the gravity was taken, beside the gravity itself).
+constexpr int kWelcomeFields = 3;
+
+WizardEngine::WelcomeField WizardEngine::Welcome(int field) const {
+  switch (field) {
+    case 0: return {"device", "Device serial number", options_.default_device};
+    case 1: return {"operator", "Operator", options_.default_operator};
+    default: return {"place", "Place (lab, bench)", options_.default_place};
+  }
+}
+
 void WizardEngine::HandleWelcome(const Intent& intent) {
   if (intent.kind == IntentKind::kBack) {
     welcome_field_ = std::max(0, welcome_field_ - 1);
     return;
   }
-  const bool device = welcome_field_ == 0;
+  const WelcomeField field = Welcome(welcome_field_);
   std::string value = intent.kind == IntentKind::kSubmitText ? intent.text : "";
-  if (value.empty()) value = device ? options_.default_device : options_.default_operator;
-  journal_.RecordInput(kWelcomeId, device ? "device" : "operator", value);
-  if (device) {
-    welcome_field_ = 1;
+  if (value.empty()) value = field.default_value;
+  journal_.RecordInput(kWelcomeId, field.key, value);
+  if (welcome_field_ + 1 < kWelcomeFields) {
+    ++welcome_field_;
     return;
   }
   journal_.RecordStepDone(kWelcomeId, "ok");

@@ -53,6 +53,8 @@ struct WizardOptions {
   // Non-empty: the report step also writes the calibration report beside this session file
   // (report_files.h: SESSION.report.html and SESSION.report.txt). Empty: nothing is written.
   std::string report_beside = {};
+  // The lab or bench offered at the welcome (may be empty): the report's "place".
+  std::string default_place = {};
 
   std::string Validate() const;
 };
@@ -111,6 +113,13 @@ class WizardEngine final : public WizardDriver {
   void GoBack();
   void Quit();
   void HandleWelcome(const Intent& intent);
+  // The welcome's questions in order: {input key, label, default}.
+  struct WelcomeField {
+    const char* key;
+    const char* label;
+    const std::string& default_value;
+  };
+  WelcomeField Welcome(int field) const;
   void HandleTurntableInput(const Intent& intent);
   void HandleResult(const Intent& intent);
   void HandleCaptureIntent(const Intent& intent);

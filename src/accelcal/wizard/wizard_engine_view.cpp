@@ -96,12 +96,10 @@ void WizardEngine::SetPhaseView(WizardView& v) const {
 }
 
 void WizardEngine::SetWelcomeView(WizardView& v) const {
-  const bool device = welcome_field_ == 0;
+  const WelcomeField field = Welcome(welcome_field_);
   v.screen = WizardScreen::kWelcome;
   v.prompt = fmt::format("Welcome to {}.", procedure_.title);
-  v.input =
-      InputRequest{device ? "device" : "operator", device ? "Device serial number" : "Operator",
-                   device ? options_.default_device : options_.default_operator, ""};
+  v.input = InputRequest{field.key, field.label, field.default_value, ""};
   v.keys = {{"Enter", "accept"}, {"b", "back"}, {"q", "save and quit"}};
 }
 
