@@ -246,30 +246,10 @@ void ExpectStoredStatsMatchSamples(const std::string& path) {
   sqlite3_close(db);
 }
 
-// Reads from `fd` into *text until a whole line has come (or the writer is gone).
-void ReadFirstLine(int fd, std::string* text) {
-  char buffer[256];
-  while (text->find('\n') == std::string::npos) {
-    const ssize_t n = read(fd, buffer, sizeof buffer);
-    if (n <= 0) return;
-    text->append(buffer, static_cast<size_t>(n));
-  }
-}
-
-std::set<int> ReadReportedSteps(int fd, std::string text = {}) {
-  char buffer[256];
-  for (ssize_t n; (n = read(fd, buffer, sizeof buffer)) > 0;) text.append(buffer, static_cast<size_t>(n));
-  std::set<int> steps;
-  size_t start = 0;
-  for (size_t end; (end = text.find('\n', start)) != std::string::npos; start = end + 1)
-    steps.insert(std::stoi(text.substr(start, end - start)));
-  return steps;
-}
-
 TEST_F(SessionStoreTest, KillNineAtRandomInstantsLosesNothingCommitted) {
   std::mt19937 rng(20240601);
   std::uniform_int_distribution<int> delay_us(0, 60000);
-  std::set<int> committed;  // every step a child reported
+  std::set<long> committed;  // every step a child reported
   // Opens after a kill (no stale lock) and checks: every capture whole, no step twice, every
   // reported step there. Returns the next step to record.
   auto check = [&]() {
@@ -282,31 +262,18 @@ TEST_F(SessionStoreTest, KillNineAtRandomInstantsLosesNothingCommitted) {
       ExpectSameCapture(c.capture, MakeCapture(c.capture.id, 1000, static_cast<unsigned>(c.capture.id)));
       next_step = std::max(next_step, c.capture.id + 1);
     }
-    for (int step : committed) EXPECT_TRUE(seen.count("step_" + std::to_string(step))) << "lost " << step;
+    for (long step : committed) EXPECT_TRUE(seen.count("step_" + std::to_string(step))) << "lost " << step;
     ExpectStoredStatsMatchSamples(path_);
     return next_step;
   };
   for (int round = 0; round < 20; ++round) {
     const int next_step = check();
     if (::testing::Test::HasFailure()) return;
-    int fds[2];
-    ASSERT_EQ(pipe(fds), 0);
-    const pid_t pid = fork();
-    if (pid == 0) {
-      close(fds[0]);
-      RecordForever(path_, next_step, fds[1]);
-    }
-    close(fds[1]);
     // Every other round the kill comes at a random instant after the child's first commit, so
     // the children make progress however slow a loaded machine makes them; the other rounds
     // also hit the open and the first transaction.
-    std::string first;
-    if (round % 2 == 0) ReadFirstLine(fds[0], &first);
-    usleep(static_cast<useconds_t>(delay_us(rng)));
-    kill(pid, SIGKILL);
-    waitpid(pid, nullptr, 0);
-    const std::set<int> reported = ReadReportedSteps(fds[0], first);
-    close(fds[0]);
+    const std::set<long> reported = testing::RunAndKill(
+        [&](int fd) { RecordForever(path_, next_step, fd); }, delay_us(rng), round % 2 == 0);
     committed.insert(reported.begin(), reported.end());
   }
   check();
