@@ -8,9 +8,9 @@
 #include <benchmark/benchmark.h>
 #include <fmt/format.h>
 
-#include "accelcal/capture_engine/capture_engine.h"
-#include "accelcal/detail/sample_line_parser.h"
-#include "accelcal/sim/scenario.h"
+#include "accelcal/acquire/capture_engine/capture_engine.h"
+#include "accelcal/base/sample_line_parser.h"
+#include "accelcal/acquire/sim/scenario.h"
 
 namespace {
 

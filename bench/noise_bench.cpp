@@ -8,8 +8,8 @@
 #include <benchmark/benchmark.h>
 
 #include "accelcal/analysis/noise_analysis.h"
-#include "accelcal/sim/scenario.h"
-#include "accelcal/sim/virtual_bench.h"
+#include "accelcal/acquire/sim/scenario.h"
+#include "accelcal/acquire/sim/virtual_bench.h"
 
 namespace {
 

@@ -4,7 +4,7 @@
 
 #include <benchmark/benchmark.h>
 
-#include "accelcal/detail/read_file.h"
+#include "accelcal/io/detail/read_file.h"
 #include "accelcal/io/recording_reader.h"
 
 namespace {

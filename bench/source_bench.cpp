@@ -8,8 +8,8 @@
 #include <benchmark/benchmark.h>
 #include <fmt/format.h>
 
-#include "accelcal/source/line_stream.h"
-#include "accelcal/source/status_tracker.h"
+#include "accelcal/acquire/source/line_stream.h"
+#include "accelcal/acquire/source/status_tracker.h"
 
 namespace {
 

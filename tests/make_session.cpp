@@ -22,14 +22,14 @@
 
 #include <fmt/core.h>
 
-#include "accelcal/error.h"
-#include "accelcal/fit/calibration_fit.h"
+#include "accelcal/base/error.h"
+#include "accelcal/calibration/fit/calibration_fit.h"
 #include "accelcal/io/calibration_file.h"
 #include "accelcal/session/detail/sqlite_db.h"
 #include "accelcal/session/session_store.h"
-#include "accelcal/wizard/procedure.h"
-#include "accelcal/sim/scenario.h"
-#include "accelcal/sim/virtual_bench.h"
+#include "accelcal/session/procedure.h"
+#include "accelcal/acquire/sim/scenario.h"
+#include "accelcal/acquire/sim/virtual_bench.h"
 
 namespace {
 

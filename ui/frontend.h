@@ -5,7 +5,7 @@
 
 #include <iosfwd>
 
-#include "accelcal/wizard/wizard_driver.h"
+#include "accelcal/app/wizard/wizard_driver.h"
 
 namespace accelcal::ui {
 

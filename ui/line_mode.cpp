@@ -8,7 +8,7 @@
 
 #include <fmt/format.h>
 
-#include "accelcal/wizard/duration_text.h"
+#include "accelcal/base/duration_text.h"
 #include "frontend.h"
 
 namespace accelcal::ui {

@@ -5,7 +5,7 @@
 #include <CLI/CLI.hpp>
 #include <fmt/core.h>
 
-#include "accelcal/error.h"
+#include "accelcal/base/error.h"
 #include "cli/commands.h"
 #include "cli/wizard.h"
 

@@ -2,7 +2,7 @@
 // Gauss-Markov sum's increments have the variances theory gives, the flicker approximation's
 // Allan deviation sits at 0.664 B, the bench and the live sim source include it reproducibly,
 // and the scenario refuses bad values with their position.
-#include "accelcal/sim/bias_noise.h"
+#include "accelcal/acquire/sim/bias_noise.h"
 
 #include <cmath>
 #include <string>
@@ -10,10 +10,10 @@
 
 #include <gtest/gtest.h>
 
-#include "accelcal/error.h"
-#include "accelcal/sim/scenario.h"
-#include "accelcal/sim/virtual_bench.h"
-#include "accelcal/source/sim_source.h"
+#include "accelcal/base/error.h"
+#include "accelcal/acquire/sim/scenario.h"
+#include "accelcal/acquire/sim/virtual_bench.h"
+#include "accelcal/acquire/source/sim_source.h"
 #include "test_support.h"
 
 namespace accelcal::sim {

@@ -5,7 +5,7 @@
 
 #include <gtest/gtest.h>
 
-#include "accelcal/error.h"
+#include "accelcal/base/error.h"
 
 namespace accelcal {
 namespace {

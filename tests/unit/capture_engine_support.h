@@ -7,9 +7,9 @@
 #include <string>
 #include <vector>
 
-#include "accelcal/capture.h"
-#include "accelcal/sim/scenario.h"
-#include "accelcal/sim/virtual_bench.h"
+#include "accelcal/base/capture.h"
+#include "accelcal/acquire/sim/scenario.h"
+#include "accelcal/acquire/sim/virtual_bench.h"
 
 namespace accelcal::testing {
 

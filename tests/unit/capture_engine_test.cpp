@@ -1,8 +1,8 @@
-#include "accelcal/capture_engine/capture_engine.h"
+#include "accelcal/acquire/capture_engine/capture_engine.h"
 
 #include <gtest/gtest.h>
 
-#include "accelcal/error.h"
+#include "accelcal/base/error.h"
 #include "capture_engine_support.h"
 #include "test_support.h"
 

@@ -1,4 +1,4 @@
-#include "accelcal/capture_screening.h"
+#include "accelcal/calibration/capture_screening.h"
 
 #include <cmath>
 #include <limits>
@@ -7,7 +7,7 @@
 
 #include <gtest/gtest.h>
 
-#include "accelcal/error.h"
+#include "accelcal/base/error.h"
 #include "accelcal/io/capture_set_reader.h"
 
 namespace accelcal {

@@ -1,4 +1,4 @@
-#include "accelcal/diagnosis/chi_square.h"
+#include "accelcal/base/chi_square.h"
 
 #include <cmath>
 

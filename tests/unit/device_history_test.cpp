@@ -8,7 +8,7 @@
 #include <unistd.h>
 
 #include "accelcal/session/detail/sqlite_db.h"
-#include "accelcal/session/device_history.h"
+#include "accelcal/app/device_history.h"
 #include "export_test_support.h"
 #include "test_support.h"
 

@@ -1,11 +1,11 @@
 // The diagnosis loop on virtual-bench data with an undeclared effect in it (issue 5).
-#include "accelcal/diagnosis/diagnosis.h"
+#include "accelcal/calibration/diagnosis/diagnosis.h"
 
 #include <gtest/gtest.h>
 
-#include "accelcal/capture_screening.h"
-#include "accelcal/sim/scenario.h"
-#include "accelcal/sim/virtual_bench.h"
+#include "accelcal/calibration/capture_screening.h"
+#include "accelcal/acquire/sim/scenario.h"
+#include "accelcal/acquire/sim/virtual_bench.h"
 
 namespace accelcal {
 namespace {

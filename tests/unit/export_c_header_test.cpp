@@ -12,8 +12,8 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
-#include "accelcal/apply.h"
-#include "accelcal/export/c_header.h"
+#include "accelcal/calibration/apply.h"
+#include "accelcal/io/export/c_header.h"
 #include "export_test_support.h"
 #include "test_support.h"
 

@@ -9,9 +9,9 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
-#include "accelcal/apply.h"
-#include "accelcal/export/ardupilot_params.h"
-#include "accelcal/export/px4_params.h"
+#include "accelcal/calibration/apply.h"
+#include "accelcal/io/export/ardupilot_params.h"
+#include "accelcal/io/export/px4_params.h"
 #include "export_test_support.h"
 #include "test_support.h"
 

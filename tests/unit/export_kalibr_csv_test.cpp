@@ -6,9 +6,9 @@
 
 #include <gtest/gtest.h>
 
-#include "accelcal/detail/csv_fields.h"
-#include "accelcal/export/calibration_csv.h"
-#include "accelcal/export/kalibr_imu_yaml.h"
+#include "accelcal/io/detail/csv_fields.h"
+#include "accelcal/io/export/calibration_csv.h"
+#include "accelcal/io/export/kalibr_imu_yaml.h"
 #include "export_test_support.h"
 #include "test_support.h"
 

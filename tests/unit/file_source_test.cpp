@@ -5,7 +5,7 @@
 
 #include <gtest/gtest.h>
 
-#include "accelcal/source/source_spec.h"
+#include "accelcal/acquire/source/source_spec.h"
 #include "source_test_support.h"
 
 namespace accelcal {

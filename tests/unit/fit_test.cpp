@@ -1,10 +1,10 @@
-#include "accelcal/fit/calibration_fit.h"
+#include "accelcal/calibration/fit/calibration_fit.h"
 
 #include <random>
 
 #include <gtest/gtest.h>
 
-#include "accelcal/fit/initial_guess.h"
+#include "accelcal/calibration/fit/initial_guess.h"
 
 namespace accelcal {
 namespace {

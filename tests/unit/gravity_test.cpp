@@ -1,4 +1,4 @@
-#include "accelcal/gravity.h"
+#include "accelcal/base/gravity.h"
 
 #include <gtest/gtest.h>
 

@@ -5,10 +5,10 @@
 
 #include <gtest/gtest.h>
 
-#include "accelcal/capture_screening.h"
-#include "accelcal/fit/calibration_fit.h"
+#include "accelcal/calibration/capture_screening.h"
+#include "accelcal/calibration/fit/calibration_fit.h"
 #include "accelcal/io/recording_reader.h"
-#include "accelcal/static_detector.h"
+#include "accelcal/acquire/static_detector.h"
 
 namespace accelcal {
 namespace {

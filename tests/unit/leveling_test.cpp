@@ -1,6 +1,6 @@
 // Leveling by reversal on a tilted table with a sensor whose bias the rough model gets wrong:
 // one reading is fooled by the bias error, the reversal is not.
-#include "accelcal/wizard/leveling.h"
+#include "accelcal/app/wizard/leveling.h"
 
 #include <cmath>
 

@@ -4,10 +4,10 @@
 
 #include <gtest/gtest.h>
 
-#include "accelcal/sim/scenario.h"
-#include "accelcal/source/sim_source.h"
-#include "accelcal/wizard/procedure.h"
-#include "accelcal/wizard/wizard_engine.h"
+#include "accelcal/acquire/sim/scenario.h"
+#include "accelcal/acquire/source/sim_source.h"
+#include "accelcal/session/procedure.h"
+#include "accelcal/app/wizard/wizard_engine.h"
 #include "frontend.h"
 
 namespace accelcal {

@@ -1,5 +1,5 @@
 // LineStream: lines split across reads, malformed lines counted and named, garbage skipped.
-#include "accelcal/source/line_stream.h"
+#include "accelcal/acquire/source/line_stream.h"
 
 #include <random>
 

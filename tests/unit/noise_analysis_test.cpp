@@ -11,15 +11,15 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
-#include "accelcal/analysis/noise_records.h"
-#include "accelcal/error.h"
+#include "accelcal/app/noise_records.h"
+#include "accelcal/base/error.h"
 #include "accelcal/report/noise_text.h"
 #include "accelcal/session/detail/sqlite_db.h"
 #include "accelcal/session/session_catalog.h"
 #include "accelcal/session/session_store.h"
-#include "accelcal/sim/scenario.h"
-#include "accelcal/sim/virtual_bench.h"
-#include "accelcal/wizard/procedure.h"
+#include "accelcal/acquire/sim/scenario.h"
+#include "accelcal/acquire/sim/virtual_bench.h"
+#include "accelcal/session/procedure.h"
 #include "test_support.h"
 
 namespace accelcal::analysis {

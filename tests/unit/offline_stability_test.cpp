@@ -1,11 +1,11 @@
-#include "accelcal/capture_engine/offline_stability.h"
+#include "accelcal/acquire/capture_engine/offline_stability.h"
 
 #include <gtest/gtest.h>
 
-#include "accelcal/capture_screening.h"
-#include "accelcal/fit/calibration_fit.h"
+#include "accelcal/calibration/capture_screening.h"
+#include "accelcal/calibration/fit/calibration_fit.h"
 #include "accelcal/io/calibration_file.h"
-#include "accelcal/sim/virtual_bench.h"
+#include "accelcal/acquire/sim/virtual_bench.h"
 #include "test_support.h"
 
 namespace accelcal {

@@ -1,11 +1,11 @@
-#include "accelcal/capture_engine/orientation_check.h"
+#include "accelcal/acquire/capture_engine/orientation_check.h"
 
 #include <cmath>
 
 #include <Eigen/Geometry>
 #include <gtest/gtest.h>
 
-#include "accelcal/sim/scenario.h"
+#include "accelcal/acquire/sim/scenario.h"
 #include "test_support.h"
 
 namespace accelcal {

@@ -7,16 +7,16 @@
 
 #include <gtest/gtest.h>
 
-#include "accelcal/apply.h"
-#include "accelcal/capture_screening.h"
-#include "accelcal/fit/calibration_fit.h"
+#include "accelcal/calibration/apply.h"
+#include "accelcal/calibration/capture_screening.h"
+#include "accelcal/calibration/fit/calibration_fit.h"
 #include "accelcal/io/calibration_file.h"
 #include "accelcal/io/capture_set_reader.h"
 #include "accelcal/io/capture_set_writer.h"
 #include "accelcal/io/recording_reader.h"
-#include "accelcal/sim/scenario.h"
-#include "accelcal/sim/virtual_bench.h"
-#include "accelcal/static_detector.h"
+#include "accelcal/acquire/sim/scenario.h"
+#include "accelcal/acquire/sim/virtual_bench.h"
+#include "accelcal/acquire/static_detector.h"
 
 namespace accelcal {
 namespace {

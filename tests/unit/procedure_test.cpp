@@ -3,8 +3,8 @@
 
 #include <gtest/gtest.h>
 
-#include "accelcal/error.h"
-#include "accelcal/wizard/procedure.h"
+#include "accelcal/base/error.h"
+#include "accelcal/session/procedure.h"
 
 namespace accelcal {
 namespace {

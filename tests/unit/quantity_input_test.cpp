@@ -1,7 +1,7 @@
 // Radius and speed as the operator types them, and the plan checked against the range.
 #include <gtest/gtest.h>
 
-#include "accelcal/wizard/quantity_input.h"
+#include "accelcal/app/wizard/quantity_input.h"
 
 namespace accelcal {
 namespace {

@@ -8,7 +8,7 @@
 
 #include "test_support.h"
 
-#include "accelcal/error.h"
+#include "accelcal/base/error.h"
 
 namespace accelcal {
 namespace {

@@ -3,8 +3,8 @@
 
 #include <gtest/gtest.h>
 
-#include "accelcal/error.h"
-#include "accelcal/sim/virtual_bench.h"
+#include "accelcal/base/error.h"
+#include "accelcal/acquire/sim/virtual_bench.h"
 
 namespace accelcal::sim {
 namespace {

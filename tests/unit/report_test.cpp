@@ -10,17 +10,17 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "accelcal/fit/calibration_fit.h"
+#include "accelcal/calibration/fit/calibration_fit.h"
 #include "accelcal/io/calibration_file.h"
-#include "accelcal/report/report_files.h"
+#include "accelcal/app/report_files.h"
 #include "accelcal/report/report_html.h"
-#include "accelcal/report/report_json.h"
+#include "accelcal/io/report_json.h"
 #include "accelcal/report/report_model.h"
 #include "accelcal/report/report_text.h"
 #include "accelcal/report/svg_plot.h"
-#include "accelcal/sim/scenario.h"
-#include "accelcal/sim/virtual_bench.h"
-#include "accelcal/wizard/procedure.h"
+#include "accelcal/acquire/sim/scenario.h"
+#include "accelcal/acquire/sim/virtual_bench.h"
+#include "accelcal/session/procedure.h"
 #include "test_support.h"
 
 namespace accelcal {

@@ -1,4 +1,4 @@
-#include "accelcal/fit/residual_model.h"
+#include "accelcal/calibration/fit/residual_model.h"
 
 #include <gtest/gtest.h>
 

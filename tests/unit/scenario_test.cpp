@@ -1,4 +1,4 @@
-#include "accelcal/sim/scenario.h"
+#include "accelcal/acquire/sim/scenario.h"
 
 #include <string>
 
@@ -6,7 +6,7 @@
 
 #include "test_support.h"
 
-#include "accelcal/error.h"
+#include "accelcal/base/error.h"
 
 namespace accelcal::sim {
 namespace {

@@ -1,4 +1,4 @@
-#include "accelcal/sensor_model.h"
+#include "accelcal/base/sensor_model.h"
 
 #include <Eigen/Dense>
 #include <gtest/gtest.h>

@@ -13,9 +13,9 @@
 #include <gtest/gtest.h>
 #include <sqlite3.h>
 
-#include "accelcal/error.h"
+#include "accelcal/base/error.h"
 #include "accelcal/session/session_store.h"
-#include "accelcal/wizard/session_journal.h"
+#include "accelcal/session/session_journal.h"
 
 #include "session_test_support.h"
 

@@ -15,7 +15,7 @@
 #include <gtest/gtest.h>
 #include <sqlite3.h>
 
-#include "accelcal/error.h"
+#include "accelcal/base/error.h"
 #include "session_test_support.h"
 #include "test_support.h"
 

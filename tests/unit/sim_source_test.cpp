@@ -1,13 +1,13 @@
 // sim: the virtual bench as a live source. Placements turn gravity in the samples, speed 0
 // delivers many seconds at once, and the truth model turns a still period back into |f| = g.
-#include "accelcal/source/sim_source.h"
+#include "accelcal/acquire/source/sim_source.h"
 
 #include <cmath>
 
 #include <gtest/gtest.h>
 
-#include "accelcal/error.h"
-#include "accelcal/sim/scenario.h"
+#include "accelcal/base/error.h"
+#include "accelcal/acquire/sim/scenario.h"
 #include "source_test_support.h"
 
 namespace accelcal {

@@ -1,4 +1,4 @@
-#include "accelcal/detail/sliding_variance.h"
+#include "accelcal/acquire/detail/sliding_variance.h"
 
 #include <cmath>
 #include <random>

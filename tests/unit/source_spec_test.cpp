@@ -1,10 +1,10 @@
 // Source specs: parsing, and the messages for bad ones.
-#include "accelcal/source/source_spec.h"
+#include "accelcal/acquire/source/source_spec.h"
 
 #include <gtest/gtest.h>
 
-#include "accelcal/error.h"
-#include "accelcal/source/serial_link.h"
+#include "accelcal/base/error.h"
+#include "accelcal/acquire/source/serial_link.h"
 #include "test_support.h"
 
 namespace accelcal {

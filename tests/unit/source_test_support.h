@@ -14,7 +14,7 @@
 
 #include <fmt/format.h>
 
-#include "accelcal/source/sample_source.h"
+#include "accelcal/acquire/source/sample_source.h"
 
 namespace accelcal::testing {
 

@@ -1,4 +1,4 @@
-#include "accelcal/static_detector.h"
+#include "accelcal/acquire/static_detector.h"
 
 #include <cmath>
 #include <cstdio>
@@ -9,7 +9,7 @@
 
 #include <gtest/gtest.h>
 
-#include "accelcal/error.h"
+#include "accelcal/base/error.h"
 #include "accelcal/io/recording_reader.h"
 
 namespace accelcal {

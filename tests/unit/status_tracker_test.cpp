@@ -1,5 +1,5 @@
 // StatusTracker: rate, gaps, and the link state machine, on a fake wall clock.
-#include "accelcal/source/status_tracker.h"
+#include "accelcal/acquire/source/status_tracker.h"
 
 #include <cmath>
 

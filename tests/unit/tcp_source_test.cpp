@@ -10,7 +10,7 @@
 
 #include <gtest/gtest.h>
 
-#include "accelcal/source/source_spec.h"
+#include "accelcal/acquire/source/source_spec.h"
 #include "source_test_support.h"
 #include "test_support.h"
 

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <string>
 
-#include "accelcal/wizard/wizard_view.h"
+#include "accelcal/app/wizard/wizard_view.h"
 
 namespace accelcal::testing {
 

@@ -1,11 +1,11 @@
-#include "accelcal/capture_engine/turntable_stability.h"
+#include "accelcal/acquire/capture_engine/turntable_stability.h"
 
 #include <cmath>
 #include <random>
 
 #include <gtest/gtest.h>
 
-#include "accelcal/sim/virtual_bench.h"
+#include "accelcal/acquire/sim/virtual_bench.h"
 #include "test_support.h"
 
 namespace accelcal {

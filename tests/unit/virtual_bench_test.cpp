@@ -1,12 +1,12 @@
 // Physics of the virtual bench: what a perfect (noiseless) sensor on it must read.
-#include "accelcal/sim/virtual_bench.h"
+#include "accelcal/acquire/sim/virtual_bench.h"
 
 #include <cmath>
 
 #include <gtest/gtest.h>
 #include <Eigen/Dense>
 
-#include "accelcal/error.h"
+#include "accelcal/base/error.h"
 
 namespace accelcal::sim {
 namespace {

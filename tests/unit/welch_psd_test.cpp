@@ -8,7 +8,7 @@
 
 #include <gtest/gtest.h>
 
-#include "accelcal/error.h"
+#include "accelcal/base/error.h"
 
 namespace accelcal::analysis {
 namespace {

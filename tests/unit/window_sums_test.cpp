@@ -1,4 +1,4 @@
-#include "accelcal/detail/window_sums.h"
+#include "accelcal/acquire/window_sums.h"
 
 #include <gtest/gtest.h>
 

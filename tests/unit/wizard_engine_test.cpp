@@ -10,11 +10,11 @@
 
 #include <gtest/gtest.h>
 
-#include "accelcal/sim/scenario.h"
-#include "accelcal/source/sim_source.h"
-#include "accelcal/wizard/procedure.h"
-#include "accelcal/wizard/session_journal.h"
-#include "accelcal/wizard/wizard_engine.h"
+#include "accelcal/acquire/sim/scenario.h"
+#include "accelcal/acquire/source/sim_source.h"
+#include "accelcal/session/procedure.h"
+#include "accelcal/session/session_journal.h"
+#include "accelcal/app/wizard/wizard_engine.h"
 
 namespace accelcal {
 namespace {

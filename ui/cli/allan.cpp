@@ -9,9 +9,9 @@
 #include <fmt/core.h>
 #include <fmt/format.h>
 
-#include "accelcal/analysis/analyze_recording.h"
-#include "accelcal/error.h"
-#include "accelcal/export/kalibr_imu_yaml.h"
+#include "accelcal/app/analyze_recording.h"
+#include "accelcal/base/error.h"
+#include "accelcal/io/export/kalibr_imu_yaml.h"
 #include "accelcal/io/allan_file.h"
 #include "accelcal/io/atomic_write.h"
 #include "accelcal/io/calibration_file.h"

@@ -4,8 +4,8 @@
 
 #include <fmt/core.h>
 
-#include "accelcal/apply.h"
-#include "accelcal/error.h"
+#include "accelcal/calibration/apply.h"
+#include "accelcal/base/error.h"
 #include "accelcal/io/calibration_file.h"
 #include "cli/commands.h"
 

@@ -5,7 +5,7 @@
 
 #include <fmt/core.h>
 
-#include "accelcal/error.h"
+#include "accelcal/base/error.h"
 #include "accelcal/io/capture_set_writer.h"
 #include "accelcal/session/session_paths.h"
 #include "accelcal/session/session_store.h"

@@ -9,15 +9,15 @@
 
 #include <fmt/core.h>
 
-#include "accelcal/error.h"
-#include "accelcal/export/ardupilot_params.h"
-#include "accelcal/export/c_header.h"
-#include "accelcal/export/calibration_csv.h"
-#include "accelcal/export/kalibr_imu_yaml.h"
-#include "accelcal/export/px4_params.h"
+#include "accelcal/base/error.h"
+#include "accelcal/io/export/ardupilot_params.h"
+#include "accelcal/io/export/c_header.h"
+#include "accelcal/io/export/calibration_csv.h"
+#include "accelcal/io/export/kalibr_imu_yaml.h"
+#include "accelcal/io/export/px4_params.h"
 #include "accelcal/io/calibration_file.h"
 #include "accelcal/session/session_store.h"
-#include "accelcal/wizard/procedure.h"
+#include "accelcal/session/procedure.h"
 #include "cli/commands.h"
 
 namespace accelcal::cli {

@@ -4,15 +4,15 @@
 
 #include <fmt/core.h>
 
-#include "accelcal/capture_engine/offline_stability.h"
-#include "accelcal/capture_screening.h"
-#include "accelcal/diagnosis/diagnosis.h"
-#include "accelcal/error.h"
-#include "accelcal/fit/calibration_fit.h"
+#include "accelcal/acquire/capture_engine/offline_stability.h"
+#include "accelcal/calibration/capture_screening.h"
+#include "accelcal/calibration/diagnosis/diagnosis.h"
+#include "accelcal/base/error.h"
+#include "accelcal/calibration/fit/calibration_fit.h"
 #include "accelcal/io/calibration_file.h"
 #include "accelcal/io/capture_set_reader.h"
 #include "accelcal/io/recording_reader.h"
-#include "accelcal/static_detector.h"
+#include "accelcal/acquire/static_detector.h"
 #include "cli/commands.h"
 #include "accelcal/report/fit_text.h"
 #include "cli/gravity_options.h"

@@ -1,6 +1,6 @@
 #include "cli/gravity_options.h"
 
-#include "accelcal/error.h"
+#include "accelcal/base/error.h"
 
 namespace accelcal::cli {
 

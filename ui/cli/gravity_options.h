@@ -4,7 +4,7 @@
 
 #include <CLI/CLI.hpp>
 
-#include "accelcal/gravity.h"
+#include "accelcal/base/gravity.h"
 
 namespace accelcal::cli {
 

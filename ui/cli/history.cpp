@@ -8,8 +8,8 @@
 #include <fmt/core.h>
 #include <fmt/ranges.h>
 
-#include "accelcal/error.h"
-#include "accelcal/session/device_history.h"
+#include "accelcal/base/error.h"
+#include "accelcal/app/device_history.h"
 #include "accelcal/session/session_paths.h"
 #include "cli/commands.h"
 

@@ -9,12 +9,12 @@
 #include <fmt/core.h>
 
 #include "accelcal/analysis/noise_analysis.h"
-#include "accelcal/analysis/noise_records.h"
-#include "accelcal/error.h"
+#include "accelcal/app/noise_records.h"
+#include "accelcal/base/error.h"
 #include "accelcal/io/calibration_file.h"
 #include "accelcal/report/noise_text.h"
 #include "accelcal/session/session_paths.h"
-#include "accelcal/wizard/procedure.h"
+#include "accelcal/session/procedure.h"
 #include "cli/commands.h"
 
 namespace accelcal::cli {

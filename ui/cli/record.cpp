@@ -11,9 +11,9 @@
 
 #include <fmt/core.h>
 
-#include "accelcal/error.h"
+#include "accelcal/base/error.h"
 #include "accelcal/io/capture_set_writer.h"
-#include "accelcal/source/source_spec.h"
+#include "accelcal/acquire/source/source_spec.h"
 #include "cli/commands.h"
 
 namespace accelcal::cli {

@@ -7,11 +7,11 @@
 
 #include <fmt/core.h>
 
-#include "accelcal/error.h"
+#include "accelcal/base/error.h"
 #include "accelcal/io/calibration_file.h"
-#include "accelcal/report/report_files.h"
+#include "accelcal/app/report_files.h"
 #include "accelcal/report/report_html.h"
-#include "accelcal/report/report_json.h"
+#include "accelcal/io/report_json.h"
 #include "accelcal/report/report_model.h"
 #include "accelcal/report/report_text.h"
 #include "accelcal/session/session_paths.h"

@@ -7,7 +7,7 @@
 
 #include <fmt/core.h>
 
-#include "accelcal/error.h"
+#include "accelcal/base/error.h"
 #include "accelcal/session/session_catalog.h"
 #include "accelcal/session/session_paths.h"
 #include "accelcal/session/session_store.h"

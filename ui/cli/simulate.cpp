@@ -6,10 +6,10 @@
 
 #include <nlohmann/json.hpp>
 
-#include "accelcal/error.h"
+#include "accelcal/base/error.h"
 #include "accelcal/io/capture_set_writer.h"
-#include "accelcal/sim/scenario.h"
-#include "accelcal/sim/virtual_bench.h"
+#include "accelcal/acquire/sim/scenario.h"
+#include "accelcal/acquire/sim/virtual_bench.h"
 #include "cli/commands.h"
 
 namespace accelcal::cli {

@@ -8,11 +8,11 @@
 
 #include <fmt/core.h>
 
-#include "accelcal/error.h"
+#include "accelcal/base/error.h"
 #include "accelcal/session/session_paths.h"
-#include "accelcal/source/source_spec.h"
-#include "accelcal/wizard/procedure.h"
-#include "accelcal/wizard/wizard_engine.h"
+#include "accelcal/acquire/source/source_spec.h"
+#include "accelcal/session/procedure.h"
+#include "accelcal/app/wizard/wizard_engine.h"
 #include "cli/commands.h"
 #include "cli/gravity_options.h"
 #include "cli/wizard_journal.h"

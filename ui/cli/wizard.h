@@ -5,7 +5,7 @@
 #include <optional>
 #include <string>
 
-#include "accelcal/gravity.h"
+#include "accelcal/base/gravity.h"
 
 namespace accelcal::cli {
 

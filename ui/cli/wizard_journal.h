@@ -5,7 +5,7 @@
 #include <memory>
 #include <string>
 
-#include "accelcal/wizard/session_journal.h"
+#include "accelcal/session/session_journal.h"
 
 namespace accelcal::cli {
 

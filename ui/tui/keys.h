@@ -11,7 +11,7 @@
 #include <optional>
 #include <string>
 
-#include "accelcal/wizard/wizard_view.h"
+#include "accelcal/app/wizard/wizard_view.h"
 
 namespace accelcal::ui {
 

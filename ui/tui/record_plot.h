@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "accelcal/wizard/wizard_view.h"
+#include "accelcal/app/wizard/wizard_view.h"
 
 namespace accelcal::ui {
 

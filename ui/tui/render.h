@@ -10,7 +10,7 @@
 
 #include <string>
 
-#include "accelcal/wizard/wizard_view.h"
+#include "accelcal/app/wizard/wizard_view.h"
 #include "tui/screen_model.h"
 
 namespace accelcal::ui {

@@ -5,7 +5,7 @@
 
 #include <fmt/core.h>
 
-#include "accelcal/wizard/duration_text.h"
+#include "accelcal/base/duration_text.h"
 #include "tui/gauge.h"
 #include "tui/prism_drawing.h"
 #include "tui/record_plot.h"

@@ -3,7 +3,7 @@
 
 #include <vector>
 
-#include "accelcal/wizard/wizard_view.h"
+#include "accelcal/app/wizard/wizard_view.h"
 #include "tui/render.h"
 #include "tui/screen_model.h"
 

@@ -6,7 +6,7 @@
 
 #include <optional>
 
-#include "accelcal/wizard/wizard_driver.h"
+#include "accelcal/app/wizard/wizard_driver.h"
 #include "tui/screen_model.h"
 
 namespace accelcal::ui {

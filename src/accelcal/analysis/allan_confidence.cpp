@@ -5,7 +5,7 @@
 #include <limits>
 #include <vector>
 
-#include "accelcal/diagnosis/chi_square.h"
+#include "accelcal/base/chi_square.h"
 
 namespace accelcal {
 namespace {

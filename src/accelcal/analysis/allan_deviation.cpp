@@ -8,7 +8,7 @@
 
 #include <Eigen/Core>
 
-#include "accelcal/error.h"
+#include "accelcal/base/error.h"
 
 namespace accelcal {
 namespace {

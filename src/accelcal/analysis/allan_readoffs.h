@@ -26,7 +26,7 @@
 #include <string>
 #include <vector>
 
-#include "accelcal/capture.h"  // kNaN
+#include "accelcal/base/capture.h"  // kNaN
 
 namespace accelcal {
 

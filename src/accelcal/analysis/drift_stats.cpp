@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "accelcal/error.h"
+#include "accelcal/base/error.h"
 
 namespace accelcal {
 

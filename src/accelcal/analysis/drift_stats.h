@@ -11,7 +11,7 @@
 #include <cstdint>
 #include <string>
 
-#include "accelcal/capture.h"  // kNaN
+#include "accelcal/base/capture.h"  // kNaN
 
 namespace accelcal {
 

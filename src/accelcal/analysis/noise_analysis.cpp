@@ -7,8 +7,8 @@
 
 #include <fmt/core.h>
 
-#include "accelcal/apply.h"
-#include "accelcal/error.h"
+#include "accelcal/calibration/apply.h"
+#include "accelcal/base/error.h"
 
 namespace accelcal::analysis {
 namespace {

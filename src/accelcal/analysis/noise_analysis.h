@@ -33,7 +33,7 @@
 
 #include "accelcal/analysis/normality.h"
 #include "accelcal/analysis/welch_psd.h"
-#include "accelcal/capture.h"
+#include "accelcal/base/capture.h"
 #include "accelcal/io/calibration_file.h"
 
 namespace accelcal::analysis {

@@ -4,8 +4,8 @@
 
 #include <fmt/core.h>
 
-#include "accelcal/capture.h"
-#include "accelcal/error.h"
+#include "accelcal/base/capture.h"
+#include "accelcal/base/error.h"
 
 namespace accelcal::analysis {
 

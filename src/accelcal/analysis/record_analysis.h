@@ -25,7 +25,7 @@
 #include "accelcal/analysis/allan_deviation.h"
 #include "accelcal/analysis/allan_readoffs.h"
 #include "accelcal/analysis/drift_stats.h"
-#include "accelcal/capture.h"
+#include "accelcal/base/capture.h"
 
 namespace accelcal {
 

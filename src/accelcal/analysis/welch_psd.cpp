@@ -6,7 +6,7 @@
 #include <fmt/core.h>
 #include <unsupported/Eigen/FFT>
 
-#include "accelcal/error.h"
+#include "accelcal/base/error.h"
 
 namespace accelcal::analysis {
 namespace {

@@ -9,7 +9,7 @@
 #include <fmt/core.h>
 
 #include "accelcal/io/atomic_write.h"
-#include "accelcal/error.h"
+#include "accelcal/base/error.h"
 
 namespace accelcal {
 namespace {

@@ -12,10 +12,10 @@
 #include <Eigen/Core>
 #include <nlohmann/json.hpp>
 
-#include "accelcal/capture.h"
-#include "accelcal/fit/fit_summary.h"
-#include "accelcal/gravity.h"
-#include "accelcal/sensor_model.h"
+#include "accelcal/base/capture.h"
+#include "accelcal/calibration/fit/fit_summary.h"
+#include "accelcal/base/gravity.h"
+#include "accelcal/base/sensor_model.h"
 
 namespace accelcal {
 

@@ -8,10 +8,10 @@
 
 #include <fmt/format.h>
 
-#include "accelcal/detail/csv_fields.h"
-#include "accelcal/detail/read_file.h"
-#include "accelcal/detail/text_scan.h"
-#include "accelcal/error.h"
+#include "accelcal/io/detail/csv_fields.h"
+#include "accelcal/io/detail/read_file.h"
+#include "accelcal/base/text_scan.h"
+#include "accelcal/base/error.h"
 
 namespace accelcal {
 namespace {

@@ -43,7 +43,7 @@
 #include <string>
 #include <string_view>
 
-#include "accelcal/capture_set.h"
+#include "accelcal/base/capture_set.h"
 
 namespace accelcal {
 

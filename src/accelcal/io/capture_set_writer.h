@@ -21,8 +21,8 @@
 #include <string>
 #include <vector>
 
-#include "accelcal/capture.h"
-#include "accelcal/capture_set.h"
+#include "accelcal/base/capture.h"
+#include "accelcal/base/capture_set.h"
 
 namespace accelcal {
 

@@ -2,11 +2,11 @@
 
 #include <algorithm>
 
-#include "accelcal/detail/read_file.h"
-#include "accelcal/detail/recording_lines.h"
-#include "accelcal/detail/sample_line_parser.h"
-#include "accelcal/detail/text_scan.h"
-#include "accelcal/error.h"
+#include "accelcal/io/detail/read_file.h"
+#include "accelcal/io/detail/recording_lines.h"
+#include "accelcal/base/sample_line_parser.h"
+#include "accelcal/base/text_scan.h"
+#include "accelcal/base/error.h"
 
 namespace accelcal {
 namespace {

@@ -27,7 +27,7 @@
 #include <string_view>
 #include <vector>
 
-#include "accelcal/capture.h"
+#include "accelcal/base/capture.h"
 
 namespace accelcal {
 

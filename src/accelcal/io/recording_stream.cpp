@@ -3,9 +3,9 @@
 #include <cerrno>
 #include <cstring>
 
-#include "accelcal/detail/recording_lines.h"
-#include "accelcal/detail/text_scan.h"
-#include "accelcal/error.h"
+#include "accelcal/io/detail/recording_lines.h"
+#include "accelcal/base/text_scan.h"
+#include "accelcal/base/error.h"
 
 namespace accelcal {
 

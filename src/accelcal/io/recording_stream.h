@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
-#include "accelcal/capture.h"
-#include "accelcal/detail/sample_line_parser.h"
+#include "accelcal/base/capture.h"
+#include "accelcal/base/sample_line_parser.h"
 
 namespace accelcal {
 

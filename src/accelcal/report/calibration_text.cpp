@@ -3,7 +3,7 @@
 #include <fmt/core.h>
 
 #include "accelcal/report/fit_text.h"
-#include "accelcal/sensor_model.h"
+#include "accelcal/base/sensor_model.h"
 
 namespace accelcal {
 namespace {

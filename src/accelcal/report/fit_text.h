@@ -4,10 +4,10 @@
 #include <string>
 #include <vector>
 
-#include "accelcal/capture.h"
-#include "accelcal/fit/fit_summary.h"
+#include "accelcal/base/capture.h"
+#include "accelcal/calibration/fit/fit_summary.h"
 #include "accelcal/io/calibration_file.h"
-#include "accelcal/static_detector.h"
+#include "accelcal/acquire/static_detector.h"
 
 namespace accelcal {
 

@@ -5,13 +5,13 @@
 
 #include <fmt/core.h>
 
-#include "accelcal/diagnosis/effect.h"
-#include "accelcal/diagnosis/extended_model.h"
-#include "accelcal/error.h"
-#include "accelcal/fit/calibration_fit.h"
-#include "accelcal/fit/fit_capture.h"
-#include "accelcal/fit/least_squares.h"
-#include "accelcal/sensor_model.h"
+#include "accelcal/calibration/diagnosis/effect.h"
+#include "accelcal/calibration/diagnosis/extended_model.h"
+#include "accelcal/base/error.h"
+#include "accelcal/calibration/fit/calibration_fit.h"
+#include "accelcal/calibration/fit/fit_capture.h"
+#include "accelcal/calibration/fit/least_squares.h"
+#include "accelcal/base/sensor_model.h"
 
 namespace accelcal {
 namespace {

@@ -21,10 +21,10 @@
 
 #include <nlohmann/json.hpp>
 
-#include "accelcal/capture.h"
+#include "accelcal/base/capture.h"
 #include "accelcal/io/calibration_file.h"
-#include "accelcal/wizard/procedure.h"
-#include "accelcal/wizard/session_journal.h"
+#include "accelcal/session/procedure.h"
+#include "accelcal/session/session_journal.h"
 
 namespace accelcal {
 

@@ -6,7 +6,7 @@
 
 #include <fmt/core.h>
 
-#include "accelcal/error.h"
+#include "accelcal/base/error.h"
 
 namespace accelcal {
 

@@ -4,7 +4,7 @@
 
 #include <fmt/core.h>
 
-#include "accelcal/error.h"
+#include "accelcal/base/error.h"
 #include "accelcal/session/detail/capture_rows.h"
 #include "accelcal/session/detail/record_rows.h"
 #include "accelcal/session/detail/session_lock.h"

@@ -17,7 +17,7 @@
 #include <string>
 #include <string_view>
 
-#include "accelcal/wizard/session_journal.h"
+#include "accelcal/session/session_journal.h"
 
 namespace accelcal {
 

@@ -2,7 +2,7 @@
 
 #include <fmt/core.h>
 
-#include "accelcal/error.h"
+#include "accelcal/base/error.h"
 #include "accelcal/session/detail/sample_blob.h"
 #include "accelcal/session/detail/session_schema.h"
 

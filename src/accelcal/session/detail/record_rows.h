@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "accelcal/session/detail/sqlite_db.h"
-#include "accelcal/wizard/session_journal.h"
+#include "accelcal/session/session_journal.h"
 
 namespace accelcal::detail {
 

@@ -5,7 +5,7 @@
 
 #include <vector>
 
-#include "accelcal/capture.h"
+#include "accelcal/base/capture.h"
 
 namespace accelcal::detail {
 

@@ -1,0 +1,100 @@
+#include "accelcal/acquire/source/source_spec.h"
+
+#include <fmt/format.h>
+
+#include "accelcal/base/text_scan.h"
+#include "accelcal/base/error.h"
+#include "accelcal/acquire/sim/scenario.h"
+#include "accelcal/acquire/source/file_link.h"
+#include "accelcal/acquire/source/serial_link.h"
+#include "accelcal/acquire/source/sim_source.h"
+#include "accelcal/acquire/source/stream_source.h"
+#include "accelcal/acquire/source/tcp_link.h"
+
+namespace accelcal {
+namespace {
+
+constexpr const char* kExpected = "expected sim, file:PATH, serial:DEVICE@BAUD, tcp:HOST:PORT or -";
+
+bool StartsWith(const std::string& text, std::string_view prefix) {
+  return text.compare(0, prefix.size(), prefix) == 0;
+}
+
+SourceSpec ParseSerial(const std::string& spec) {
+  const std::string rest = spec.substr(7);
+  const size_t at = rest.rfind('@');
+  SourceSpec s{SourceKind::kSerial, rest.substr(0, at), 0, {}, 0};
+  if (at == std::string::npos || s.path.empty())
+    throw Error(fmt::format("source '{}': expected serial:DEVICE@BAUD, e.g. "
+                            "serial:/dev/ttyUSB0@115200", spec));
+  if (!detail::ParseLong(rest.substr(at + 1), &s.baud) || s.baud <= 0)
+    throw Error(fmt::format("source '{}': baud rate '{}' is not a positive whole number", spec,
+                            rest.substr(at + 1)));
+  return s;
+}
+
+SourceSpec ParseTcp(const std::string& spec) {
+  const std::string rest = spec.substr(4);
+  const size_t colon = rest.rfind(':');
+  SourceSpec s{SourceKind::kTcp, {}, 0, rest.substr(0, colon), 0};
+  if (s.host.size() >= 2 && s.host.front() == '[' && s.host.back() == ']')
+    s.host = s.host.substr(1, s.host.size() - 2);
+  if (colon == std::string::npos || s.host.empty())
+    throw Error(fmt::format("source '{}': expected tcp:HOST:PORT, e.g. tcp:192.168.7.2:5000",
+                            spec));
+  long port = 0;
+  if (!detail::ParseLong(rest.substr(colon + 1), &port) || port < 1 || port > 65535)
+    throw Error(fmt::format("source '{}': port '{}' is not a number in 1..65535", spec,
+                            rest.substr(colon + 1)));
+  s.port = static_cast<int>(port);
+  return s;
+}
+
+std::unique_ptr<SampleSource> OpenSim(const SourceOptions& options) {
+  sim::Scenario scenario = options.scenario_path.empty() ? sim::DefaultScenario()
+                                                         : sim::LoadScenario(options.scenario_path);
+  if (options.seed) scenario.bench.seed = *options.seed;
+  return std::make_unique<SimSource>(std::move(scenario), options.sim, options.dead_after_s,
+                                     options.gap_factor);
+}
+
+}  // namespace
+
+SourceSpec ParseSourceSpec(const std::string& spec) {
+  if (spec == "sim") return {};
+  if (spec == "-") return {SourceKind::kStdin, {}, 0, {}, 0};
+  if (StartsWith(spec, "file:")) {
+    if (spec.size() == 5) throw Error("source 'file:': expected file:PATH, e.g. file:rec.txt");
+    return {SourceKind::kFile, spec.substr(5), 0, {}, 0};
+  }
+  if (StartsWith(spec, "serial:")) return ParseSerial(spec);
+  if (StartsWith(spec, "tcp:")) return ParseTcp(spec);
+  throw Error(fmt::format("unknown source '{}': {}", detail::TrimBlanks(spec), kExpected));
+}
+
+std::unique_ptr<SampleSource> OpenSource(const std::string& spec, const SourceOptions& options) {
+  if (std::string why = options.Validate(); !why.empty())
+    throw Error("source options: " + why);
+  const SourceSpec s = ParseSourceSpec(spec);
+  using Pacing = StreamSource::Pacing;
+  switch (s.kind) {
+    case SourceKind::kSim:
+      return OpenSim(options);
+    case SourceKind::kStdin:
+      return std::make_unique<StreamSource>(MakeStdinLink(options.stdin_fd), options,
+                                            Pacing::kAsFastAsPossible);
+    case SourceKind::kFile:
+      return std::make_unique<StreamSource>(
+          OpenFileLink(s.path), options,
+          options.realtime ? Pacing::kByT : Pacing::kAsFastAsPossible);
+    case SourceKind::kSerial:
+      return std::make_unique<StreamSource>(MakeSerialLink(s.path, s.baud), options,
+                                            Pacing::kAsFastAsPossible);
+    case SourceKind::kTcp:
+      return std::make_unique<StreamSource>(MakeTcpLink(s.host, s.port), options,
+                                            Pacing::kAsFastAsPossible);
+  }
+  throw Error("unreachable source kind");
+}
+
+}  // namespace accelcal

@@ -1,0 +1,37 @@
+// The record analysis (record_analysis.h) of a recording file, streamed block by block
+// (io/recording_stream.h): a 12-hour record at 1 kHz is analysed in bounded memory. With a
+// calibration, each sample is corrected first (apply.h) and the figures are in m/s^2; without,
+// in raw counts.
+#pragma once
+
+#include <functional>
+#include <optional>
+#include <string>
+
+#include "accelcal/analysis/record_analysis.h"
+#include "accelcal/io/calibration_file.h"
+#include "accelcal/session/session_journal.h"
+
+namespace accelcal {
+
+// `path` is a recording file ("-": standard input). `progress`, when set, is called now and
+// then with the samples read so far. Throws accelcal::Error / InputError (FILE:LINE:COL) on a
+// file that cannot be read or is malformed, and Error when the calibration needs a temperature
+// the record lacks.
+RecordAnalysis AnalyzeRecordingFile(const std::string& path, const RecordAnalysisOptions& options,
+                                    const std::optional<Calibration>& calibration,
+                                    const std::function<void(long samples)>& progress = {});
+
+}  // namespace accelcal
+
+namespace accelcal {
+
+// The record analysis of the record step `step_id` of a session journal (the wizard streams
+// records there in chunks: session_journal.h), read one chunk at a time; in counts, or in m/s^2
+// with a calibration, as for a file. The gaps of a resumed record show as steps in its t and are
+// handled as in a file. Throws accelcal::Error when the step has no record.
+RecordAnalysis AnalyzeJournalRecord(const SessionJournal& journal, const std::string& step_id,
+                                    const RecordAnalysisOptions& options,
+                                    const std::optional<Calibration>& calibration = std::nullopt);
+
+}  // namespace accelcal

@@ -1,0 +1,109 @@
+#include "accelcal/app/wizard/quantity_input.h"
+
+#include <cctype>
+#include <charconv>
+#include <cmath>
+
+#include <fmt/core.h>
+
+namespace accelcal {
+namespace {
+
+struct NumberAndUnit {
+  bool ok = false;
+  double number = kNaN;
+  std::string unit;  // lower case, no blanks
+};
+
+std::string_view Trim(std::string_view s) {
+  while (!s.empty() && std::isspace(static_cast<unsigned char>(s.front()))) s.remove_prefix(1);
+  while (!s.empty() && std::isspace(static_cast<unsigned char>(s.back()))) s.remove_suffix(1);
+  return s;
+}
+
+NumberAndUnit Split(std::string_view text) {
+  NumberAndUnit out;
+  const std::string_view t = Trim(text);
+  const char* end = t.data() + t.size();
+  const auto [ptr, ec] = std::from_chars(t.data(), end, out.number);
+  if (ec != std::errc() || !std::isfinite(out.number)) return out;
+  for (const char* p = ptr; p != end; ++p)
+    if (!std::isspace(static_cast<unsigned char>(*p)))
+      out.unit += static_cast<char>(std::tolower(static_cast<unsigned char>(*p)));
+  out.ok = true;
+  return out;
+}
+
+// The number with its unit as typed, for messages ("12 m").
+std::string AsTyped(const NumberAndUnit& q, std::string_view default_unit) {
+  return fmt::format("{:g} {}", q.number, q.unit.empty() ? default_unit : q.unit);
+}
+
+// A radius out of range: suggest the unit that makes the same number plausible and nearest a
+// typical bench radius (10 cm), so "12 m" suggests 12 cm and "120" suggests 120 mm.
+std::string RadiusSuggestion(double number) {
+  std::string best;
+  double best_distance = 1e300;
+  for (const auto& [unit, factor] : {std::pair{"mm", 0.001}, std::pair{"cm", 0.01},
+                                     std::pair{"m", 1.0}}) {
+    const double m = number * factor;
+    if (m < kMinRadiusM || m > kMaxRadiusM) continue;
+    const double distance = std::abs(std::log10(m / 0.1));
+    if (distance < best_distance) {
+      best_distance = distance;
+      best = fmt::format(": did you mean {:g} {}?", number, unit);
+    }
+  }
+  if (!best.empty()) return best;
+  return fmt::format(" (expected {:g} mm to {:g} m)", kMinRadiusM * 1000, kMaxRadiusM);
+}
+
+}  // namespace
+
+QuantityResult ParseRadius(std::string_view text) {
+  const NumberAndUnit q = Split(text);
+  if (!q.ok)
+    return {kNaN, fmt::format("'{}' is not a radius: give a number with mm, cm or m (e.g. 120 mm)",
+                              Trim(text))};
+  double factor = 1.0;
+  if (q.unit == "mm") factor = 0.001;
+  else if (q.unit == "cm") factor = 0.01;
+  else if (q.unit != "m" && !q.unit.empty())
+    return {kNaN, fmt::format("unknown unit '{}' for a radius: use mm, cm or m", q.unit)};
+  const double radius_m = q.number * factor;
+  if (radius_m < kMinRadiusM || radius_m > kMaxRadiusM)
+    return {kNaN, fmt::format("{} is not a plausible turntable radius{}", AsTyped(q, "m"),
+                              RadiusSuggestion(q.number))};
+  return {radius_m, ""};
+}
+
+QuantityResult ParseRpm(std::string_view text) {
+  const NumberAndUnit q = Split(text);
+  if (!q.ok)
+    return {kNaN, fmt::format("'{}' is not a speed: give rpm (e.g. 120), rps or rad/s", Trim(text))};
+  double factor = 1.0;
+  if (q.unit == "rps" || q.unit == "hz") factor = 60.0;
+  else if (q.unit == "rad/s") factor = 60.0 / (2.0 * M_PI);
+  else if (q.unit != "rpm" && !q.unit.empty())
+    return {kNaN, fmt::format("unknown unit '{}' for a speed: use rpm, rps or rad/s", q.unit)};
+  const double rpm = q.number * factor;
+  if (rpm < kMinRpm || rpm > kMaxRpm)
+    return {kNaN, fmt::format("{} ({:g} rpm) is not a plausible turntable speed (expected {:g} to "
+                              "{:g} rpm)", AsTyped(q, "rpm"), rpm, kMinRpm, kMaxRpm)};
+  return {rpm, ""};
+}
+
+std::string CheckTurntableAgainstRange(const TurntableSetup& setup, double range_g,
+                                       const SensorModel& rough_model, const AdcRange& adc_range,
+                                       const TurntableStabilityOptions& options) {
+  const double g = options.gravity_mps2;
+  const double centripetal_mps2 = setup.ExpectedCentripetalMps2();
+  const double limit_mps2 = range_g * g * (1.0 - options.range_margin);
+  if (centripetal_mps2 > limit_mps2)
+    return fmt::format("{:g} rpm at {:g} m gives {:.1f} g on the radial axis, beyond the "
+                       "accelerometer's +-{:g} g range: lower the speed or the radius",
+                       setup.rpm, setup.radius_m, centripetal_mps2 / g, range_g);
+  return CheckTurntablePlan(setup, rough_model, adc_range, options);
+}
+
+}  // namespace accelcal

@@ -1,0 +1,40 @@
+// Values the operator types, with units: a turntable radius and speed. Each parse returns the
+// value in SI (m, rpm as the bench states it) or refuses with the reason in words, e.g.
+//   "12 m is not a plausible turntable radius: did you mean 12 cm?"
+// Units: m for radii, rpm for speed, g for the accelerometer's range.
+#pragma once
+
+#include <string>
+#include <string_view>
+
+#include "accelcal/acquire/capture_engine/turntable_stability.h"
+#include "accelcal/base/capture_set.h"
+#include "accelcal/base/sensor_model.h"
+
+namespace accelcal {
+
+struct QuantityResult {
+  double value = kNaN;  // valid when error is empty
+  std::string error;    // why the text was refused
+  bool ok() const { return error.empty(); }
+};
+
+// Plausible turntable radii, m, and speeds, rpm.
+inline constexpr double kMinRadiusM = 0.005;
+inline constexpr double kMaxRadiusM = 2.0;
+inline constexpr double kMinRpm = 1.0;
+inline constexpr double kMaxRpm = 3000.0;
+
+// "120 mm", "12 cm", "0.12 m", "0.12" (m). Result in m.
+QuantityResult ParseRadius(std::string_view text);
+// "120", "120 rpm", "2 rps", "12.57 rad/s". Result in rpm.
+QuantityResult ParseRpm(std::string_view text);
+
+// Empty when the planned run stays within the accelerometer's range: the peak specific force
+// (centripetal along the radial axis, g along up) below range_g, and the ADC not clipping
+// through the rough model (CheckTurntablePlan). Else the reason.
+std::string CheckTurntableAgainstRange(const TurntableSetup& setup, double range_g,
+                                       const SensorModel& rough_model, const AdcRange& adc_range,
+                                       const TurntableStabilityOptions& options);
+
+}  // namespace accelcal

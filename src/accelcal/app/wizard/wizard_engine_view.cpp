@@ -1,0 +1,258 @@
+// The wizard engine's view-model: what a front end draws, built from the engine's state.
+#include <fmt/core.h>
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "accelcal/app/wizard/leveling.h"
+#include "accelcal/app/wizard/wizard_engine.h"
+
+namespace accelcal {
+namespace {
+
+// The step's own keys, then skip, back and quit (always meaningful).
+std::vector<KeyHint> WithNavigation(std::vector<KeyHint> keys) {
+  keys.push_back({"s", "skip"});
+  keys.push_back({"b", "back"});
+  keys.push_back({"q", "save and quit"});
+  return keys;
+}
+
+}  // namespace
+
+// ---- view -----------------------------------------------------------------------------------
+
+WizardView WizardEngine::View() const {
+  WizardView v;
+  v.session = options_.session_name;
+  v.procedure = procedure_.title;
+  v.resumed = resumed_;
+  v.step_count = static_cast<int>(procedure_.steps.size()) + 1;
+  v.step_index = std::min(current_ + 2, v.step_count);
+  v.live_counts = live_counts_;
+  if (live_counts_.allFinite())
+    v.live_g = procedure_.nominal.Calibrate(live_counts_).norm() / options_.gravity.gravity_mps2;
+  v.problem = problem_;
+  v.hint = hint_;
+  // The resume summary is shown until this run has recorded something of its own.
+  if (resumed_ && !progressed_) v.lines = resume_lines_;
+  v.lines.insert(v.lines.end(), lines_.begin(), lines_.end());
+  v.status = source_.Describe() + ": " + source_.status().BriefReport();
+  SetStepView(v);
+  SetPhaseView(v);
+  // Leveling: the live tilt (apparent: the bias is not known yet) until the reversal gives it.
+  if (current_ >= 0 && current_ < static_cast<int>(procedure_.steps.size()) &&
+      step().kind == StepKind::kLevel && phase_ != Phase::kLevelResult && live_counts_.allFinite())
+    v.tilt_deg = ApparentTiltDeg(live_counts_, procedure_.nominal);
+  if (source_.status().link == LinkState::kDead && v.problem.empty()) {
+    v.problem = "no samples: " + source_.status().link_error;
+    v.hint = "check the cable or the sample server; the wizard goes on when samples return";
+  }
+  return v;
+}
+
+void WizardEngine::SetStepView(WizardView& v) const {
+  if (current_ < 0) {
+    v.step_title = "Welcome";
+    return;
+  }
+  if (current_ >= static_cast<int>(procedure_.steps.size())) {
+    v.step_title = "Done";
+    return;
+  }
+  const ProcedureStep& s = step();
+  v.step_title = s.title;
+  v.pose_name = s.pose_name;
+  if (s.kind == StepKind::kStatic || s.kind == StepKind::kRecord || s.kind == StepKind::kLevel)
+    v.expected_up = s.up;
+  if (s.kind == StepKind::kTurntable) v.expected_up = SensorAxisVector(s.up_axis);
+}
+
+void WizardEngine::SetPhaseView(WizardView& v) const {
+  switch (phase_) {
+    case Phase::kWelcome:
+      return SetWelcomeView(v);
+    case Phase::kQuiet:
+      return SetQuietView(v);
+    case Phase::kPlace:
+      return SetPlaceView(v);
+    case Phase::kLevelTurn:
+    case Phase::kLevelResult:
+      return SetLevelView(v);
+    case Phase::kRadius:
+    case Phase::kRpm:
+      return SetInputView(v);
+    case Phase::kCapture:
+    case Phase::kProblem:
+      return SetCaptureView(v);
+    case Phase::kRecord:
+      return SetRecordView(v);
+    case Phase::kResult:
+      return SetResultView(v);
+    case Phase::kDone:
+      return SetDoneView(v);
+  }
+}
+
+void WizardEngine::SetWelcomeView(WizardView& v) const {
+  const WelcomeField field = Welcome(welcome_field_);
+  v.screen = WizardScreen::kWelcome;
+  v.prompt = fmt::format("Welcome to {}.", procedure_.title);
+  v.input = InputRequest{field.key, field.label, field.default_value, ""};
+  v.keys = {{"Enter", "accept"}, {"b", "back"}, {"q", "save and quit"}};
+}
+
+void WizardEngine::SetQuietView(WizardView& v) const {
+  v.screen = WizardScreen::kCapturing;
+  v.prompt =
+      fmt::format("Leave the sensor resting on the table: measuring the noise floor ({:g} s).",
+                  options_.quiet_period_s);
+  v.progress = quiet_.n >= 2
+                   ? std::min(1.0, (quiet_.t_last_s - quiet_.t_first_s) / options_.quiet_period_s)
+                   : 0.0;
+  v.keys = {{"q", "save and quit"}};
+}
+
+void WizardEngine::SetPlaceView(WizardView& v) const {
+  v.screen = step().kind == StepKind::kTurntable ? WizardScreen::kMountTurntable
+             : step().kind == StepKind::kLevel   ? WizardScreen::kLevel
+                                                 : WizardScreen::kPlacePose;
+  if (step().kind == StepKind::kRecord && RecordResumable()) {
+    const RecordSummary r = journal_.RecordSummaryOf(step().id);
+    v.prompt = fmt::format("Resuming the {}: {} recorded of {}. Leave the sensor as it is and "
+                           "press Enter to go on recording (the gap is recorded).",
+                           step().title, FormatLongDuration(r.recorded_s()),
+                           FormatLongDuration(step().duration_s));
+    v.keys = WithNavigation({{"Enter", "resume"}});
+    return;
+  }
+  v.prompt =
+      step().kind == StepKind::kRecord
+          ? fmt::format("Put the prism on the table with {} and let go; press Enter to start the "
+                        "{} record.", step().pose_name, FormatLongDuration(step().duration_s))
+      : step().kind == StepKind::kTurntable
+          ? fmt::format(
+                "Mount the sensor on the turntable with {} at {:g} mm from the axis and run "
+                "it at {:g} rpm; press Enter when it turns steadily.",
+                step().pose_name, radius_m_ * 1000.0, rpm_)
+      : step().kind == StepKind::kLevel
+          ? "Put the prism on the table with +z up and let go; press Enter to measure the tilt."
+          : fmt::format("Put the prism on the table with {} and let go; press Enter to capture.",
+                        step().pose_name);
+  v.keys = WithNavigation({{"Enter", "capture"}});
+}
+
+void WizardEngine::SetLevelView(WizardView& v) const {
+  v.screen = WizardScreen::kLevel;
+  if (phase_ == Phase::kLevelTurn) {
+    v.prompt =
+        "Turn the prism 180 deg about the vertical (still +z up); press Enter to measure again.";
+    v.keys = WithNavigation({{"Enter", "measure"}});
+    return;
+  }
+  v.tilt_deg = level_tilt_deg_;
+  v.prompt = fmt::format("Tilt {:.2f} deg about x, {:.2f} deg about y (tolerance {:g} deg): {}.",
+                         level_tilt_deg_.x(), level_tilt_deg_.y(), step().tolerance_deg,
+                         level_ok_ ? "level; press Enter to continue" : "not level");
+  v.keys =
+      WithNavigation({{"Enter", level_ok_ ? "continue" : "measure again"}, {"r", "measure again"}});
+}
+
+void WizardEngine::SetInputView(WizardView& v) const {
+  const bool radius = phase_ == Phase::kRadius;
+  v.screen = WizardScreen::kInput;
+  v.prompt = fmt::format("Turntable run with {}.", step().pose_name);
+  v.input = InputRequest{
+      radius ? "radius" : "rpm",
+      radius ? "Radius from the spin axis to the sensor (e.g. 120 mm)"
+             : "Table speed (e.g. 120 rpm, 2 rps, 12.57 rad/s)",
+      radius ? fmt::format("{:g} mm", radius_m_ * 1000.0) : fmt::format("{:g} rpm", rpm_),
+      input_error_};
+  v.keys = WithNavigation({{"Enter", "accept"}});
+}
+
+void WizardEngine::SetResultView(WizardView& v) const {
+  const StepKind kind = step().kind;
+  v.screen = kind == StepKind::kFit         ? WizardScreen::kFit
+             : kind == StepKind::kDiagnosis ? WizardScreen::kDiagnosis
+                                            : WizardScreen::kReport;
+  if (!problem_.empty()) {
+    v.prompt = "The session cannot go on from here as it is.";
+    v.keys = WithNavigation({{"r", "retry"}});
+    return;
+  }
+  if (kind == StepKind::kDiagnosis && diagnosis_ && !diagnosis_->adopted.empty()) {
+    v.prompt = fmt::format("Adopt {} into the calibration? Enter adopts, n keeps the base model.",
+                           fmt::join(diagnosis_->adopted_names(), ", "));
+    v.keys = WithNavigation({{"Enter", "adopt"}, {"n", "keep the base model"}});
+    return;
+  }
+  v.prompt = kind == StepKind::kReport
+                 ? "Calibration recorded in the session; press Enter to finish."
+                 : "Press Enter to continue.";
+  v.keys = WithNavigation({{"Enter", "continue"}, {"r", "retry"}});
+}
+
+void WizardEngine::SetDoneView(WizardView& v) const {
+  v.screen = WizardScreen::kDone;
+  v.finished = true;
+  const bool calibrates = std::any_of(procedure_.steps.begin(), procedure_.steps.end(),
+                                      [](const ProcedureStep& s) { return s.kind == StepKind::kReport; });
+  if (quit_) {
+    v.prompt = fmt::format("Saved. Everything accepted is in session {}; run the wizard on it again "
+                           "to resume.", options_.session_name);
+  } else {
+    v.prompt = calibrates ? "Calibration complete." : "Procedure complete: every step is recorded.";
+  }
+}
+
+void WizardEngine::SetRecordView(WizardView& v) const {
+  v.screen = WizardScreen::kRecording;
+  v.keys = {{"s", "skip"}, {"b", "back"}, {"q", "save and quit"}};
+  const RecordView r = record_->View();
+  v.progress = std::clamp(r.elapsed_s / r.duration_s, 0.0, 1.0);
+  const std::string clock = fmt::format("{} of {}", FormatClock(r.elapsed_s), FormatClock(r.duration_s));
+  if (record_settling_) {
+    v.prompt = fmt::format("Recording the {} with {}; letting the sensor settle", step().title,
+                           step().pose_name);
+  } else if (record_->resuming()) {
+    const std::string gap = r.gaps > record_->resumed_from().num_gaps
+                                ? fmt::format("gap of {:.0f} s", r.gaps_s - record_->resumed_from().gaps_s)
+                                : "waiting for the first sample";
+    v.prompt = fmt::format("Resuming the {}: {} recorded, {}; recording {}", step().title,
+                           FormatLongDuration(record_->resumed_from().recorded_s()), gap, clock);
+  } else {
+    v.prompt = fmt::format("Recording the {} with {}; {}", step().title, step().pose_name, clock);
+  }
+  v.stability_text = r.bumps == 0 ? "still"
+                                  : fmt::format("moved {} time{} (last {}); the record goes on",
+                                                r.bumps, r.bumps == 1 ? "" : "s", r.last_bump);
+  v.record = r;
+}
+
+void WizardEngine::SetCaptureView(WizardView& v) const {
+  v.screen = phase_ == Phase::kProblem ? WizardScreen::kError : WizardScreen::kCapturing;
+  v.keys = {{"r", "retry"}, {"s", "skip"}, {"b", "back"}, {"q", "save and quit"}};
+  if (phase_ == Phase::kProblem) {
+    v.prompt = "The capture was not accepted.";
+    v.keys.insert(v.keys.begin(), KeyHint{"Enter", "try again"});
+    return;
+  }
+  const CaptureSnapshot snap = engine_->Snapshot();
+  v.prompt =
+      fmt::format("{} {} (attempt {}): {}", CaptureStateToString(snap.state), step().pose_name,
+                  std::max(1, snap.attempts),
+                  snap.state == CaptureState::kCapturing
+                      ? fmt::format("{:.0f} %", snap.progress * 100.0)
+                      : (snap.reason.empty() ? "waiting for the sensor to be still" : snap.reason));
+  v.progress = snap.progress;
+  if (step().kind == StepKind::kTurntable) {
+    v.stability_text = snap.turntable.ok ? "turning steadily" : snap.turntable.reason;
+  } else {
+    v.stability = snap.stability.WorstRatio();
+    v.stability_text = snap.stability.stable ? "still" : snap.stability.reason;
+  }
+}
+
+}  // namespace accelcal

@@ -1,0 +1,102 @@
+// Closing the loop: when a fit's residuals are larger than the captures' noise explains, find
+// which effect (effect.h) the model lacks, add it, and report the error before and after.
+//
+//  1. Consistency: chi2 = sum (r_i / sigma_i)^2 against the chi-square distribution with
+//     n - k degrees of freedom; p >= consistency_p means the residuals are what noise explains:
+//     stop.
+//  2. Candidates: every effect of the library not yet adopted is checked for identifiability
+//     (skipped with its reason otherwise), added to the current model and refitted, and scored:
+//     BIC = chi2 + k ln n, AICc, and the leave-one-capture-out prediction error (LOO). The
+//     ranking is by LOO when computed (prediction on captures the fit did not see separates
+//     near-collinear effects best), else by BIC.
+//  3. Adoption: the best-ranked candidate is adopted only when its improvement is significant: a
+//     likelihood-ratio test, delta chi2 over m added parameters, with delta chi2 divided by
+//     max(1, chi2/dof after) so that noise underestimated by the captures' own statistics
+//     does not make everything look significant, and Bonferroni-corrected for the number of
+//     candidates tried (p * candidates < adoption_p). Then back to 1 with the extended model.
+//  4. Every step keeps the residual RMS, maximum and chi2/dof before and after, the effect's
+//     parameters with 1-sigma uncertainties, and the evidence in words.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "accelcal/calibration/diagnosis/effect.h"
+#include "accelcal/calibration/fit/calibration_fit.h"
+#include "accelcal/calibration/fit/fit_summary.h"
+
+namespace accelcal {
+
+struct DiagnosisOptions {
+  double consistency_p = 0.01;  // residuals are "noise" when the chi-square test's p >= this
+  double adoption_p = 0.001;    // family-wise p-value an effect must beat to be adopted
+  int max_effects = 4;          // at most this many effects are added
+  bool leave_one_out = true;    // compute the leave-one-capture-out error of each candidate
+
+  std::string Validate() const;
+};
+
+struct ResidualStats {
+  double rms_mps2 = 0.0;
+  double max_abs_mps2 = 0.0;
+  double chi2 = 0.0;
+  int dof = 0;
+  double p_value = 1.0;         // chi-square test of the residuals against noise
+  double Chi2PerDof() const { return dof > 0 ? chi2 / dof : 0.0; }
+};
+
+struct CandidateScore {
+  std::string effect;
+  std::string skipped_reason;   // non-empty: not identifiable (or the fit failed), not scored
+  ResidualStats after;
+  double bic = 0.0;
+  double aicc = 0.0;
+  double loo_rms_mps2 = -1.0;   // leave-one-capture-out prediction error; -1 when not computed
+  double lr_p_value = 1.0;      // likelihood-ratio test against the current model (uncorrected)
+};
+
+struct AdoptedEffect {
+  std::string name;
+  std::vector<std::string> parameter_names;
+  std::vector<std::string> parameter_units;
+  std::vector<double> parameters;
+  std::vector<double> uncertainty;  // 1-sigma
+  ResidualStats before;
+  ResidualStats after;
+  std::string evidence;             // in words
+};
+
+struct DiagnosisRound {
+  ResidualStats current;                 // the model's residuals entering the round
+  std::vector<CandidateScore> candidates;
+  std::string outcome;                   // what the round concluded, in words
+};
+
+struct DiagnosisReport {
+  FitSummary base;                       // the seed's model alone
+  FitSummary final_fit;                  // with the adopted effects (== base when none)
+  std::vector<AdoptedEffect> adopted;    // in the order adopted
+  std::vector<DiagnosisRound> rounds;
+  EffectContext context;                 // reference temperature and time of the effects
+  double noise_rms_mps2 = 0.0;           // RMS of the captures' own sigma_i: what noise explains
+  bool consistent = false;               // the final residuals pass the chi-square test
+  std::string conclusion;                // one paragraph
+  std::vector<std::string> adopted_names() const;
+};
+
+// Fits the base model, then runs the loop. `captures` are the used ones. When the base fit is
+// not usable, the report's base says why and nothing else is done.
+DiagnosisReport Diagnose(const std::vector<FitCapture>& captures, const FitOptions& fit_options,
+                         const DiagnosisOptions& options);
+
+// The calibration file's "effects" list (README): name, parameters, uncertainty, units,
+// rms_before_mps2, rms_after_mps2, reference conditions, evidence, and whether `accelcal apply`
+// corrects readings with it.
+nlohmann::json EffectsToJson(const DiagnosisReport& report);
+
+// Several lines: before/after per adopted effect, parameters, evidence, candidates of each round.
+std::string FormatDiagnosis(const DiagnosisReport& report);
+
+}  // namespace accelcal

@@ -1,0 +1,84 @@
+// Effects that the seed's nine-parameter model lacks, each with a physical story, a
+// parameterization, and the data it needs to be identifiable. The diagnosis (diagnosis.h) adds
+// them to the model one at a time when the residuals call for it.
+//
+// How an effect enters the fit: for each capture it corrects the mean raw reading into what the
+// base model (sensor_model.h) should see, and/or the reference magnitude |f| the capture should
+// show. The residual stays r = |T K^-1 (raw' - b)| - |f'|, in m/s^2.
+//
+// Reference points: temperatures are taken relative to `temp_ref_c` and times relative to
+// `t_ref_s`, the means over the captures used in the fit, so the base bias and scale stay those
+// of the session's typical conditions.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "accelcal/calibration/fit/fit_capture.h"
+#include "accelcal/base/sensor_model.h"
+
+namespace accelcal {
+
+struct EffectContext {
+  double gravity_mps2 = 9.80665;
+  double temp_ref_c = 0.0;  // mean temperature of the captures used, degC
+  double t_ref_s = 0.0;     // mean time of the captures used, s
+};
+
+// What a capture becomes once an effect is accounted for.
+struct CorrectedCapture {
+  Eigen::Vector3d raw_counts;  // the mean reading as the base model should see it
+  double radius_m;             // turntable: the radius the reference should use
+  double omega_rad_per_s;      // turntable: the speed the reference should use
+};
+
+class Effect {
+ public:
+  virtual ~Effect() = default;
+
+  // Stable name, as in the calibration file ("quadratic_nonlinearity", ...).
+  virtual std::string_view Name() const = 0;
+  // One sentence: the physical story.
+  virtual std::string_view Story() const = 0;
+  virtual int NumParameters() const = 0;
+  virtual std::string ParameterName(int i) const = 0;  // e.g. "q_x"
+  virtual std::string ParameterUnit(int i) const = 0;  // e.g. "counts/(m/s^2)^2"
+  // A parameter change that moves a typical residual by ~1e-3 m/s^2 (optimizer scaling only).
+  virtual double ParameterScale(int i, const SensorModel& base, const EffectContext& ctx) const = 0;
+  // Empty when the captures can identify the effect; otherwise why not, in words.
+  virtual std::string WhyNotIdentifiable(const std::vector<FitCapture>& captures) const = 0;
+  // Applies the effect with parameters `theta` (NumParameters() values) to capture `c`.
+  virtual void Correct(const double* theta, const SensorModel& base, const FitCapture& c,
+                       const EffectContext& ctx, CorrectedCapture* out) const = 0;
+  // The physical variable the effect grows with, for the evidence in words ("temperature",
+  // "w^2 r", ...), and its value for a capture (NaN where it does not apply). Empty name: none
+  // (the quadratic depends on each axis's input, not on one variable).
+  virtual std::string_view RegressorName() const { return {}; }
+  virtual double Regressor(const FitCapture&) const { return kNaN; }
+  // Corrections run in stage order, inverting the forward model from the outside in:
+  // 0 additive shifts of the reading (temperature bias, drift), 1 scale changes, 2 the
+  // nonlinearity (solved on the shifted, rescaled reading), 3 the bench's geometry.
+  virtual int CorrectionStage() const = 0;
+  // True for properties of the sensor itself, which `accelcal apply` corrects in every reading;
+  // false for errors of the bench during calibration (radius, speed), which it does not.
+  virtual bool CorrectsReadings() const = 0;
+};
+
+// True when `a` corrects before `b` (an earlier CorrectionStage).
+inline bool CorrectsBefore(const Effect* a, const Effect* b) {
+  return a->CorrectionStage() < b->CorrectionStage();
+}
+
+// `effects` sorted by CorrectsBefore (stable): the order in which corrections are applied.
+std::vector<const Effect*> InCorrectionOrder(std::vector<const Effect*> effects);
+
+// The library, in a fixed order. Ownership: the returned effects are static; never freed.
+const std::vector<const Effect*>& AllEffects();
+// nullptr when there is no effect of that name.
+const Effect* FindEffect(std::string_view name);
+
+}  // namespace accelcal

@@ -1,0 +1,30 @@
+// What the fit uses of one capture: its mean reading, the uncertainty of that mean, and the
+// conditions it was taken in (which decide the reference magnitude and feed the effects).
+#pragma once
+
+#include <Eigen/Core>
+
+#include "accelcal/base/capture.h"
+
+namespace accelcal {
+
+struct FitCapture {
+  int id = 0;
+  CaptureKind kind = CaptureKind::kStatic;
+  Eigen::Vector3d mean_counts = Eigen::Vector3d::Zero();
+  // Covariance of the mean reading, counts^2. The per-sample covariance is floored at the
+  // quantization variance (1/12 count^2 per axis) so a perfectly steady quantized signal does
+  // not get an infinite weight; then divided by the sample count (white-noise assumption).
+  Eigen::Matrix3d mean_cov_counts2 = Eigen::Matrix3d::Identity();
+  long n_samples = 0;
+  double radius_m = kNaN;  // turntable only, as stated by the operator
+  double rpm = kNaN;       // turntable only, as stated by the operator
+  std::optional<SensorAxis> up_axis;  // turntable only, when known: the axis that pointed up
+  double mean_t_s = kNaN;
+  double mean_temp_c = kNaN;
+};
+
+// Statistics of `capture` for the fit (the capture must have at least 2 finite samples).
+FitCapture MakeFitCapture(const Capture& capture);
+
+}  // namespace accelcal

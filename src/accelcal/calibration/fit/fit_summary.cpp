@@ -1,0 +1,58 @@
+#include "accelcal/calibration/fit/fit_summary.h"
+
+#include <cmath>
+
+#include <fmt/core.h>
+
+namespace accelcal {
+
+std::string_view FitTerminationToString(FitTermination t) {
+  switch (t) {
+    case FitTermination::kNotRun: return "not_run";
+    case FitTermination::kConverged: return "converged";
+    case FitTermination::kNoConvergence: return "no_convergence";
+    case FitTermination::kNumericalFailure: return "numerical_failure";
+    case FitTermination::kUnderdetermined: return "underdetermined";
+    case FitTermination::kInvalidInput: return "invalid_input";
+  }
+  return "?";
+}
+
+SensorModel FitSummary::Model() const {
+  if (parameters.size() < kNumBaseParameters) return SensorModel{};
+  return SensorModel::FromVector(parameters.head(kNumBaseParameters));
+}
+
+std::string FitSummary::BriefReport() const {
+  if (!IsUsable()) return fmt::format("fit {}: {}", FitTerminationToString(termination), message);
+  return fmt::format("fit converged: {} captures, residual RMS {:.4f} m/s^2, chi2/dof {:.2f}, "
+                     "condition {:.3g}{}",
+                     num_captures, residual_rms_mps2, Chi2PerDof(), condition_number,
+                     warnings.empty() ? "" : fmt::format(", {} warning(s)", warnings.size()));
+}
+
+std::string FitSummary::FullReport() const {
+  std::string out = BriefReport() + "\n";
+  if (!IsUsable()) return out;
+  out += fmt::format("gravity used: {:.6f} m/s^2\n\nparameters (1-sigma):\n", gravity_mps2);
+  for (int i = 0; i < parameters.size(); ++i) {
+    const std::string unit = i < kNumBaseParameters ? std::string(ParameterUnit(i)) : "";
+    out += fmt::format("  {:<12} {:>14.6f} +- {:<11.6f} {}\n", parameter_labels[i], parameters(i),
+                       uncertainty(i), unit);
+  }
+  out += fmt::format("residuals: RMS {:.5f} m/s^2, max |r| {:.5f} m/s^2, chi2 {:.2f} on {} dof\n",
+                     residual_rms_mps2, residual_max_abs_mps2, chi2, dof);
+  if (uncertainty_scale > 1.0)
+    out += fmt::format("uncertainties scaled by {:.2f} = sqrt(chi2/dof): the residuals exceed "
+                       "what the captures' noise explains\n", uncertainty_scale);
+  if (most_correlated.first >= 0)
+    out += fmt::format("most correlated: {} and {} (rho = {:+.3f})\n",
+                       parameter_labels[most_correlated.first],
+                       parameter_labels[most_correlated.second], most_correlated.rho);
+  out += fmt::format("optimizer: NLopt {} after {} evaluations, Gauss-Newton polish {} iterations\n",
+                     optimizer_result, optimizer_evaluations, gauss_newton_iterations);
+  for (const std::string& w : warnings) out += "warning: " + w + "\n";
+  return out;
+}
+
+}  // namespace accelcal

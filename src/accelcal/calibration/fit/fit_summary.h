@@ -1,0 +1,77 @@
+// The outcome of a calibration fit, explaining itself (after Ceres' Solver::Summary).
+//
+// Fields start as "never ran" values. Parameters, uncertainties and residuals are meaningful
+// only when IsUsable(); otherwise `message` says why there is no calibration.
+#pragma once
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "accelcal/base/sensor_model.h"
+
+namespace accelcal {
+
+enum class FitTermination {
+  kNotRun,          // nothing was attempted
+  kConverged,       // the optimum was reached; the result is usable
+  kNoConvergence,   // iteration limits hit before the optimum was reached
+  kNumericalFailure,// non-finite values, singular normal equations, optimizer error
+  kUnderdetermined, // the captures cannot determine the parameters (refused before solving)
+  kInvalidInput,    // options or captures are invalid
+};
+
+// "converged", "no_convergence", ... (as stored in files), and back.
+std::string_view FitTerminationToString(FitTermination t);
+
+struct CaptureResidual {
+  int id = 0;
+  double reference_mps2 = 0.0;  // |f| the capture should show
+  double residual_mps2 = 0.0;   // |a^p| - |f|
+  double sigma_mps2 = 0.0;      // 1-sigma of |a^p| from the capture's own noise
+};
+
+struct ParameterCorrelation {
+  int first = -1;
+  int second = -1;
+  double rho = 0.0;  // correlation coefficient, -1..1
+};
+
+struct FitSummary {
+  FitTermination termination = FitTermination::kNotRun;
+  std::string message;                 // one line: what happened, or why it failed
+  std::vector<std::string> warnings;   // usable but worth a look (conditioning, no redundancy, ...)
+
+  std::vector<std::string> parameter_labels;
+  Eigen::VectorXd parameters;          // estimate, units as in ParameterUnit()
+  Eigen::VectorXd uncertainty;         // 1-sigma, same units
+  Eigen::MatrixXd covariance;
+  double uncertainty_scale = 1.0;      // sqrt(max(1, chi2/dof)) applied to the covariance's sigmas
+
+  std::vector<CaptureResidual> residuals;  // one per capture used, in input order
+  int num_captures = 0;
+  int dof = -1;                        // captures - parameters
+  double chi2 = -1.0;                  // sum (r/sigma)^2
+  double residual_rms_mps2 = -1.0;
+  double residual_max_abs_mps2 = -1.0;
+  double gravity_mps2 = 0.0;
+
+  double condition_number = -1.0;      // of the column-equilibrated weighted Jacobian
+  ParameterCorrelation most_correlated;
+  int optimizer_evaluations = -1;
+  std::string optimizer_result;        // NLopt's result code, in words
+  int gauss_newton_iterations = -1;
+
+  bool IsUsable() const { return termination == FitTermination::kConverged; }
+  double Chi2PerDof() const { return dof > 0 ? chi2 / dof : -1.0; }
+  // The nine base parameters as a model (valid when IsUsable()).
+  SensorModel Model() const;
+  // One line, for a status bar.
+  std::string BriefReport() const;
+  // Several lines: parameters with uncertainties, residual statistics, conditioning, warnings.
+  std::string FullReport() const;
+};
+
+}  // namespace accelcal

@@ -1,0 +1,296 @@
+#include "accelcal/calibration/fit/least_squares.h"
+
+#include <cmath>
+#include <exception>
+
+#include <Eigen/Dense>
+#include <fmt/core.h>
+#include <nlopt.hpp>
+
+namespace accelcal {
+namespace {
+
+// Everything the objective needs; p = p0 + scales .* x, x being NLopt's variables.
+struct Problem {
+  const ResidualModel* model;  // borrowed; outlives the Problem
+  const std::vector<FitCapture>* captures;  // borrowed
+  double gravity_mps2;
+  Eigen::VectorXd p0;
+  Eigen::VectorXd scales;
+  Eigen::VectorXd sigmas;
+  int evaluations = 0;
+
+  Eigen::VectorXd ToParameters(const double* x) const {
+    return p0 + scales.cwiseProduct(Eigen::Map<const Eigen::VectorXd>(x, p0.size()));
+  }
+};
+
+// Weighted residuals rho_i = r_i / sigma_i and their Jacobian in the scaled variables.
+void Evaluate(const Problem& pr, const Eigen::VectorXd& p, Eigen::VectorXd* rho, Eigen::MatrixXd* jac) {
+  const int n = static_cast<int>(pr.captures->size());
+  const int np = static_cast<int>(p.size());
+  rho->resize(n);
+  if (jac != nullptr) jac->resize(n, np);
+  Eigen::VectorXd grad(np);
+  for (int i = 0; i < n; ++i) {
+    const double r = pr.model->Residual(p, (*pr.captures)[i], pr.gravity_mps2,
+                                        jac != nullptr ? &grad : nullptr, nullptr);
+    (*rho)(i) = r / pr.sigmas(i);
+    if (jac != nullptr) jac->row(i) = grad.cwiseProduct(pr.scales).transpose() / pr.sigmas(i);
+  }
+}
+
+double Objective(unsigned n, const double* x, double* grad, void* data) {
+  Problem& pr = *static_cast<Problem*>(data);
+  ++pr.evaluations;
+  const Eigen::VectorXd p = pr.ToParameters(x);
+  Eigen::VectorXd rho;
+  Eigen::MatrixXd jac;
+  Evaluate(pr, p, &rho, grad != nullptr ? &jac : nullptr);
+  if (grad != nullptr) Eigen::Map<Eigen::VectorXd>(grad, n) = jac.transpose() * rho;
+  const double cost = 0.5 * rho.squaredNorm();
+  // A non-finite cost derails the line search; a large finite one makes it back off instead.
+  return std::isfinite(cost) ? cost : 1e300;
+}
+
+std::string NloptResultName(nlopt::result r) {
+  switch (r) {
+    case nlopt::SUCCESS: return "success";
+    case nlopt::STOPVAL_REACHED: return "stopval_reached";
+    case nlopt::FTOL_REACHED: return "ftol_reached";
+    case nlopt::XTOL_REACHED: return "xtol_reached";
+    case nlopt::MAXEVAL_REACHED: return "maxeval_reached";
+    case nlopt::MAXTIME_REACHED: return "maxtime_reached";
+    case nlopt::FAILURE: return "failure";
+    case nlopt::INVALID_ARGS: return "invalid_args";
+    case nlopt::OUT_OF_MEMORY: return "out_of_memory";
+    case nlopt::ROUNDOFF_LIMITED: return "roundoff_limited";
+    case nlopt::FORCED_STOP: return "forced_stop";
+    default: return "unknown";
+  }
+}
+
+// First stage: NLopt's SLSQP (L-BFGS's line search gave up near the optimum with a bare
+// "failure" on ordinary bench sessions; SLSQP ends on its tolerance). The C++ wrapper throws on
+// every negative result, including roundoff_limited, which usually still leaves a good x: we
+// keep x either way and let the Gauss-Newton polish judge convergence.
+Eigen::VectorXd RunNlopt(Problem& pr, int max_evaluations, std::string* result_name) {
+  const int np = static_cast<int>(pr.p0.size());
+  std::vector<double> x(np, 0.0);
+  nlopt::opt opt(nlopt::LD_SLSQP, np);
+  opt.set_min_objective(Objective, &pr);
+  // Loose enough to end on a tolerance rather than in round-off: the polish finishes the job.
+  opt.set_ftol_rel(1e-10);
+  opt.set_xtol_abs(1e-6);
+  opt.set_maxeval(max_evaluations);
+  double f = 0.0;
+  try {
+    *result_name = NloptResultName(opt.optimize(x, f));
+  } catch (const nlopt::roundoff_limited&) {
+    *result_name = "roundoff_limited";
+  } catch (const std::exception& e) {
+    *result_name = std::string("failure (") + e.what() + ")";
+  }
+  return pr.ToParameters(x.data());
+}
+
+struct PolishResult {
+  Eigen::VectorXd p;
+  int iterations = 0;
+  bool converged = false;
+  std::string failure;
+};
+
+// Second stage: Gauss-Newton with step halving, in the scaled variables.
+PolishResult Polish(const Problem& pr, Eigen::VectorXd p, const LeastSquaresOptions& options) {
+  PolishResult out;
+  Eigen::VectorXd rho;
+  Eigen::MatrixXd jac;
+  for (out.iterations = 0; out.iterations < options.max_gauss_newton_iterations; ++out.iterations) {
+    Evaluate(pr, p, &rho, &jac);
+    if (!rho.allFinite() || !jac.allFinite()) {
+      out.failure = "non-finite residuals (a capture's calibrated reading is undefined)";
+      out.p = p;
+      return out;
+    }
+    Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(jac);
+    if (qr.rank() < jac.cols()) {
+      out.failure = "the Jacobian is rank deficient: the captures cannot separate the parameters";
+      out.p = p;
+      return out;
+    }
+    const Eigen::VectorXd step = qr.solve(-rho);
+    const double cost = rho.squaredNorm();
+    double alpha = 1.0;
+    Eigen::VectorXd candidate;
+    Eigen::VectorXd rho_new;
+    bool decreased = false;
+    for (int halving = 0; halving < 40; ++halving, alpha *= 0.5) {
+      candidate = p + pr.scales.cwiseProduct(alpha * step);
+      Evaluate(pr, candidate, &rho_new, nullptr);
+      if (rho_new.allFinite() && rho_new.squaredNorm() <= cost) {
+        decreased = true;
+        break;
+      }
+    }
+    const double step_size = step.lpNorm<Eigen::Infinity>();
+    const double new_cost = decreased ? rho_new.squaredNorm() : cost;
+    if (decreased) p = candidate;
+    // Converged: the full step is negligible, or the cost no longer falls beyond round-off while
+    // the Gauss-Newton model predicts no more than a round-off decrease either.
+    const double predicted = (jac * step).squaredNorm();
+    const bool stalled = cost - new_cost <= 1e-12 * (1.0 + cost);
+    if (step_size < options.step_tolerance || (stalled && predicted <= 1e-9 * (1.0 + cost))) {
+      out.converged = true;
+      ++out.iterations;
+      break;
+    }
+    if (!decreased) {
+      out.failure = fmt::format("Gauss-Newton could not lower the cost (predicted decrease {:.3g})",
+                                predicted);
+      break;
+    }
+  }
+  if (!out.converged && out.failure.empty())
+    out.failure = fmt::format("no convergence after {} Gauss-Newton iterations",
+                              options.max_gauss_newton_iterations);
+  out.p = p;
+  return out;
+}
+
+// Covariance, condition number and correlations at the solution.
+void FillStatistics(const Problem& pr, const Eigen::VectorXd& p, const LeastSquaresOptions& options,
+                    FitSummary* s) {
+  Eigen::VectorXd rho;
+  Eigen::MatrixXd jac;
+  Evaluate(pr, p, &rho, &jac);
+  const int n = static_cast<int>(rho.size());
+  const int np = static_cast<int>(p.size());
+  s->chi2 = rho.squaredNorm();
+  s->dof = n - np;
+  s->uncertainty_scale = s->dof > 0 ? std::sqrt(std::max(1.0, s->chi2 / s->dof)) : 1.0;
+
+  const Eigen::MatrixXd info_scaled = jac.transpose() * jac;
+  const Eigen::MatrixXd cov_scaled = info_scaled.ldlt().solve(Eigen::MatrixXd::Identity(np, np));
+  const Eigen::MatrixXd scale = pr.scales.asDiagonal();
+  s->covariance = scale * cov_scaled * scale * (s->uncertainty_scale * s->uncertainty_scale);
+  s->uncertainty = s->covariance.diagonal().cwiseSqrt();
+
+  Eigen::MatrixXd equilibrated = jac;
+  for (int j = 0; j < np; ++j) equilibrated.col(j).normalize();
+  const Eigen::VectorXd sv = Eigen::JacobiSVD<Eigen::MatrixXd>(equilibrated).singularValues();
+  s->condition_number = sv(0) / sv(np - 1);
+
+  for (int a = 0; a < np; ++a) {
+    for (int b = a + 1; b < np; ++b) {
+      const double rho_ab = s->covariance(a, b) / (s->uncertainty(a) * s->uncertainty(b));
+      if (std::fabs(rho_ab) > std::fabs(s->most_correlated.rho)) s->most_correlated = {a, b, rho_ab};
+    }
+  }
+
+  s->residuals.clear();
+  double sum_sq = 0.0, max_abs = 0.0;
+  for (int i = 0; i < n; ++i) {
+    const FitCapture& c = (*pr.captures)[i];
+    const double r = rho(i) * pr.sigmas(i);
+    s->residuals.push_back({c.id, ReferenceMagnitudeMps2(c.kind, pr.gravity_mps2, c.radius_m, c.rpm),
+                            r, pr.sigmas(i)});
+    sum_sq += r * r;
+    max_abs = std::max(max_abs, std::fabs(r));
+  }
+  s->residual_rms_mps2 = std::sqrt(sum_sq / n);
+  s->residual_max_abs_mps2 = max_abs;
+
+  if (s->condition_number > options.condition_warning)
+    s->warnings.push_back(fmt::format(
+        "poorly conditioned (condition number {:.3g} > {:.3g}): the poses do not constrain all "
+        "parameters well; add poses or turntable runs along other directions",
+        s->condition_number, options.condition_warning));
+  if (std::fabs(s->most_correlated.rho) > options.correlation_warning)
+    s->warnings.push_back(fmt::format("{} and {} are almost inseparable (rho = {:+.4f})",
+                                      s->parameter_labels[s->most_correlated.first],
+                                      s->parameter_labels[s->most_correlated.second],
+                                      s->most_correlated.rho));
+  if (s->dof == 0)
+    s->warnings.push_back("no redundancy (as many captures as parameters): the residuals are zero "
+                          "by construction and cannot check the calibration");
+}
+
+}  // namespace
+
+std::string LeastSquaresOptions::Validate() const {
+  if (!(gravity_mps2 > 0.0) || !std::isfinite(gravity_mps2)) return "gravity_mps2 must be positive";
+  if (max_evaluations < 1) return "max_evaluations must be at least 1";
+  if (max_gauss_newton_iterations < 1) return "max_gauss_newton_iterations must be at least 1";
+  if (!(step_tolerance > 0.0)) return "step_tolerance must be positive";
+  return {};
+}
+
+Eigen::VectorXd ResidualSigmas(const ResidualModel& model, const std::vector<FitCapture>& captures,
+                               const Eigen::VectorXd& p, double gravity_mps2) {
+  Eigen::VectorXd sigmas(captures.size());
+  Eigen::Vector3d g;
+  for (size_t i = 0; i < captures.size(); ++i) {
+    model.Residual(p, captures[i], gravity_mps2, nullptr, &g);
+    sigmas(i) = std::sqrt(g.dot(captures[i].mean_cov_counts2 * g));
+  }
+  return sigmas;
+}
+
+FitSummary SolveWeightedLeastSquares(const ResidualModel& model,
+                                     const std::vector<FitCapture>& captures,
+                                     const Eigen::VectorXd& initial,
+                                     const LeastSquaresOptions& options) {
+  FitSummary s;
+  s.gravity_mps2 = options.gravity_mps2;
+  s.num_captures = static_cast<int>(captures.size());
+  for (int i = 0; i < model.NumParameters(); ++i) s.parameter_labels.push_back(model.ParameterLabel(i));
+  if (const std::string e = options.Validate(); !e.empty()) {
+    s.termination = FitTermination::kInvalidInput;
+    s.message = e;
+    return s;
+  }
+
+  Problem pr{&model, &captures, options.gravity_mps2, initial, Eigen::VectorXd(initial.size()), {}};
+  for (int i = 0; i < initial.size(); ++i) pr.scales(i) = model.ParameterScale(initial, i);
+  pr.sigmas = ResidualSigmas(model, captures, initial, options.gravity_mps2);
+  if (!pr.sigmas.allFinite() || (pr.sigmas.array() <= 0.0).any() || !pr.scales.allFinite()) {
+    s.termination = FitTermination::kNumericalFailure;
+    s.message = "the initial guess gives undefined residual weights";
+    return s;
+  }
+
+  const Eigen::VectorXd p_nlopt = RunNlopt(pr, options.max_evaluations, &s.optimizer_result);
+  s.optimizer_evaluations = pr.evaluations;
+  // Re-anchor weights and variable scales at NLopt's answer for the polish.
+  pr.p0 = p_nlopt;
+  for (int i = 0; i < p_nlopt.size(); ++i) pr.scales(i) = model.ParameterScale(p_nlopt, i);
+  pr.sigmas = ResidualSigmas(model, captures, p_nlopt, options.gravity_mps2);
+  if (!pr.sigmas.allFinite() || (pr.sigmas.array() <= 0.0).any() || !pr.scales.allFinite()) {
+    s.termination = FitTermination::kNumericalFailure;
+    s.message = fmt::format("the optimizer ended ({}) at parameters where the residuals are "
+                            "undefined", s.optimizer_result);
+    return s;
+  }
+  const PolishResult polished = Polish(pr, p_nlopt, options);
+  s.gauss_newton_iterations = polished.iterations;
+  s.parameters = polished.p;
+  if (!polished.converged) {
+    s.termination = polished.failure.find("iterations") != std::string::npos
+                        ? FitTermination::kNoConvergence
+                        : FitTermination::kNumericalFailure;
+    s.message = polished.failure + fmt::format(" (NLopt: {})", s.optimizer_result);
+    return s;
+  }
+  FillStatistics(pr, polished.p, options, &s);
+  if (!s.uncertainty.allFinite()) {
+    s.termination = FitTermination::kNumericalFailure;
+    s.message = "the covariance is singular: some parameter is not determined by the captures";
+    return s;
+  }
+  s.termination = FitTermination::kConverged;
+  s.message = "converged";
+  return s;
+}
+
+}  // namespace accelcal

@@ -1,0 +1,53 @@
+// Weighted least squares over captures for any ResidualModel: NLopt (SLSQP with the analytic
+// gradient) from the caller's initial guess, then a Gauss-Newton polish in Eigen that decides
+// convergence and yields the covariance.
+//
+// Weights: sigma_i is the 1-sigma of capture i's residual from the uncertainty of its mean
+// (sigma_i^2 = g^T Cov(mean) g, g = dr/d(mean raw)). It is evaluated at the initial guess for
+// the NLopt stage and at NLopt's answer for the polish, then held fixed (it depends on the
+// parameters only through the scales, weakly).
+//
+// Uncertainties: covariance = (J^T W J)^-1, its sigmas multiplied by sqrt(max(1, chi2/dof)):
+// when the residuals exceed what the noise explains, the noise-only covariance would claim
+// more than the data support.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "accelcal/calibration/fit/fit_capture.h"
+#include "accelcal/calibration/fit/fit_summary.h"
+#include "accelcal/calibration/fit/residual_model.h"
+
+namespace accelcal {
+
+struct LeastSquaresOptions {
+  double gravity_mps2 = 9.80665;       // local gravity, m/s^2
+  int max_evaluations = 5000;          // NLopt objective evaluations
+  int max_gauss_newton_iterations = 100;
+  // The polish has converged when no parameter moves by more than this fraction of its
+  // ParameterScale (i.e. by 1e-3 * this, in m/s^2 of effect) in a step.
+  double step_tolerance = 1e-6;
+  // Above this condition number (column-equilibrated weighted Jacobian) a warning is issued.
+  double condition_warning = 100.0;
+  // Above this |rho| between two parameters a warning is issued.
+  double correlation_warning = 0.995;
+
+  std::string Validate() const;
+};
+
+// Solves from `initial` (size model.NumParameters()). Fills every field of the summary except
+// `message`'s context, which the caller may prepend to. Never throws for numerical trouble:
+// the termination says what happened.
+FitSummary SolveWeightedLeastSquares(const ResidualModel& model,
+                                     const std::vector<FitCapture>& captures,
+                                     const Eigen::VectorXd& initial,
+                                     const LeastSquaresOptions& options);
+
+// sigma_i (m/s^2) of every capture's residual at p.
+Eigen::VectorXd ResidualSigmas(const ResidualModel& model, const std::vector<FitCapture>& captures,
+                               const Eigen::VectorXd& p, double gravity_mps2);
+
+}  // namespace accelcal

@@ -1,0 +1,120 @@
+#include "accelcal/io/report_json.h"
+
+#include <cmath>
+
+namespace accelcal {
+namespace {
+
+using nlohmann::json;
+
+json Num(double v) { return std::isfinite(v) ? json(v) : json(nullptr); }
+
+json Numbers(const std::vector<double>& v) {
+  json a = json::array();
+  for (double x : v) a.push_back(Num(x));
+  return a;
+}
+
+json Parameters(const std::vector<ReportParameter>& params) {
+  json a = json::array();
+  for (const ReportParameter& p : params)
+    a.push_back({{"name", p.name}, {"unit", p.unit}, {"value", Num(p.value)}, {"sigma", Num(p.sigma)}});
+  return a;
+}
+
+json Captures(const std::vector<ReportCapture>& captures) {
+  json a = json::array();
+  for (const ReportCapture& c : captures) {
+    const CaptureRecord& r = c.record;
+    a.push_back({{"id", r.id},
+                 {"label", r.label},
+                 {"kind", std::string(CaptureKindToString(r.kind))},
+                 {"used", r.used},
+                 {"reason", r.used ? json(nullptr) : json(r.reason)},
+                 {"n_samples", r.n_samples},
+                 {"radius_m", Num(r.radius_m)},
+                 {"rpm", Num(r.rpm)},
+                 {"noise_counts", Num(c.noise_counts)},
+                 {"temp_min_c", Num(c.temp_min_c)},
+                 {"temp_max_c", Num(c.temp_max_c)},
+                 {"reference_mps2", Num(r.reference_mps2)},
+                 {"magnitude_mps2", Num(c.magnitude_mps2())},
+                 {"residual_mps2", Num(r.residual_mps2)},
+                 {"sigma_mps2", Num(r.sigma_mps2)}});
+  }
+  return a;
+}
+
+json Effects(const std::vector<ReportEffect>& effects) {
+  json a = json::array();
+  for (const ReportEffect& e : effects)
+    a.push_back({{"name", e.name},
+                 {"rms_before_mps2", Num(e.rms_before_mps2)},
+                 {"rms_after_mps2", Num(e.rms_after_mps2)},
+                 {"chi2_per_dof_before", Num(e.chi2_per_dof_before)},
+                 {"chi2_per_dof_after", Num(e.chi2_per_dof_after)},
+                 {"corrects_readings", e.corrects_readings},
+                 {"evidence", e.evidence},
+                 {"parameters", Parameters(e.parameters)}});
+  return a;
+}
+
+json Stages(const std::vector<ResidualStage>& stages) {
+  json a = json::array();
+  for (const ResidualStage& s : stages)
+    a.push_back({{"name", s.name}, {"rms_mps2", Num(s.rms_mps2)}, {"residual_mps2", Numbers(s.residual_mps2)}});
+  return a;
+}
+
+json Checks(const ReportModel& m) {
+  json a = json::array();
+  for (const LimitCheck& c : m.checks)
+    a.push_back({{"what", c.what}, {"unit", c.unit}, {"value", Num(c.value)}, {"limit", Num(c.limit)},
+                 {"at_least", c.at_least}, {"pass", c.pass}});
+  return a;
+}
+
+// "not recorded" is null in JSON.
+json Text(const std::string& s) { return s.empty() ? json(nullptr) : json(s); }
+
+}  // namespace
+
+json ReportToJson(const ReportModel& m) {
+  json warnings = json::array();
+  for (const std::string& w : m.warnings) warnings.push_back(w);
+  return {{"format", kReportFormat},
+          {"tool", m.tool},
+          {"device", Text(m.meta.device)},
+          {"operator", Text(m.meta.operator_name)},
+          {"date_utc", Text(m.meta.date_utc)},
+          {"place", Text(m.meta.place)},
+          {"session", {{"name", Text(m.meta.session_name)}, {"path", Text(m.meta.session_path)}}},
+          {"procedure", Text(m.meta.procedure)},
+          {"source", Text(m.meta.source)},
+          {"fitted_from", Text(m.fit_source)},
+          {"gravity", {{"value_mps2", Num(m.gravity_mps2)}, {"description", m.gravity_text}}},
+          {"parameters", Parameters(m.parameters)},
+          {"fit",
+           {{"termination", Text(m.termination)},
+            {"optimizer", Text(m.optimizer)},
+            {"captures_used", m.captures_used},
+            {"captures_left_out", m.captures_left_out},
+            {"dof", m.dof},
+            {"chi2_per_dof", Num(m.chi2_per_dof)},
+            {"condition_number", Num(m.condition_number)},
+            {"warnings", warnings}}},
+          {"residuals",
+           {{"rms_mps2", Num(m.residual_rms_mps2)},
+            {"max_abs_mps2", Num(m.residual_max_abs_mps2)},
+            {"noise_rms_mps2", Num(m.noise_rms_mps2)},
+            {"stages", Stages(m.stages)}}},
+          {"captures", Captures(m.captures)},
+          {"effects", Effects(m.effects)},
+          {"temperature_c", {{"min", Num(m.temp_min_c)}, {"max", Num(m.temp_max_c)}}},
+          {"noise", m.noise ? NoiseToJson(*m.noise) : json(nullptr)},
+          {"allan", m.allan ? AllanToJson(*m.allan) : json(nullptr)},
+          {"limits", Checks(m)},
+          {"verdict", std::string(VerdictToString(m.verdict))}};
+}
+
+}  // namespace accelcal

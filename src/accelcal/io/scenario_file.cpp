@@ -1,0 +1,218 @@
+// ParseScenario / LoadScenario: TOML -> Scenario. Every table refuses keys it does not know.
+#include <fstream>
+#include <sstream>
+
+#include <fmt/core.h>
+
+#include "accelcal/io/detail/toml_reader.h"
+#include "accelcal/base/error.h"
+#include "accelcal/acquire/sim/scenario.h"
+
+namespace accelcal::sim {
+namespace {
+
+using detail::NumberRange;
+using detail::TomlTableReader;
+
+SensorSpec ReadSensor(TomlTableReader& r, const std::string& source) {
+  SensorSpec s;
+  s.model.bias_counts = r.Vector3("bias_counts", std::nullopt);
+  s.model.scale_counts_per_mps2 =
+      r.Vector3("scale_counts_per_mps2", std::nullopt, NumberRange::kPositive);
+  if (const toml::table* mis = r.Table("misalignment_rad")) {
+    TomlTableReader m(*mis, "sensor.misalignment_rad", source);
+    s.model.a_yz_rad = m.Number("yz", 0.0);
+    s.model.a_zy_rad = m.Number("zy", 0.0);
+    s.model.a_zx_rad = m.Number("zx", 0.0);
+    m.Finish();
+  }
+  s.noise_counts = r.Vector3("noise_counts", Eigen::Vector3d::Zero(), NumberRange::kNonNegative);
+  s.rate_hz = r.Number("rate_hz", 100.0, NumberRange::kPositive);
+  BiasNoiseSpec& bn = s.bias_noise;
+  bn.random_walk_counts_per_sqrt_s = r.Vector3("bias_random_walk_counts_per_sqrt_s",
+                                               Eigen::Vector3d::Zero(), NumberRange::kNonNegative);
+  bn.instability_counts =
+      r.Vector3("bias_instability_counts", Eigen::Vector3d::Zero(), NumberRange::kNonNegative);
+  bn.instability_tau_min_s =
+      r.Number("bias_instability_tau_min_s", bn.instability_tau_min_s, NumberRange::kPositive);
+  bn.instability_tau_max_s =
+      r.Number("bias_instability_tau_max_s", bn.instability_tau_max_s, NumberRange::kPositive);
+  if (!(bn.instability_tau_max_s > bn.instability_tau_min_s)) {
+    const char* key = r.Has("bias_instability_tau_max_s") ? "bias_instability_tau_max_s"
+                                                           : "bias_instability_tau_min_s";
+    r.Fail(*r.Get(key), key, "bias_instability_tau_max_s must exceed bias_instability_tau_min_s");
+  }
+  return s;
+}
+
+AdcSpec ReadAdc(TomlTableReader& r) {
+  AdcSpec a;
+  const std::int64_t bits = r.Integer("bits", std::nullopt);
+  if (bits < 1 || bits > 32) r.Fail(*r.Get("bits"), "bits", "must be between 1 and 32");
+  a.bits = static_cast<int>(bits);
+  a.is_signed = r.Bool("signed", false);
+  return a;
+}
+
+BenchSpec ReadBench(TomlTableReader& r) {
+  BenchSpec b;
+  b.gravity_mps2 = r.Number("gravity_mps2", b.gravity_mps2, NumberRange::kPositive);
+  const std::int64_t seed = r.Integer("seed", static_cast<std::int64_t>(b.seed));
+  if (seed < 0) r.Fail(*r.Get("seed"), "seed", "must not be negative");
+  b.seed = static_cast<std::uint64_t>(seed);
+  b.placement_error_deg =
+      r.Number("placement_error_deg", b.placement_error_deg, NumberRange::kNonNegative);
+  b.gap_s = r.Number("gap_s", b.gap_s, NumberRange::kNonNegative);
+  b.capture_duration_s =
+      r.Number("capture_duration_s", b.capture_duration_s, NumberRange::kPositive);
+  b.temperature_c = r.Number("temperature_c", b.temperature_c);
+  b.recording_quiet_start_s =
+      r.Number("recording_quiet_start_s", b.recording_quiet_start_s, NumberRange::kNonNegative);
+  b.move_s = r.Number("move_s", b.move_s, NumberRange::kPositive);
+  return b;
+}
+
+Bump ReadBump(TomlTableReader& r) {
+  Bump b;
+  b.capture = static_cast<int>(r.Integer("capture", std::nullopt));
+  b.at_s = r.Number("at_s", std::nullopt, NumberRange::kNonNegative);
+  b.peak_mps2 = r.Number("peak_mps2", std::nullopt);
+  b.duration_s = r.Number("duration_s", std::nullopt, NumberRange::kPositive);
+  return b;
+}
+
+EffectsSpec ReadEffects(TomlTableReader& r, const std::string& source, double ambient_c) {
+  EffectsSpec e;
+  const Eigen::Vector3d zero = Eigen::Vector3d::Zero();
+  e.quadratic_counts_per_mps2_sq = r.Vector3("quadratic_counts_per_mps2_sq", zero);
+  e.bias_temp_coeff_counts_per_c = r.Vector3("bias_temp_coeff_counts_per_c", zero);
+  e.scale_temp_coeff_per_c = r.Vector3("scale_temp_coeff_per_c", zero);
+  if (const toml::table* t = r.Table("temperature")) {
+    TomlTableReader tr(*t, "effects.temperature", source);
+    e.temperature = TemperatureRamp{tr.Number("start_c", ambient_c), tr.Number("end_c", ambient_c),
+                                    tr.Number("warmup_tau_s", 0.0, NumberRange::kNonNegative)};
+    tr.Finish();
+  }
+  e.bias_drift_counts_per_s = r.Vector3("bias_drift_counts_per_s", zero);
+  e.radius_offset_m = r.Number("radius_offset_m", 0.0);
+  e.rpm_scale = r.Number("rpm_scale", 0.0);
+  e.size_effect_m = r.Vector3("size_effect_m", zero);
+  e.turntable_tilt_rad = r.Number("turntable_tilt_rad", 0.0);
+  if (const toml::array* bumps = r.ArrayOfTables("bump")) {
+    for (std::size_t i = 0; i < bumps->size(); ++i) {
+      TomlTableReader br(*bumps->get(i)->as_table(), fmt::format("effects.bump {}", i), source);
+      e.bumps.push_back(ReadBump(br));
+      br.Finish();
+    }
+  }
+  return e;
+}
+
+SensorAxis ReadAxis(TomlTableReader& r, std::string_view key) {
+  const std::string text = r.String(key, std::nullopt);
+  const std::optional<SensorAxis> axis = StringToSensorAxis(text);
+  if (!axis) r.Fail(*r.Get(key), key, "expected one of +x -x +y -y +z -z, got '" + text + "'");
+  return *axis;
+}
+
+void ReadTurntable(TomlTableReader& r, CapturePlan& c) {
+  c.radius_m = r.Number("radius_m", std::nullopt, NumberRange::kNonNegative);
+  c.rpm = r.Number("rpm", std::nullopt, NumberRange::kNonNegative);
+  c.radial_axis = ReadAxis(r, "radial_axis");
+  c.up_axis = ReadAxis(r, "up_axis");
+  if (std::abs(SensorAxisVector(c.radial_axis).dot(SensorAxisVector(c.up_axis))) > 0.5) {
+    r.Fail(*r.Get("up_axis"), "up_axis", "must be perpendicular to radial_axis");
+  }
+}
+
+CapturePlan ReadCapture(TomlTableReader& r) {
+  CapturePlan c;
+  const std::string kind = r.String("kind", std::nullopt);
+  const std::optional<CaptureKind> parsed = StringToCaptureKind(kind);
+  if (!parsed)
+    r.Fail(*r.Get("kind"), "kind", "expected \"static\" or \"turntable\", got '" + kind + "'");
+  c.kind = *parsed;
+  c.label = r.String("label", std::nullopt);
+  if (c.label.find_first_of("\r\n") != std::string::npos) {
+    r.Fail(*r.Get("label"), "label", "must be a single line");
+  }
+  if (r.Has("duration_s"))
+    c.duration_s = r.Number("duration_s", std::nullopt, NumberRange::kPositive);
+  if (c.kind == CaptureKind::kTurntable) {
+    ReadTurntable(r, c);
+  } else {
+    const Eigen::Vector3d up = r.Vector3("up", std::nullopt);
+    if (!(up.norm() > 0.0)) r.Fail(*r.Get("up"), "up", "must not be the zero vector");
+    c.up = up.normalized();
+  }
+  return c;
+}
+
+// Reads a required or optional top-level table through its own reader and checks its keys.
+template <typename Fn>
+void WithTable(TomlTableReader& root, std::string_view key, bool required,
+               const std::string& source, Fn&& fn) {
+  const toml::table* table = root.Table(key);
+  if (table == nullptr) {
+    if (required) {
+      throw InputError(source, 0, 0, "required table [" + std::string(key) + "] is missing");
+    }
+    return;
+  }
+  TomlTableReader reader(*table, std::string(key), source);
+  fn(reader);
+  reader.Finish();
+}
+
+// A bump must name a capture of the plan; known only once the plan has been read.
+void CheckBumpTargets(const toml::table& doc, const Scenario& s, const std::string& source) {
+  for (std::size_t i = 0; i < s.effects.bumps.size(); ++i) {
+    const int target = s.effects.bumps[i].capture;
+    if (target >= 0 && target < static_cast<int>(s.captures.size())) continue;
+    const toml::node* node = doc["effects"]["bump"][i]["capture"].node();
+    const toml::source_position at = node ? node->source().begin : toml::source_position{};
+    throw InputError(source, at.line, at.column,
+                     fmt::format("effects.bump {}.capture: {} is not in the plan (0..{})", i,
+                                 target, s.captures.size() - 1));
+  }
+}
+
+}  // namespace
+
+Scenario ParseScenario(std::string_view toml_text, const std::string& source_name) {
+  const toml::table doc = detail::ParseTomlDocument(toml_text, source_name);
+  Scenario s;
+  s.source_name = source_name;
+  TomlTableReader root(doc, "", source_name);
+  WithTable(root, "sensor", true, source_name,
+            [&](TomlTableReader& r) { s.sensor = ReadSensor(r, source_name); });
+  WithTable(root, "adc", true, source_name, [&](TomlTableReader& r) { s.adc = ReadAdc(r); });
+  WithTable(root, "bench", false, source_name, [&](TomlTableReader& r) { s.bench = ReadBench(r); });
+  WithTable(root, "effects", false, source_name, [&](TomlTableReader& r) {
+    s.effects = ReadEffects(r, source_name, s.bench.temperature_c);
+  });
+  const toml::array* plan = root.ArrayOfTables("capture");
+  if (plan == nullptr) throw InputError(source_name, 0, 0, "the plan has no [[capture]]");
+  for (std::size_t i = 0; i < plan->size(); ++i) {
+    TomlTableReader r(*plan->get(i)->as_table(), fmt::format("capture {}", i), source_name);
+    s.captures.push_back(ReadCapture(r));
+    r.Finish();
+  }
+  root.Finish();
+  CheckBumpTargets(doc, s, source_name);
+  // Other cross-field checks (a bump naming a capture that does not exist, ...), without a
+  // position.
+  if (std::string why = s.Validate(); !why.empty()) throw InputError(source_name, 0, 0, why);
+  return s;
+}
+
+Scenario LoadScenario(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw Error("cannot open scenario '" + path + "'");
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (in.bad()) throw Error("cannot read scenario '" + path + "'");
+  return ParseScenario(text.str(), path);
+}
+
+}  // namespace accelcal::sim

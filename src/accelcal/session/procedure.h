@@ -1,0 +1,99 @@
+// A calibration procedure as data: the steps a wizard session walks through, read from TOML at
+// run time (procedures/*.toml; the format is in README.md, "Procedures").
+//
+// Units: deg for tolerances shown to the operator, s for durations, m and rpm for the turntable,
+// g for the accelerometer's range, counts and counts per m/s^2 for the nominal model.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "accelcal/base/capture.h"
+#include "accelcal/base/capture_set.h"
+#include "accelcal/base/sensor_model.h"
+
+namespace accelcal {
+
+enum class StepKind {
+  kLevel,      // level the table (reversal method)
+  kStatic,     // a static pose on the prism
+  kTurntable,  // a turntable run
+  kRecord,     // a long static record (noise, drift), streamed to the journal in chunks
+  kFit,        // the nine-parameter fit over the accepted captures
+  kDiagnosis,  // the diagnosis; asks before adopting an effect
+  kReport,     // the calibration report; the session's result is recorded
+  kAnalysis,   // the noise or drift analysis of an earlier record step, shown
+};
+
+// "level", "static", "turntable", "record", "fit", "diagnosis", "report", "analysis".
+std::string_view StepKindToString(StepKind kind);
+std::optional<StepKind> StringToStepKind(std::string_view text);
+
+struct ProcedureStep {
+  std::string id;     // unique in the procedure; the journal's step id
+  StepKind kind = StepKind::kStatic;
+  std::string title;  // shown to the operator
+  // kStatic / kRecord / kLevel: "up" in the platform frame (normalized), and its name.
+  Eigen::Vector3d up = Eigen::Vector3d::UnitZ();
+  std::string pose_name;
+  // kTurntable: the defaults offered to the operator, and the mounting.
+  double radius_m = kNaN;
+  double rpm = kNaN;
+  SensorAxis radial_axis = SensorAxis::kPlusX;
+  SensorAxis up_axis = SensorAxis::kPlusZ;
+  double duration_s = 10.0;  // capture length, s
+  double timeout_s = 60.0;   // give up after this long without an accepted capture, s
+  double tolerance_deg = 1.5;  // kLevel: largest accepted tilt per axis, deg
+  // kRecord: the record is committed in chunks of this much of its time, s (an interruption
+  // loses at most one chunk).
+  double chunk_s = kDefaultRecordChunkS;
+  // kAnalysis: the record step analysed (an earlier step of kind record), and how: "allan"
+  // (Allan deviation, IEEE 952 read-offs, drift: analysis/record_analysis.h) or "noise"
+  // (standard deviation, Welch noise density, normality: analysis/noise_analysis.h).
+  std::string record_step;
+  std::string method;
+
+  static constexpr double kDefaultRecordChunkS = 10.0;
+};
+
+// Pass/fail limits of the calibration, checked by the report ([limits] in the procedure file).
+// NaN (or 0 for min_captures): no limit stated. Units in the names.
+struct ProcedureLimits {
+  double max_residual_rms_mps2 = kNaN;      // RMS of the final fit's residuals
+  double max_residual_rms_noise = kNaN;     // same, over the RMS of the captures' own sigma
+  double max_bias_sigma_counts = kNaN;      // largest 1-sigma of bias_x/y/z
+  double max_scale_sigma_ppm = kNaN;        // largest 1-sigma of scale_i over scale_i, ppm
+  double max_misalignment_sigma_rad = kNaN; // largest 1-sigma of a_yz, a_zy, a_zx
+  int min_captures = 0;                     // captures used by the fit
+
+  bool Any() const;  // at least one limit stated
+};
+
+struct Procedure {
+  std::string title;
+  std::string source_name;  // the file it came from
+  double range_g = 6.0;     // the accelerometer's full-scale range, +- g
+  SensorModel nominal;      // datasheet scale and bias (no misalignment): the rough model
+  AdcRange adc_range{0.0, 4095.0};  // the ADC's output range, counts
+  double orientation_tolerance_deg = 15.0;
+  double std_multiplier = 1.5;        // static stability: std limit in noise-floor sigmas
+  double trend_multiplier = 2.0;      // static stability: trend limit in noise-floor sigmas
+  double turntable_tolerance = 0.10;  // relative centripetal mismatch accepted
+  ProcedureLimits limits;             // [limits]; all absent when the table is
+  std::vector<ProcedureStep> steps;
+
+  // The poses of the static steps other than the six faces (to name a wrong pose).
+  std::vector<Eigen::Vector3d> TiltedPoses() const;
+};
+
+// Throws accelcal::InputError "FILE:LINE:COLUMN: what" for malformed TOML, an unknown key, a
+// wrong type or value, a duplicate step id.
+Procedure ParseProcedure(std::string_view toml_text, const std::string& source_name);
+// Reads and parses `path`; throws accelcal::Error when it cannot be read.
+Procedure LoadProcedure(const std::string& path);
+
+}  // namespace accelcal

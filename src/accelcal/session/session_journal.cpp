@@ -1,0 +1,69 @@
+// The journal's record helpers shared by every implementation (session_journal.h).
+#include "accelcal/session/session_journal.h"
+
+#include <cmath>
+
+#include <fmt/core.h>
+
+#include "accelcal/base/error.h"
+#include "accelcal/base/duration_text.h"
+
+namespace accelcal {
+
+void CheckRecordChunk(const std::string& step_id, const RecordChunk& chunk,
+                      const RecordSummary& so_far) {
+  if (chunk.index != so_far.num_chunks)
+    throw Error(fmt::format("record '{}': chunk {} is not the next one ({} stored)", step_id,
+                            chunk.index, so_far.num_chunks));
+  if (chunk.samples.empty()) throw Error(fmt::format("record '{}': chunk {} is empty", step_id, chunk.index));
+  for (size_t i = 0; i < chunk.samples.size(); ++i) {
+    const double t = chunk.samples[i].t_s;
+    const double before = i == 0 ? so_far.t_last_s : chunk.samples[i - 1].t_s;
+    if (!std::isfinite(t) || (!std::isnan(before) && !(t > before)))
+      throw Error(fmt::format("record '{}': chunk {} sample {}: t = {} does not come after {}",
+                              step_id, chunk.index, i, t, before));
+  }
+  if (chunk.gap_before) {
+    const RecordGap& g = *chunk.gap_before;
+    if (so_far.num_chunks == 0 || g.t_start_s != so_far.t_last_s ||
+        g.t_end_s != chunk.samples.front().t_s)
+      throw Error(fmt::format("record '{}': the gap before chunk {} must span from the last "
+                              "sample stored to the chunk's first", step_id, chunk.index));
+  }
+}
+
+RecordSummary AddToSummary(RecordSummary s, const RecordChunk& chunk) {
+  if (s.num_chunks == 0) s.t_first_s = chunk.samples.front().t_s;
+  s.t_last_s = chunk.samples.back().t_s;
+  s.num_chunks += 1;
+  s.num_samples += static_cast<long>(chunk.samples.size());
+  s.last_wall_end_s = chunk.wall_end_s;
+  if (chunk.gap_before) {
+    s.num_gaps += 1;
+    s.gaps_s += chunk.gap_before->duration_s();
+  }
+  return s;
+}
+
+JournalRecord ReadRecord(const SessionJournal& journal, const std::string& step_id) {
+  JournalRecord out;
+  journal.VisitRecordChunks(step_id, [&](const RecordChunk& chunk) {
+    if (chunk.gap_before) out.gaps.push_back(*chunk.gap_before);
+    out.samples.insert(out.samples.end(), chunk.samples.begin(), chunk.samples.end());
+  });
+  return out;
+}
+
+std::string DescribeRecords(const SessionJournal& journal) {
+  std::string out;
+  for (const std::string& id : journal.RecordSteps()) {
+    const RecordSummary r = journal.RecordSummaryOf(id);
+    if (!out.empty()) out += "; ";
+    out += fmt::format("{}: {} recorded over {}, {} gap{} ({})", id, FormatLongDuration(r.recorded_s()),
+                       FormatLongDuration(r.span_s()), r.num_gaps, r.num_gaps == 1 ? "" : "s",
+                       FormatLongDuration(r.gaps_s));
+  }
+  return out;
+}
+
+}  // namespace accelcal

@@ -1,0 +1,128 @@
+// What a wizard session records as it goes, so that nothing accepted is ever lost and an
+// interrupted session resumes where it stopped. The SQLite store (session_store.h) is the real
+// implementation; MakeMemoryJournal() is for tests.
+//
+// Contract: every Record* / Append* call is durable when it returns (committed in its own
+// transaction), so a kill -9 right after loses nothing it recorded. Step ids are the procedure's.
+//
+// Records (steps of kind "record": hours of samples) are not captures: they are appended in
+// chunks (RecordChunk), each durable on its own, so an interruption loses at most the chunk
+// being filled. A resumed record states the hole it has (RecordGap), committed together with
+// the first chunk after it. Times of a record are on the record's clock: the source's t for
+// the first run, then shifted so that the clock runs on across a restart (t of the first
+// sample after a gap = t of the last one before it + the gap).
+#pragma once
+
+#include <functional>
+#include <map>
+#include <optional>
+#include <memory>
+#include <set>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "accelcal/base/capture.h"
+
+namespace accelcal {
+
+struct JournalCapture {
+  std::string step_id;
+  Capture capture;  // with its raw samples
+};
+
+// A hole in a record: no samples between t_start_s (the last sample before it) and t_end_s (the
+// first sample after it), on the record's clock, s.
+struct RecordGap {
+  double t_start_s = 0.0;
+  double t_end_s = 0.0;
+  std::string reason;  // e.g. "resumed after interruption"
+
+  double duration_s() const { return t_end_s - t_start_s; }
+};
+
+// A stretch of a record's samples, stored as one unit.
+struct RecordChunk {
+  long index = 0;               // 0, 1, 2, ... in recording order, without holes
+  std::vector<Sample> samples;  // non-empty; t on the record's clock, increasing
+  // When the chunk was complete, s since the Unix epoch on the computer's clock (a resumed
+  // record measures its gap from it).
+  double wall_end_s = 0.0;
+  std::optional<RecordGap> gap_before;  // the hole just before this chunk (after a resume)
+};
+
+// What a record holds so far, without its samples (cheap: for resuming and listings).
+struct RecordSummary {
+  long num_chunks = 0;
+  long num_samples = 0;
+  double t_first_s = kNaN;  // first sample, record clock, s; NaN when there is none
+  double t_last_s = kNaN;   // last sample, s
+  double last_wall_end_s = kNaN;  // wall_end_s of the last chunk
+  long num_gaps = 0;
+  double gaps_s = 0.0;      // sum of the gaps' durations, s
+
+  // From the first sample to the last, gaps included, s (0 when empty).
+  double span_s() const { return num_samples > 0 ? t_last_s - t_first_s : 0.0; }
+  // The part of the span that has samples, s.
+  double recorded_s() const { return span_s() - gaps_s; }
+};
+
+class SessionJournal {
+ public:
+  virtual ~SessionJournal() = default;
+
+  // The operator's answer `value` to `key` at step `step_id` (a later one replaces it).
+  virtual void RecordInput(const std::string& step_id, const std::string& key,
+                           const std::string& value) = 0;
+  // An accepted capture for `step_id`. A step has at most one accepted capture: recording a
+  // second for the same step throws accelcal::Error (no duplicates after a resume).
+  virtual void RecordCapture(const std::string& step_id, const Capture& capture) = 0;
+  // A step finished without a capture (leveling done, skipped, ...), with its outcome.
+  virtual void RecordStepDone(const std::string& step_id, const std::string& outcome) = 0;
+  // The session's result (the calibration file's JSON). A later one replaces it.
+  virtual void RecordResult(const nlohmann::json& calibration) = 0;
+  // The session is finished (its procedure completed); durable when it returns.
+  virtual void MarkDone() = 0;
+
+  // The next chunk of the record of `step_id`, with the gap before it when it has one, in one
+  // transaction. Throws accelcal::Error when chunk.index is not the next one (a chunk is never
+  // replaced, never skipped), when it is empty, or when its samples do not come after the
+  // record's last one.
+  virtual void AppendRecordChunk(const std::string& step_id, const RecordChunk& chunk) = 0;
+
+  // What was recorded (for resuming and for reports), in the order recorded.
+  virtual std::vector<JournalCapture> Captures() const = 0;
+  virtual std::map<std::string, std::map<std::string, std::string>> Inputs() const = 0;
+  virtual std::map<std::string, std::string> DoneSteps() const = 0;  // step id -> outcome
+  virtual std::optional<nlohmann::json> Result() const = 0;
+  // The record of `step_id` so far (an empty summary when it has none).
+  virtual RecordSummary RecordSummaryOf(const std::string& step_id) const = 0;
+  // Calls `visit` with each chunk of the record of `step_id`, in order (one chunk in memory at
+  // a time: a 12-hour record at 100 Hz is 170 MB of samples).
+  virtual void VisitRecordChunks(const std::string& step_id,
+                                 const std::function<void(const RecordChunk&)>& visit) const = 0;
+  // The steps that have record chunks, in the order their first chunk was recorded.
+  virtual std::vector<std::string> RecordSteps() const = 0;
+};
+
+// A whole record read back: the samples in order and the gaps.
+struct JournalRecord {
+  std::vector<Sample> samples;
+  std::vector<RecordGap> gaps;
+};
+JournalRecord ReadRecord(const SessionJournal& journal, const std::string& step_id);
+
+// The checks every journal makes on AppendRecordChunk against what it holds; throws
+// accelcal::Error naming the step (shared by the store and the memory journal).
+void CheckRecordChunk(const std::string& step_id, const RecordChunk& chunk,
+                      const RecordSummary& so_far);
+// "drift: 12 h 0 min recorded over 12 h 0 min, 2 gaps (14 s); noise: ..." for every record of
+// the journal; empty when it has none.
+std::string DescribeRecords(const SessionJournal& journal);
+// `so_far` with `chunk` appended.
+RecordSummary AddToSummary(RecordSummary so_far, const RecordChunk& chunk);
+
+std::unique_ptr<SessionJournal> MakeMemoryJournal();
+
+}  // namespace accelcal
