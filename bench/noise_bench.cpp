@@ -10,6 +10,7 @@
 #include "accelcal/analysis/noise_analysis.h"
 #include "accelcal/acquire/sim/scenario.h"
 #include "accelcal/acquire/sim/virtual_bench.h"
+#include "accelcal/io/scenario_file.h"
 
 namespace {
 

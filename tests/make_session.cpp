@@ -25,6 +25,8 @@
 #include "accelcal/base/error.h"
 #include "accelcal/calibration/fit/calibration_fit.h"
 #include "accelcal/io/calibration_file.h"
+#include "accelcal/io/detail/json_forms.h"
+#include "accelcal/io/procedure_file.h"
 #include "accelcal/session/detail/sqlite_db.h"
 #include "accelcal/session/session_store.h"
 #include "accelcal/session/procedure.h"
@@ -82,7 +84,7 @@ void MakeSession(const MakeSessionOptions& o) {
       FitOptions fit;
       const FitSummary summary = FitCalibration(captures, fit);
       if (!summary.IsUsable()) throw Error("the scenario did not fit: " + summary.message);
-      store->RecordResult(CalibrationToJson(MakeCalibration(summary, fit.gravity, captures, o.path)));
+      store->RecordResult(CalibrationToJsonText(MakeCalibration(summary, fit.gravity, captures, o.path)));
       store->MarkDone();
     }
   }

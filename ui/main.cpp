@@ -5,6 +5,7 @@
 #include <CLI/CLI.hpp>
 #include <fmt/core.h>
 
+#include "accelcal/base/version.h"
 #include "accelcal/base/error.h"
 #include "cli/commands.h"
 #include "cli/wizard.h"
@@ -20,7 +21,7 @@ int main(int argc, char** argv) {
       "  accelcal fit captures.csv -o cal.json\n"
       "  accelcal apply cal.json < raw.txt > calibrated.txt",
       "accelcal"};
-  app.set_version_flag("--version", std::string("accelcal ") + ACCELCAL_VERSION);
+  app.set_version_flag("--version", std::string("accelcal ") + accelcal::kAccelcalVersion);
   app.require_subcommand(0, 1);
   accelcal::cli::SetupFitCommand(app);
   accelcal::cli::SetupApplyCommand(app);

@@ -14,6 +14,7 @@
 #include "accelcal/acquire/sim/scenario.h"
 #include "accelcal/acquire/sim/virtual_bench.h"
 #include "accelcal/acquire/source/sim_source.h"
+#include "accelcal/io/scenario_file.h"
 #include "test_support.h"
 
 namespace accelcal::sim {

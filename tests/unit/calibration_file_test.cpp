@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "accelcal/base/error.h"
+#include "accelcal/io/detail/json_forms.h"
 
 namespace accelcal {
 namespace {
@@ -23,7 +24,7 @@ Calibration Example() {
   cal.uncertainty.scale_counts_per_mps2 = {0.002, 0.003, 0.0025};
   cal.gravity = GravitySpec::Given(9.81744);
   cal.residual_rms_mps2 = 0.001;
-  CaptureRecord r;
+  CalibrationCapture r;
   r.id = 7;
   r.label = "z up, \"prism\"";
   r.n_samples = 1000;

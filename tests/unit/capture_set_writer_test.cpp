@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "accelcal/base/error.h"
+#include "accelcal/io/csv_fields.h"
 
 namespace accelcal {
 namespace {
@@ -93,10 +94,10 @@ TEST(CaptureSetWriter, NumbersRoundTrip) {
 }
 
 TEST(CaptureSetWriter, CsvFieldQuotesOnlyWhenNeeded) {
-  EXPECT_EQ(CsvField("plain label"), "plain label");
-  EXPECT_EQ(CsvField("a,b"), "\"a,b\"");
-  EXPECT_EQ(CsvField("say \"hi\""), "\"say \"\"hi\"\"\"");
-  EXPECT_EQ(CsvField(""), "");
+  EXPECT_EQ(CsvQuote("plain label"), "plain label");
+  EXPECT_EQ(CsvQuote("a,b"), "\"a,b\"");
+  EXPECT_EQ(CsvQuote("say \"hi\""), "\"say \"\"hi\"\"\"");
+  EXPECT_EQ(CsvQuote(""), "");
 }
 
 TEST(CaptureSetWriter, RefusesALineBreakInALabel) {

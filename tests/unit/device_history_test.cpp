@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include "accelcal/io/detail/json_forms.h"
 #include "accelcal/session/detail/sqlite_db.h"
 #include "accelcal/app/device_history.h"
 #include "export_test_support.h"
@@ -46,7 +47,7 @@ class DeviceHistoryTest : public ::testing::Test {
       o.procedure = "seed";
       auto store = SessionStore::Open(path, o);
       store->RecordInput(kSessionStep, kDeviceKey, device);
-      if (cal != nullptr) store->RecordResult(CalibrationToJson(*cal));
+      if (cal != nullptr) store->RecordResult(CalibrationToJsonText(*cal));
     }
     detail::SqliteDb db(path, false);
     detail::SqliteStatement(db, "UPDATE session SET created_utc = ? WHERE id = 1").Bind(1, date).Run();

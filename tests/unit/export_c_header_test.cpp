@@ -140,7 +140,9 @@ TEST_F(CompiledHeader, CompilesCleanWhenOnlyIncluded) {
 
 TEST(ExportCHeader, RefusesAnUnknownEffect) {
   Calibration cal = ExportTestCalibration();
-  cal.effects.push_back({{"name", "flux_capacitor"}, {"parameters", nlohmann::json::object()}});
+  CalibrationEffect unknown;
+  unknown.name = "flux_capacitor";
+  cal.effects.push_back(unknown);
   try {
     ExportCHeader(cal, {});
     FAIL() << "no error";

@@ -6,7 +6,8 @@
 
 #include <gtest/gtest.h>
 
-#include "accelcal/io/detail/csv_fields.h"
+#include "accelcal/io/csv_fields.h"
+#include "accelcal/io/detail/json_forms.h"
 #include "accelcal/io/export/calibration_csv.h"
 #include "accelcal/io/export/kalibr_imu_yaml.h"
 #include "export_test_support.h"
@@ -133,10 +134,10 @@ std::vector<std::vector<std::string>> ParseCsv(const std::string& text) {
     const size_t end = text.find("\r\n", start);
     EXPECT_NE(end, std::string::npos) << "a record not ended by CRLF";
     if (end == std::string::npos) break;
-    std::vector<detail::CsvField> fields;
-    EXPECT_TRUE(detail::SplitCsvLine(std::string_view(text).substr(start, end - start), &fields).message.empty());
+    std::vector<CsvField> fields;
+    EXPECT_TRUE(SplitCsvLine(std::string_view(text).substr(start, end - start), &fields).message.empty());
     std::vector<std::string> row;
-    for (const detail::CsvField& f : fields) row.push_back(f.value);
+    for (const CsvField& f : fields) row.push_back(f.value);
     rows.push_back(row);
     start = end + 2;
   }

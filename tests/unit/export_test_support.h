@@ -35,27 +35,27 @@ inline Calibration ExportTestCalibration() {
 // effect of the calibration session (radius_offset), as the diagnosis writes them.
 inline Calibration ExportTestCalibrationWithEffects() {
   Calibration cal = ExportTestCalibration();
-  cal.effects = nlohmann::json::array();
-  cal.effects.push_back({{"name", "quadratic_nonlinearity"},
-                         {"parameters", {{"q_x", 0.02}, {"q_y", -0.015}, {"q_z", 0.01}}},
-                         {"uncertainty", {{"q_x", 0.002}, {"q_y", 0.002}, {"q_z", 0.002}}},
-                         {"units", {{"q_x", "counts/(m/s^2)^2"}, {"q_y", "counts/(m/s^2)^2"},
-                                    {"q_z", "counts/(m/s^2)^2"}}},
-                         {"reference", {{"temp_c", 25.0}, {"t_s", 100.0}}}});
-  cal.effects.push_back({{"name", "temperature_scale"},
-                         {"parameters", {{"tc_scale_x", 1e-4}, {"tc_scale_y", -2e-4}, {"tc_scale_z", 5e-5}}},
-                         {"units", {{"tc_scale_x", "1/degC"}, {"tc_scale_y", "1/degC"}, {"tc_scale_z", "1/degC"}}},
-                         {"reference", {{"temp_c", 25.0}, {"t_s", 100.0}}}});
-  cal.effects.push_back({{"name", "temperature_bias"},
-                         {"parameters", {{"tc_bias_x", 0.5}, {"tc_bias_y", -0.3}, {"tc_bias_z", 0.2}}},
-                         {"units", {{"tc_bias_x", "counts/degC"}, {"tc_bias_y", "counts/degC"},
-                                    {"tc_bias_z", "counts/degC"}}},
-                         {"reference", {{"temp_c", 25.0}, {"t_s", 100.0}}}});
-  cal.effects.push_back({{"name", "radius_offset"},
-                         {"parameters", {{"dr", 0.0032}}},
-                         {"uncertainty", {{"dr", 0.0008}}},
-                         {"units", {{"dr", "m"}}},
-                         {"reference", {{"temp_c", 25.0}, {"t_s", 100.0}}}});
+  auto effect = [](std::string name, std::vector<EffectParameter> parameters, bool corrects) {
+    CalibrationEffect e;
+    e.name = std::move(name);
+    e.parameters = std::move(parameters);
+    e.corrects_readings = corrects;
+    return e;
+  };
+  cal.reference = {25.0, 100.0};
+  cal.effects.push_back(effect("quadratic_nonlinearity",
+                               {{"q_x", "counts/(m/s^2)^2", 0.02, 0.002},
+                                {"q_y", "counts/(m/s^2)^2", -0.015, 0.002},
+                                {"q_z", "counts/(m/s^2)^2", 0.01, 0.002}}, true));
+  cal.effects.push_back(effect("temperature_scale",
+                               {{"tc_scale_x", "1/degC", 1e-4, kNaN},
+                                {"tc_scale_y", "1/degC", -2e-4, kNaN},
+                                {"tc_scale_z", "1/degC", 5e-5, kNaN}}, true));
+  cal.effects.push_back(effect("temperature_bias",
+                               {{"tc_bias_x", "counts/degC", 0.5, kNaN},
+                                {"tc_bias_y", "counts/degC", -0.3, kNaN},
+                                {"tc_bias_z", "counts/degC", 0.2, kNaN}}, true));
+  cal.effects.push_back(effect("radius_offset", {{"dr", "m", 0.0032, 0.0008}}, false));
   return cal;
 }
 

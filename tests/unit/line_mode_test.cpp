@@ -6,6 +6,7 @@
 
 #include "accelcal/acquire/sim/scenario.h"
 #include "accelcal/acquire/source/sim_source.h"
+#include "accelcal/io/procedure_file.h"
 #include "accelcal/session/procedure.h"
 #include "accelcal/app/wizard/wizard_engine.h"
 #include "frontend.h"

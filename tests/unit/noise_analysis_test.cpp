@@ -13,6 +13,8 @@
 
 #include "accelcal/app/noise_records.h"
 #include "accelcal/base/error.h"
+#include "accelcal/io/detail/json_forms.h"
+#include "accelcal/io/procedure_file.h"
 #include "accelcal/report/noise_text.h"
 #include "accelcal/session/detail/sqlite_db.h"
 #include "accelcal/session/session_catalog.h"

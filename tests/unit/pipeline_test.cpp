@@ -13,10 +13,12 @@
 #include "accelcal/io/calibration_file.h"
 #include "accelcal/io/capture_set_reader.h"
 #include "accelcal/io/capture_set_writer.h"
+#include "accelcal/io/detail/json_forms.h"
 #include "accelcal/io/recording_reader.h"
 #include "accelcal/acquire/sim/scenario.h"
 #include "accelcal/acquire/sim/virtual_bench.h"
 #include "accelcal/acquire/static_detector.h"
+#include "accelcal/io/scenario_file.h"
 
 namespace accelcal {
 namespace {
@@ -148,11 +150,22 @@ TEST(Pipeline, ApplyReportsMalformedLinesAndGoesOn) {
   EXPECT_EQ(out.str(), "0 0.000000 0.000000 10.000000\n0.3 1.000000 0.000000 0.000000\n");
 }
 
+
+// An adopted effect as the calibration holds it: its parameters (units and sigmas not needed).
+CalibrationEffect EffectWith(std::string name, std::vector<std::pair<std::string, double>> parameters,
+                         bool corrects_readings = true) {
+  CalibrationEffect e;
+  e.name = std::move(name);
+  for (const auto& [key, value] : parameters) e.parameters.push_back({key, "", value, kNaN});
+  e.corrects_readings = corrects_readings;
+  return e;
+}
+
 TEST(Pipeline, ApplyRefusesEffectsItCannotApply) {
   Calibration cal;
-  cal.effects = nlohmann::json::array({{{"name", "flux_capacitor"}}});
+  cal.effects = {EffectWith("flux_capacitor", {})};
   EXPECT_THROW(CalibrationApplier{cal}, Error);
-  cal.effects = nlohmann::json::array({{{"name", "quadratic_nonlinearity"}, {"parameters", {{"q_x", 0.1}}}}});
+  cal.effects = {EffectWith("quadratic_nonlinearity", {{"q_x", 0.1}})};
   EXPECT_THROW(CalibrationApplier{cal}, Error);  // q_y, q_z missing
 }
 
@@ -168,12 +181,10 @@ TEST(Pipeline, ApplierInvertsSensorEffects) {
   Calibration cal;
   cal.model.bias_counts = {2048, 2040, 2060};
   cal.model.scale_counts_per_mps2 = {35, 34, 36};
-  cal.effects = nlohmann::json::array(
-      {{{"name", "quadratic_nonlinearity"}, {"parameters", {{"q_x", 0.01}, {"q_y", -0.02}, {"q_z", 0.005}}}},
-       {{"name", "temperature_bias"},
-        {"parameters", {{"tc_bias_x", 0.5}, {"tc_bias_y", -0.25}, {"tc_bias_z", 0.1}}},
-        {"reference", {{"temp_c", 25.0}, {"t_s", 100.0}}}},
-       {{"name", "radius_offset"}, {"parameters", {{"dr", 0.003}}}}});
+  cal.reference = {25.0, 100.0};
+  cal.effects = {EffectWith("quadratic_nonlinearity", {{"q_x", 0.01}, {"q_y", -0.02}, {"q_z", 0.005}}),
+                 EffectWith("temperature_bias", {{"tc_bias_x", 0.5}, {"tc_bias_y", -0.25}, {"tc_bias_z", 0.1}}),
+                 EffectWith("radius_offset", {{"dr", 0.003}}, false)};
   const CalibrationApplier applier(cal);
   EXPECT_TRUE(applier.needs_temperature());
   ASSERT_EQ(applier.not_applied().size(), 1u);
@@ -194,10 +205,8 @@ TEST(Pipeline, ApplierInvertsSensorEffects) {
 TEST(Pipeline, ApplyStreamNamesLinesWithoutTheNeededTemperature) {
   Calibration cal;
   cal.model.scale_counts_per_mps2 = {35, 34, 36};
-  cal.effects = nlohmann::json::array(
-      {{{"name", "temperature_scale"},
-        {"parameters", {{"tc_scale_x", 1e-4}, {"tc_scale_y", 1e-4}, {"tc_scale_z", 1e-4}}},
-        {"reference", {{"temp_c", 25.0}, {"t_s", 0.0}}}}});
+  cal.reference = {25.0, 0.0};
+  cal.effects = {EffectWith("temperature_scale", {{"tc_scale_x", 1e-4}, {"tc_scale_y", 1e-4}, {"tc_scale_z", 1e-4}})};
   std::istringstream in("0 1 2 3\n");
   std::ostringstream out;
   std::vector<std::string> errors;

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "accelcal/base/error.h"
+#include "accelcal/io/procedure_file.h"
 #include "accelcal/session/procedure.h"
 
 namespace accelcal {

@@ -10,9 +10,12 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "accelcal/app/calibration_pipeline.h"
 #include "accelcal/calibration/fit/calibration_fit.h"
 #include "accelcal/io/calibration_file.h"
 #include "accelcal/app/report_files.h"
+#include "accelcal/io/detail/json_forms.h"
+#include "accelcal/io/procedure_file.h"
 #include "accelcal/report/report_html.h"
 #include "accelcal/io/report_json.h"
 #include "accelcal/report/report_model.h"
@@ -199,18 +202,22 @@ TEST(ReportModel, FromACalibrationFileAlone) {
   EXPECT_NEAR(m.noise_rms_mps2, std::sqrt(sum / n), 1e-15);
 }
 
-TEST(ReportModel, EffectFieldsOfTheWrongTypeShowAsAbsent) {
-  ReportInputs in;
-  in.calibration = ReadCalibrationFile(kDataDir + "calibration.json");
-  in.calibration.effects = json::array(
-      {{{"name", 3}, {"rms_before_mps2", "x"}, {"corrects_readings", "yes"}, {"parameters", 5}}});
-  const ReportModel m = BuildReportModel(in);
-  ASSERT_EQ(m.effects.size(), 1u);
-  EXPECT_EQ(m.effects[0].name, "?");
-  EXPECT_TRUE(std::isnan(m.effects[0].rms_before_mps2));
-  EXPECT_FALSE(m.effects[0].corrects_readings);
-  EXPECT_TRUE(m.effects[0].parameters.empty());
-  EXPECT_TRUE(Contains(RenderReportText(m), "Effect: ?"));
+TEST(ReportModel, EffectFieldsOfTheWrongTypeAreRefusedNamingTheField) {
+  // Read strictly (io/calibration_file.h): a damaged effect never reaches a report as a
+  // made-up or silently absent value; the file and the field are named.
+  json j = ReadJson("calibration.json");
+  j["effects"] = json::array({{{"name", 3}, {"parameters", json::object()}}});
+  EXPECT_TRUE(Contains(ExpectInputError([&] { CalibrationFromJson(j, "c.json"); }, "name 3").what(),
+                       "effects[0].name"));
+  j["effects"] = json::array({{{"name", "bias_drift"}, {"rms_before_mps2", "x"}, {"parameters", json::object()}}});
+  EXPECT_TRUE(Contains(ExpectInputError([&] { CalibrationFromJson(j, "c.json"); }, "rms x").what(),
+                       "effects[0].rms_before_mps2"));
+  j["effects"] = json::array({{{"name", "bias_drift"}, {"corrects_readings", "yes"}, {"parameters", json::object()}}});
+  EXPECT_TRUE(Contains(ExpectInputError([&] { CalibrationFromJson(j, "c.json"); }, "yes").what(),
+                       "effects[0].corrects_readings"));
+  j["effects"] = json::array({{{"name", "bias_drift"}, {"parameters", 5}}});
+  EXPECT_TRUE(Contains(ExpectInputError([&] { CalibrationFromJson(j, "c.json"); }, "parameters 5").what(),
+                       "effects[0].parameters"));
 }
 
 TEST(ReportModel, LimitsAreCheckedAgainstIndependentFigures) {
@@ -239,7 +246,7 @@ TEST(ReportModel, LimitsAreCheckedAgainstIndependentFigures) {
   EXPECT_EQ(m.verdict, Verdict::kFail);
 }
 
-TEST(ReportModel, FromSessionCapturesRefitsStagesAndMeasuresNoiseAndTemperature) {
+TEST(ReportModel, FromSessionCapturesMeasuresNoiseAndTemperature) {
   sim::VirtualBench bench(sim::DefaultScenario());
   std::vector<Capture> captures = bench.SimulateCaptureSet();
   // Give the samples a known temperature ramp: 20 + i/1000 degC over the whole session.
@@ -268,22 +275,49 @@ TEST(ReportModel, FromSessionCapturesRefitsStagesAndMeasuresNoiseAndTemperature)
   for (const Sample& s : c0.samples) var += (s.raw_counts - mean).cwiseAbs2();
   var /= static_cast<double>(c0.samples.size() - 1);
   EXPECT_NEAR(m.captures[0].noise_counts, std::sqrt(var.sum() / 3.0), 1e-9);
-  // One stage (no effect): the refit reproduces the calibration's residuals.
+  // One stage (no effect): the calibration's own residuals.
   ASSERT_EQ(m.stages.size(), 1u);
   for (size_t i = 0; i < m.captures.size(); ++i) {
     if (m.captures[i].record.used) {
       EXPECT_NEAR(m.stages[0].residual_mps2[i], m.captures[i].record.residual_mps2, 1e-9);
     }
   }
+}
 
-  // With an adopted effect: the base stage and one more, which fits at least as well.
-  in.calibration.effects = json::array({{{"name", "bias_drift"}}});
-  m = BuildReportModel(in);
+TEST(ReportModel, StagesAreTheDiagnosisResidualsNotARefit) {
+  // A bench with a drift: the pipeline adopts bias_drift; the calibration carries each capture's
+  // residual under the base model and after the effect, and the report shows those stages.
+  sim::Scenario scenario = sim::DefaultScenario();
+  scenario.effects.temperature.reset();  // constant temperature: the drift is in time only
+  scenario.effects.bias_drift_counts_per_s = {0.01, -0.01, 0.01};
+  sim::VirtualBench bench(scenario);
+  CalibrationRequest request;
+  request.captures = bench.SimulateCaptureSet();
+  request.source_name = "sim";
+  const CalibrationOutcome outcome = CalibrateCaptures(request);
+  ASSERT_TRUE(outcome.usable());
+  ASSERT_EQ(outcome.diagnosis.adopted_names(), std::vector<std::string>{"bias_drift"});
+  ReportInputs in;
+  in.calibration = outcome.MakeCalibration(true);
+  in.captures = outcome.captures;
+  const ReportModel m = BuildReportModel(in);
   ASSERT_EQ(m.stages.size(), 2u);
+  EXPECT_EQ(m.stages[0].name, "base model");
   EXPECT_EQ(m.stages[1].name, "+ bias_drift");
   EXPECT_LE(m.stages[1].rms_mps2, m.stages[0].rms_mps2 + 1e-12);
-  in.calibration.effects = json::array({{{"name", "no_such_effect"}}});
-  ExpectInputError([&] { BuildReportModel(in); }, "unknown effect");
+  for (size_t i = 0; i < m.captures.size(); ++i) {
+    const CaptureResidual* base = nullptr;
+    for (const CaptureResidual& r : outcome.diagnosis.base.residuals)
+      if (r.id == m.captures[i].record.id) base = &r;
+    ASSERT_NE(base, nullptr);
+    EXPECT_EQ(m.stages[0].residual_mps2[i], base->residual_mps2);
+    EXPECT_EQ(m.stages[1].residual_mps2[i], m.captures[i].record.residual_mps2);
+  }
+  // The same from the file: the stages travel with the calibration.
+  const ReportModel from_file = BuildReportModel(
+      {CalibrationFromJsonText(CalibrationToJsonText(in.calibration), "c.json"), {}, {}, {}, {}, {}});
+  ASSERT_EQ(from_file.stages.size(), 2u);
+  EXPECT_EQ(from_file.stages[1].residual_mps2, m.stages[1].residual_mps2);
 }
 
 TEST(ReportModel, MetaFromJournalInputs) {

@@ -7,6 +7,7 @@
 #include "test_support.h"
 
 #include "accelcal/base/error.h"
+#include "accelcal/io/scenario_file.h"
 
 namespace accelcal::sim {
 namespace {

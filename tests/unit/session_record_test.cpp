@@ -132,7 +132,8 @@ TEST_F(SessionRecordTest, RefusesChunksOutOfOrderAndChangesNothing) {
   ExpectRefusals(*MakeMemoryJournal());
 }
 
-// A session written before records existed (schema version 1: no record tables).
+// A session written before records existed (schema version 1: no record tables, and the
+// capture statistics' co-moment columns still named cov_*, as versions 1 and 2 named them).
 void MakeVersionOneSession(const std::string& path) {
   {
     auto store = SessionStore::Open(path, {});
@@ -140,8 +141,10 @@ void MakeVersionOneSession(const std::string& path) {
   }
   sqlite3* db = nullptr;
   ASSERT_EQ(sqlite3_open(path.c_str(), &db), SQLITE_OK);
-  ASSERT_EQ(sqlite3_exec(db, "DROP TABLE record_chunks; DROP TABLE record_gaps; "
-                             "PRAGMA user_version = 1", nullptr, nullptr, nullptr), SQLITE_OK);
+  std::string sql = "DROP TABLE record_chunks; DROP TABLE record_gaps; PRAGMA user_version = 1;";
+  for (const char* c : {"xx", "xy", "xz", "yy", "yz", "zz"})
+    sql += std::string(" ALTER TABLE captures RENAME COLUMN comoment_") + c + "_counts2 TO cov_" + c + "_counts2;";
+  ASSERT_EQ(sqlite3_exec(db, sql.c_str(), nullptr, nullptr, nullptr), SQLITE_OK);
   sqlite3_close(db);
 }
 
@@ -171,7 +174,7 @@ TEST_F(SessionRecordTest, AVersionOneSessionIsReadAsItIsAndMigratedByAWriter) {
     EXPECT_EQ(writer->Inputs().at("welcome").at("device"), "SN7");
     writer->AppendRecordChunk("drift", MakeChunk(0));
   }
-  EXPECT_EQ(UserVersion(path_), 2);
+  EXPECT_EQ(UserVersion(path_), 3);
   EXPECT_EQ(SessionStore::Open(path_, Reader())->RecordSummaryOf("drift").num_chunks, 1);
 }
 

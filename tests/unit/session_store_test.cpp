@@ -69,11 +69,43 @@ void ExpectSameCapture(const Capture& a, const Capture& b) {
   }
 }
 
+// Schema version 3 names the capture statistics' second moments for what they hold (versions 1
+// and 2 stored the same co-moment sums as cov_*): a version-2 file is read as it is and
+// migrated by a writer, values unchanged.
+TEST_F(SessionStoreTest, AVersionTwoSessionGetsTheCoMomentColumnsRenamedByAWriter) {
+  const Capture capture = MakeCapture(1, 200, 7);
+  {
+    auto store = SessionStore::Open(path_, Writer());
+    store->RecordCapture("face_1", capture);
+  }
+  sqlite3* db = nullptr;
+  ASSERT_EQ(sqlite3_open(path_.c_str(), &db), SQLITE_OK);
+  std::string sql = "PRAGMA user_version = 2;";
+  for (const char* c : {"xx", "xy", "xz", "yy", "yz", "zz"})
+    sql += std::string(" ALTER TABLE captures RENAME COLUMN comoment_") + c + "_counts2 TO cov_" + c + "_counts2;";
+  ASSERT_EQ(sqlite3_exec(db, sql.c_str(), nullptr, nullptr, nullptr), SQLITE_OK);
+  sqlite3_close(db);
+  ExpectSameCapture(SessionStore::Open(path_, Reader())->Captures().at(0).capture, capture);
+  SessionStore::Open(path_, Writer());  // migrates
+  ASSERT_EQ(sqlite3_open(path_.c_str(), &db), SQLITE_OK);
+  sqlite3_stmt* st = nullptr;
+  ASSERT_EQ(sqlite3_prepare_v2(db, "SELECT comoment_xx_counts2, n FROM captures", -1, &st, nullptr), SQLITE_OK);
+  ASSERT_EQ(sqlite3_step(st), SQLITE_ROW);
+  EXPECT_DOUBLE_EQ(sqlite3_column_double(st, 0), capture.stats().comoment_counts2(0, 0));
+  sqlite3_finalize(st);
+  ASSERT_EQ(sqlite3_prepare_v2(db, "PRAGMA user_version", -1, &st, nullptr), SQLITE_OK);
+  ASSERT_EQ(sqlite3_step(st), SQLITE_ROW);
+  EXPECT_EQ(sqlite3_column_int64(st, 0), 3);
+  sqlite3_finalize(st);
+  sqlite3_close(db);
+  ExpectSameCapture(SessionStore::Open(path_, Reader())->Captures().at(0).capture, capture);
+}
+
 TEST_F(SessionStoreTest, RoundTripsEverythingThroughAReopen) {
   const Capture first = MakeCapture(1, 500, 1);
   Capture second = MakeCapture(2, 300, 2);
   second.rejection_reason = "not still: moving";
-  const nlohmann::json result = {{"format", "accelcal-calibration/1"}, {"x", 0.1 + 0.2}};
+  const std::string result = R"({"format": "accelcal-calibration/1", "x": 0.30000000000000004})";
   {
     auto store = SessionStore::Open(path_, Writer());
     store->RecordInput("session", "device", "SN-42");
@@ -140,7 +172,7 @@ TEST_F(SessionStoreTest, RefusesANewerSchemaAndForeignFiles) {
     SessionStore::Open(path_, Reader());
     FAIL() << "no error";
   } catch (const Error& e) {
-    EXPECT_TRUE(Contains(e.what(), "schema version 99, newer than this accelcal reads (2)")) << e.what();
+    EXPECT_TRUE(Contains(e.what(), "schema version 99, newer than this accelcal reads (3)")) << e.what();
   }
   const std::string text_file = (dir_ / "notes.db").string();
   { std::ofstream(text_file) << "this is not a database, just text long enough to be read\n"; }

@@ -33,14 +33,14 @@ struct AllanCommandOptions {
 };
 
 // Kalibr's imu.yaml from the analysis: the worst axis of each figure (Kalibr takes one).
-void WriteKalibr(const AllanCommandOptions& o, const nlohmann::json& allan, const Calibration& cal) {
-  const AllanNoiseFigures f = AllanNoiseForKalibr(allan, cal, o.recording_path);
+void WriteKalibr(const AllanCommandOptions& o, const std::string& allan_text, const Calibration& cal) {
+  const AllanNoiseFigures f = AllanNoiseForKalibrText(allan_text, cal, o.recording_path);
   if (!std::isfinite(f.noise_density_mps2_per_sqrt_hz) || !std::isfinite(f.random_walk_mps3_per_sqrt_hz))
     throw Error("--kalibr: the record gives no noise density or random walk (too short?)");
   KalibrImuYamlOptions k;
   k.accelerometer_noise_density = f.noise_density_mps2_per_sqrt_hz;
   k.accelerometer_random_walk = f.random_walk_mps3_per_sqrt_hz;
-  k.update_rate_hz = allan["rate_hz"].get<double>();
+  k.update_rate_hz = f.rate_hz;
   k.comment = fmt::format("accelcal allan {}: noise density from axis {}, random walk from axis {} "
                           "(the largest)", o.recording_path, f.noise_density_axis, f.random_walk_axis);
   const ExportResult r = WriteKalibrImuYaml(k);
@@ -92,8 +92,8 @@ void RunAllan(const AllanCommandOptions& o) {
   }
   if (analysis.samples < 2)
     throw Error(fmt::format("{}: {} samples: nothing to analyse", source, analysis.samples));
-  const nlohmann::json allan = RecordAnalysisToJson(analysis, source, o.drift_window_s);
-  std::cout << FormatAllanText(allan);
+  const std::string allan = AllanFileText(analysis, source, o.drift_window_s);
+  std::cout << FormatAllanText(analysis, source);
   if (!o.output_path.empty()) {
     WriteAllanFile(o.output_path, allan);
     std::cout << fmt::format("\nAllan analysis written to {}\n", o.output_path);

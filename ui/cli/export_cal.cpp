@@ -16,6 +16,8 @@
 #include "accelcal/io/export/kalibr_imu_yaml.h"
 #include "accelcal/io/export/px4_params.h"
 #include "accelcal/io/calibration_file.h"
+#include "accelcal/io/procedure_file.h"
+#include "accelcal/io/text_file.h"
 #include "accelcal/session/session_store.h"
 #include "accelcal/session/procedure.h"
 #include "cli/commands.h"
@@ -61,13 +63,13 @@ Calibration ReadInput(const ExportCalCommandOptions& o, ExportContext* context) 
   read_only.read_only = true;
   const std::unique_ptr<SessionStore> store = SessionStore::Open(o.input, read_only);
   const SessionInfo info = store->Info();
-  const std::optional<nlohmann::json> result = store->Result();
+  const std::optional<std::string> result = store->Result();
   if (!result)
     throw Error(fmt::format("session {} has no calibration yet: {} captures accepted; run the "
                             "wizard to finish it", o.input, info.num_captures));
   if (context->device.empty()) context->device = info.device;
   if (context->date_utc.empty()) context->date_utc = info.created_utc;
-  return CalibrationFromJson(*result, o.input);
+  return CalibrationFromJsonText(*result, o.input);
 }
 
 Eigen::Vector3d PerAxis(const std::vector<double>& values, const char* option) {
@@ -97,15 +99,7 @@ ExportResult Kalibr(const ExportCalCommandOptions& o, const Calibration& cal, co
   KalibrImuYamlOptions k;
   std::string figures = "given on the command line";
   if (!o.allan_path.empty()) {
-    std::ifstream in(o.allan_path);
-    if (!in) throw Error(fmt::format("cannot open {}", o.allan_path));
-    nlohmann::json allan;
-    try {
-      allan = nlohmann::json::parse(in);
-    } catch (const nlohmann::json::exception& e) {
-      throw Error(fmt::format("{}: not JSON: {}", o.allan_path, e.what()));
-    }
-    const AllanNoiseFigures f = AllanNoiseForKalibr(allan, cal, o.allan_path);
+    const AllanNoiseFigures f = AllanNoiseForKalibrText(ReadTextFile(o.allan_path), cal, o.allan_path);
     k.accelerometer_noise_density = f.noise_density_mps2_per_sqrt_hz;
     k.accelerometer_random_walk = f.random_walk_mps3_per_sqrt_hz;
     k.update_rate_hz = f.rate_hz;

@@ -4,11 +4,8 @@
 
 #include <fmt/core.h>
 
-#include "accelcal/acquire/capture_engine/offline_stability.h"
-#include "accelcal/calibration/capture_screening.h"
-#include "accelcal/calibration/diagnosis/diagnosis.h"
+#include "accelcal/app/calibration_pipeline.h"
 #include "accelcal/base/error.h"
-#include "accelcal/calibration/fit/calibration_fit.h"
 #include "accelcal/io/calibration_file.h"
 #include "accelcal/io/capture_set_reader.h"
 #include "accelcal/io/recording_reader.h"
@@ -59,12 +56,13 @@ void RunFit(const FitCommandOptions& o) {
   const GravitySpec gravity = o.gravity.Resolve();
   LoadedCaptures loaded = o.recording_path.empty() ? LoadCaptureSet(o) : LoadRecording(o);
 
-  ScreeningOptions screening;
-  screening.min_samples = o.min_samples;
-  screening.adc_range = loaded.adc_range;
-  if (o.adc_range.size() == 2) screening.adc_range = AdcRange{o.adc_range[0], o.adc_range[1]};
-  if (std::string e = screening.Validate(); !e.empty()) throw Error(e);
-  ScreenCaptures(loaded.captures, screening);
+  CalibrationRequest request;
+  request.captures = std::move(loaded.captures);
+  request.source_name = loaded.source;
+  request.gravity = gravity;
+  request.screening.min_samples = o.min_samples;
+  request.screening.adc_range = loaded.adc_range;
+  if (o.adc_range.size() == 2) request.screening.adc_range = AdcRange{o.adc_range[0], o.adc_range[1]};
   // Recordings' intervals are already static by the detector's own test; a capture set's
   // captures get the static stability check here.
   if (o.recording_path.empty() && !o.no_stability_check) {
@@ -73,36 +71,23 @@ void RunFit(const FitCommandOptions& o) {
       stability.noise_floor_counts = Eigen::Vector3d(o.noise_floor[0], o.noise_floor[1],
                                                      o.noise_floor[2]);
     }
-    ScreenStaticStability(loaded.captures, stability);
+    request.stability = stability;
   }
-
-  FitOptions fit;
-  fit.gravity = gravity;
-  std::vector<FitCapture> used;
-  for (const Capture& c : loaded.captures)
-    if (c.used()) used.push_back(MakeFitCapture(c));
-  DiagnosisOptions diagnosis_options;
-  diagnosis_options.max_effects = o.no_diagnose ? 0 : diagnosis_options.max_effects;
-  const DiagnosisReport diagnosis = Diagnose(used, fit, diagnosis_options);
-  const FitSummary& summary = diagnosis.final_fit;
+  request.diagnose = !o.no_diagnose;
+  const CalibrationOutcome outcome = CalibrateCaptures(std::move(request));
+  const FitSummary& summary = outcome.Fit(true);
 
   if (!o.quiet) {
     std::cout << fmt::format("source: {}\ngravity: {}\n", loaded.source, gravity.Describe());
     std::cout << loaded.intervals_text;
   }
   if (!summary.IsUsable()) {
-    if (!o.quiet) std::cout << FormatCaptureTable(loaded.captures, summary);
+    if (!o.quiet) std::cout << FormatCaptureTable(outcome.captures, summary);
     throw Error(fmt::format("no calibration: {}", summary.message));
   }
-  Calibration cal = MakeCalibration(summary, gravity, loaded.captures, loaded.source);
-  cal.effects = EffectsToJson(diagnosis);
-  cal.fit["diagnosis"] = {{"ran", !o.no_diagnose},
-                          {"base_residual_rms_mps2", diagnosis.base.residual_rms_mps2},
-                          {"noise_rms_mps2", diagnosis.noise_rms_mps2},
-                          {"consistent_with_noise", diagnosis.consistent},
-                          {"conclusion", diagnosis.conclusion}};
+  const Calibration cal = outcome.MakeCalibration(true);
   if (!o.quiet) {
-    if (!o.no_diagnose) std::cout << "\n" << FormatDiagnosis(diagnosis);
+    if (!o.no_diagnose) std::cout << "\n" << FormatDiagnosis(outcome.diagnosis);
     std::cout << FormatFitReport(cal, summary);
   }
   if (!o.output_path.empty()) {

@@ -10,6 +10,7 @@
 
 #include "accelcal/base/error.h"
 #include "accelcal/app/device_history.h"
+#include "accelcal/io/history_json.h"
 #include "accelcal/session/session_paths.h"
 #include "cli/commands.h"
 
@@ -66,7 +67,7 @@ void RunHistory(const HistoryCommandOptions& o) {
   const std::string dir = o.sessions_dir.empty() ? DefaultSessionDir() : o.sessions_dir;
   const DeviceHistory h = BuildDeviceHistory(dir, o.device);
   if (o.format == "json")
-    std::cout << DeviceHistoryToJson(h).dump(2) << '\n';
+    std::cout << DeviceHistoryJsonText(h);
   else
     std::cout << Text(h);
 }

@@ -12,6 +12,8 @@
 #include "accelcal/app/noise_records.h"
 #include "accelcal/base/error.h"
 #include "accelcal/io/calibration_file.h"
+#include "accelcal/io/noise_file.h"
+#include "accelcal/io/procedure_file.h"
 #include "accelcal/report/noise_text.h"
 #include "accelcal/session/session_paths.h"
 #include "accelcal/session/procedure.h"
@@ -72,7 +74,7 @@ void RunNoise(const NoiseCommandOptions& o) {
       records, analysis::NoiseAnalysisOptions{}, calibration ? &*calibration : nullptr);
   report.warnings.insert(report.warnings.begin(), notes.begin(), notes.end());
   if (o.format == "json") {
-    WriteText(o.output_path, NoiseReportToJson(report).dump(2) + "\n");
+    WriteText(o.output_path, NoiseFileText(report));
   } else {
     std::string header = o.device.empty() ? "" : fmt::format("Device {}\n", o.device);
     WriteText(o.output_path, header + FormatNoiseText(report));

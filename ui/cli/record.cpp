@@ -15,6 +15,7 @@
 #include "accelcal/io/capture_set_writer.h"
 #include "accelcal/acquire/source/source_spec.h"
 #include "cli/commands.h"
+#include "accelcal/io/scenario_file.h"
 
 namespace accelcal::cli {
 namespace {
@@ -26,6 +27,7 @@ struct RecordCommandOptions {
   double status_every_s = 1.0;  // status line period (wall clock), s
   bool quiet = false;
   SourceOptions source;
+  std::string scenario_path;  // sim: the bench; empty = the built-in default
 };
 
 volatile std::sig_atomic_t g_interrupted = 0;
@@ -86,7 +88,9 @@ std::ostream& OpenOutput(const std::string& path, std::ofstream* file) {
 }
 
 void RunRecord(const RecordCommandOptions& o) {
-  std::unique_ptr<SampleSource> source = OpenSource(o.source_spec, o.source);
+  SourceOptions source_options = o.source;
+  if (!o.scenario_path.empty()) source_options.scenario = sim::LoadScenario(o.scenario_path);
+  std::unique_ptr<SampleSource> source = OpenSource(o.source_spec, source_options);
   SigintGuard sigint;
   std::ofstream file;
   std::ostream& out = OpenOutput(o.output_path, &file);
@@ -159,7 +163,7 @@ void SetupRecordCommand(CLI::App& app) {
   sub->add_option("--speed", opts->source.sim.speed,
                   "sim: simulated seconds per wall second (1 real time; 0 as fast as possible)")
       ->capture_default_str();
-  sub->add_option("--scenario", opts->source.scenario_path,
+  sub->add_option("--scenario", opts->scenario_path,
                   "sim: scenario file (TOML); default: the built-in bench_default");
   sub->add_option("--seed", opts->source.seed, "sim: random seed, overriding the scenario's");
   sub->add_flag("--realtime", opts->source.realtime,

@@ -8,8 +8,13 @@
 #include <fmt/core.h>
 
 #include "accelcal/base/error.h"
+#include "accelcal/app/report_inputs.h"
+#include "accelcal/io/allan_file.h"
 #include "accelcal/io/calibration_file.h"
+#include "accelcal/io/noise_file.h"
+#include "accelcal/io/text_file.h"
 #include "accelcal/app/report_files.h"
+#include "accelcal/io/procedure_file.h"
 #include "accelcal/report/report_html.h"
 #include "accelcal/io/report_json.h"
 #include "accelcal/report/report_model.h"
@@ -42,18 +47,6 @@ void WriteText(const std::string& path, const std::string& text) {
   WriteReportFile(path, text);
 }
 
-nlohmann::json ReadJsonFile(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw Error(fmt::format("cannot open '{}'", path));
-  std::stringstream text;
-  text << in.rdbuf();
-  try {
-    return nlohmann::json::parse(text.str());
-  } catch (const nlohmann::json::parse_error&) {
-    throw InputError(path, 0, 0, "not valid JSON");
-  }
-}
-
 // A calibration file is JSON (its first non-blank byte is '{'); a session is SQLite.
 bool LooksLikeJson(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
@@ -63,20 +56,19 @@ bool LooksLikeJson(const std::string& path) {
   return false;
 }
 
-ReportInputs FromSession(const std::string& input, nlohmann::json* calibration_json) {
+ReportInputs FromSession(const std::string& input) {
   SessionOpenOptions read_only;
   read_only.read_only = true;
   const std::string path = ResolveSessionPath(input);
   const std::unique_ptr<SessionStore> store = SessionStore::Open(path, read_only);
   const SessionInfo info = store->Info();
-  const std::optional<nlohmann::json> result = store->Result();
+  const std::optional<std::string> result = store->Result();
   if (!result && !DescribeRecords(*store).empty())
     throw Error(fmt::format("session {} has no calibration: it holds records ({}), which another "
                             "command analyses", path, DescribeRecords(*store)));
   if (!result)
     throw Error(fmt::format("session {} has no calibration yet: {} captures accepted; run the "
                             "wizard to finish it", path, info.num_captures));
-  *calibration_json = *result;
   ReportInputs in = ReportInputsFromJournal(*store, path);
   in.meta.device = info.device;
   in.meta.operator_name = info.operator_name;
@@ -108,26 +100,25 @@ void AddLimits(const ReportCommandOptions& o, ReportInputs* in) {
 
 void RunReport(const ReportCommandOptions& o) {
   ReportInputs in;
-  nlohmann::json calibration_json;
   if (LooksLikeJson(o.input)) {
-    calibration_json = ReadJsonFile(o.input);
-    in.calibration = CalibrationFromJson(calibration_json, o.input);
-    ReadAnalysesFromResult(calibration_json, o.input, &in);
+    const std::string text = ReadTextFile(o.input);
+    in.calibration = CalibrationFromJsonText(text, o.input);
+    ReadAnalysesFromResultText(text, o.input, &in);
   } else {
-    in = FromSession(o.input, &calibration_json);
+    in = FromSession(o.input);
   }
   if (o.format == "calibration") {
-    WriteText(o.output_path, calibration_json.dump(2) + "\n");
+    WriteText(o.output_path, CalibrationToJsonText(in.calibration) + "\n");
     if (!o.output_path.empty()) std::cout << fmt::format("calibration written to {}\n", o.output_path);
     return;
   }
   AddLimits(o, &in);
-  if (!o.allan_path.empty()) in.allan = ParseAllanJson(ReadJsonFile(o.allan_path), o.allan_path);
-  if (!o.noise_path.empty()) in.noise = ParseNoiseJson(ReadJsonFile(o.noise_path), o.noise_path);
+  if (!o.allan_path.empty()) in.allan = ReadAllanFile(o.allan_path);
+  if (!o.noise_path.empty()) in.noise = ReadNoiseFile(o.noise_path);
   const ReportModel model = BuildReportModel(in);
   std::string text;
   if (o.format == "html") text = RenderReportHtml(model);
-  else if (o.format == "json") text = ReportToJson(model).dump(2) + "\n";
+  else if (o.format == "json") text = ReportJsonText(model);
   else text = RenderReportText(model);
   WriteText(o.output_path, text);
   if (!o.output_path.empty())

@@ -4,34 +4,19 @@
 #include <iostream>
 #include <memory>
 
-#include <nlohmann/json.hpp>
-
 #include "accelcal/base/error.h"
+#include "accelcal/io/atomic_write.h"
 #include "accelcal/io/capture_set_writer.h"
 #include "accelcal/acquire/sim/scenario.h"
 #include "accelcal/acquire/sim/virtual_bench.h"
 #include "cli/commands.h"
+#include "accelcal/io/scenario_file.h"
 
 namespace accelcal::cli {
 namespace {
 
-nlohmann::json TruthJson(const sim::Scenario& scenario) {
-  const SensorModel& m = scenario.sensor.model;
-  nlohmann::json j;
-  j["bias_counts"] = {m.bias_counts.x(), m.bias_counts.y(), m.bias_counts.z()};
-  j["scale_counts_per_mps2"] = {m.scale_counts_per_mps2.x(), m.scale_counts_per_mps2.y(),
-                                m.scale_counts_per_mps2.z()};
-  j["misalignment_rad"] = {{"yz", m.a_yz_rad}, {"zy", m.a_zy_rad}, {"zx", m.a_zx_rad}};
-  j["gravity_mps2"] = scenario.bench.gravity_mps2;
-  return j;
-}
-
 void WriteTruth(const std::string& path, const sim::Scenario& scenario) {
-  std::ofstream out(path, std::ios::trunc);
-  if (!out) throw Error("cannot open '" + path + "' for writing");
-  out << TruthJson(scenario).dump(2) << '\n';
-  out.close();
-  if (!out) throw Error("cannot write '" + path + "'");
+  WriteFileAtomically(path, sim::ScenarioTruthJsonText(scenario));
 }
 
 // Writes with `write` to the file at `path`, or to `stdout_stream` for "-".

@@ -9,6 +9,8 @@
 #include <fmt/core.h>
 
 #include "accelcal/base/error.h"
+#include "accelcal/io/procedure_file.h"
+#include "accelcal/io/scenario_file.h"
 #include "accelcal/session/session_paths.h"
 #include "accelcal/acquire/source/source_spec.h"
 #include "accelcal/session/procedure.h"
@@ -38,7 +40,7 @@ int RunWizard(const WizardCommandOptions& options) {
   SourceOptions source_options;
   source_options.sim.speed = options.speed;
   source_options.seed = options.seed;
-  source_options.scenario_path = options.scenario_path;
+  if (!options.scenario_path.empty()) source_options.scenario = sim::LoadScenario(options.scenario_path);
   const std::unique_ptr<SampleSource> source = OpenSource(options.source, source_options);
   // A new session goes to the default session directory, where `accelcal sessions` looks.
   const std::string session = options.session_path.empty() ? NewSessionPath() : options.session_path;

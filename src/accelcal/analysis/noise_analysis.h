@@ -34,7 +34,7 @@
 #include "accelcal/analysis/normality.h"
 #include "accelcal/analysis/welch_psd.h"
 #include "accelcal/base/capture.h"
-#include "accelcal/io/calibration_file.h"
+#include "accelcal/calibration/calibration.h"
 
 namespace accelcal::analysis {
 

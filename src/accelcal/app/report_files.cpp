@@ -23,17 +23,7 @@ void WriteReportFile(const std::string& path, const std::string& text) {
   WriteFileAtomically(path, text);
 }
 
-std::vector<std::string> WriteSessionReports(const SessionJournal& journal, const ReportMeta& meta,
-                                             const ProcedureLimits& limits,
-                                             const std::string& session_path) {
-  ReportInputs in = ReportInputsFromJournal(journal, session_path);
-  // What the journal's inputs hold (device, operator, place) wins over the caller's defaults.
-  const ReportMeta typed = in.meta;
-  in.meta = meta;
-  if (!typed.device.empty()) in.meta.device = typed.device;
-  if (!typed.operator_name.empty()) in.meta.operator_name = typed.operator_name;
-  if (!typed.place.empty()) in.meta.place = typed.place;
-  in.limits = limits;
+std::vector<std::string> WriteSessionReports(ReportInputs in, const std::string& session_path) {
   if (in.meta.session_name.empty()) {
     // The file's stem, as `accelcal sessions` names it.
     std::string name = session_path.substr(session_path.find_last_of('/') + 1);

@@ -7,7 +7,6 @@
 #include <vector>
 
 #include "accelcal/report/report_model.h"
-#include "accelcal/session/session_journal.h"
 
 namespace accelcal {
 
@@ -21,10 +20,9 @@ std::string ReportPathFor(const std::string& session_path, const std::string& ex
 // Writes `text` to `path` (via path.tmp and a rename). Throws accelcal::Error naming the file.
 void WriteReportFile(const std::string& path, const std::string& text);
 
-// The wizard's last step: the report of `journal`'s result (with `meta` and `limits`) written
-// as HTML and text beside `session_path`. Returns the paths written. Throws accelcal::Error.
-std::vector<std::string> WriteSessionReports(const SessionJournal& journal, const ReportMeta& meta,
-                                             const ProcedureLimits& limits,
-                                             const std::string& session_path);
+// The report of `inputs` written as HTML and text beside `session_path` (the session's name
+// from the file's stem when the meta lacks it). Returns the paths written. Throws
+// accelcal::Error naming the file.
+std::vector<std::string> WriteSessionReports(ReportInputs inputs, const std::string& session_path);
 
 }  // namespace accelcal

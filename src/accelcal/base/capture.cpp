@@ -48,7 +48,7 @@ void CaptureStats::Add(const Sample& s) {
   const Eigen::Vector3d delta = s.raw_counts - mean_counts;
   mean_counts += delta * inv_n;
   // Welford's co-moment update: C += (x - mean_old)(x - mean_new)^T; divided by n - 1 on read.
-  cov_counts2 += delta * (s.raw_counts - mean_counts).transpose();
+  comoment_counts2 += delta * (s.raw_counts - mean_counts).transpose();
   if (n == 1) {
     t_first_s = s.t_s;
     mean_t_s = 0.0;
@@ -70,21 +70,38 @@ void CaptureStats::Add(const Sample& s) {
   }
 }
 
+Eigen::Matrix3d CaptureStats::Covariance() const {
+  if (n < 2) return Eigen::Matrix3d::Constant(kNaN);
+  return comoment_counts2 / static_cast<double>(n - 1);
+}
+
 Eigen::Matrix3d CaptureStats::MeanCovariance() const {
   if (n < 2) return Eigen::Matrix3d::Constant(kNaN);
-  const double nd = static_cast<double>(n);
-  return cov_counts2 / ((nd - 1.0) * nd);
+  return Covariance() / static_cast<double>(n);
 }
 
 Eigen::Vector3d CaptureStats::StdCounts() const {
   if (n < 2) return Eigen::Vector3d::Constant(kNaN);
-  return (cov_counts2.diagonal() / static_cast<double>(n - 1)).cwiseSqrt();
+  return Covariance().diagonal().cwiseSqrt();
 }
 
 CaptureStats ComputeStats(const std::vector<Sample>& samples) {
   CaptureStats stats;
   for (const Sample& s : samples) stats.Add(s);
   return stats;
+}
+
+const CaptureStats& Capture::stats() const {
+  if (stats_of_samples_ != samples.size()) {
+    stats_ = ComputeStats(samples);
+    stats_of_samples_ = samples.size();
+  }
+  return stats_;
+}
+
+void Capture::set_stats(const CaptureStats& stats) {
+  stats_ = stats;
+  stats_of_samples_ = samples.size();
 }
 
 double ReferenceMagnitudeMps2(CaptureKind kind, double gravity_mps2, double radius_m, double rpm) {

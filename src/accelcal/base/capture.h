@@ -43,8 +43,9 @@ struct Sample {
 struct CaptureStats {
   long n = 0;
   Eigen::Vector3d mean_counts = Eigen::Vector3d::Zero();
-  // Sample covariance of the raw samples (n - 1 in the denominator), counts^2.
-  Eigen::Matrix3d cov_counts2 = Eigen::Matrix3d::Zero();
+  // Co-moment of the raw samples, sum (x - mean)(x - mean)^T over the samples, counts^2 (Welford's
+  // M2): the sample covariance is this over n - 1 (Covariance()).
+  Eigen::Matrix3d comoment_counts2 = Eigen::Matrix3d::Zero();
   double t_first_s = kNaN;
   double t_last_s = kNaN;
   double mean_t_s = kNaN;
@@ -56,7 +57,9 @@ struct CaptureStats {
   bool any_non_finite = false;  // a NaN or infinite reading was seen (it is not accumulated)
 
   void Add(const Sample& s);
-  // Covariance of the mean, counts^2: cov / n. Assumes uncorrelated samples (white noise).
+  // Sample covariance (n - 1 in the denominator), counts^2; NaN below two samples.
+  Eigen::Matrix3d Covariance() const;
+  // Covariance of the mean, counts^2: Covariance() / n. Assumes uncorrelated samples (white noise).
   Eigen::Matrix3d MeanCovariance() const;
   Eigen::Vector3d StdCounts() const;
 
@@ -80,6 +83,17 @@ struct Capture {
   // When the capture was left out of the fit: why (set by screening); empty when usable.
   std::string rejection_reason;
   bool used() const { return rejection_reason.empty(); }
+
+  // The statistics of `samples`, computed once and carried with the capture: handed over by the
+  // capture engine, which accumulates them as the samples arrive (set_stats), or computed on
+  // first use. Samples are only ever appended, so a change in their number recomputes them.
+  const CaptureStats& stats() const;
+  // `stats` must be those of `samples` as they are now (the capture engine's running ones).
+  void set_stats(const CaptureStats& stats);
+
+ private:
+  mutable CaptureStats stats_;
+  mutable std::size_t stats_of_samples_ = static_cast<std::size_t>(-1);  // samples.size() at stats_
 };
 
 // Table speed in rad/s from rpm.

@@ -13,35 +13,25 @@
 namespace accelcal {
 namespace {
 
-std::string EffectName(const nlohmann::json& e) {
-  return e.contains("name") && e["name"].is_string() ? e["name"].get<std::string>() : e.dump();
-}
-
-std::vector<double> EffectParameters(const Effect& effect, const nlohmann::json& e) {
+std::vector<double> EffectParameters(const Effect& effect, const CalibrationEffect& e) {
   std::vector<double> theta;
   for (int i = 0; i < effect.NumParameters(); ++i) {
     const std::string key = effect.ParameterName(i);
-    if (!e.contains("parameters") || !e["parameters"].contains(key) ||
-        !e["parameters"][key].is_number() || !std::isfinite(e["parameters"][key].get<double>()))
+    const EffectParameter* p = e.Find(key);
+    if (p == nullptr || !std::isfinite(p->value))
       throw Error(fmt::format("effect '{}': parameter '{}' is missing or not a finite number",
                               effect.Name(), key));
-    theta.push_back(e["parameters"][key].get<double>());
+    theta.push_back(p->value);
   }
   return theta;
-}
-
-double Reference(const nlohmann::json& e, const char* key) {
-  if (!e.contains("reference") || !e["reference"].contains(key) || !e["reference"][key].is_number())
-    return NAN;
-  return e["reference"][key].get<double>();
 }
 
 }  // namespace
 
 CalibrationApplier::CalibrationApplier(const Calibration& cal) : model_(cal.model) {
   context_.gravity_mps2 = cal.gravity.gravity_mps2;
-  for (const nlohmann::json& e : cal.effects) {
-    const std::string name = EffectName(e);
+  for (const CalibrationEffect& e : cal.effects) {
+    const std::string& name = e.name;
     const Effect* effect = FindEffect(name);
     if (effect == nullptr)
       throw Error(fmt::format("the calibration lists the effect '{}', which this version of "
@@ -53,7 +43,7 @@ CalibrationApplier::CalibrationApplier(const Calibration& cal) : model_(cal.mode
       continue;
     }
     if (name.rfind("temperature_", 0) == 0) {
-      context_.temp_ref_c = Reference(e, "temp_c");
+      context_.temp_ref_c = cal.reference.temp_c;
       if (!std::isfinite(context_.temp_ref_c))
         throw Error(fmt::format("effect '{}': reference.temp_c is missing", name));
       needs_temperature_ = true;

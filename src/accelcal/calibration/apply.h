@@ -14,7 +14,7 @@
 
 #include "accelcal/calibration/diagnosis/effect.h"
 #include "accelcal/base/error.h"
-#include "accelcal/io/calibration_file.h"
+#include "accelcal/calibration/calibration.h"
 
 namespace accelcal {
 

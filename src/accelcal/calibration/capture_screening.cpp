@@ -79,7 +79,7 @@ std::vector<std::string> KnownRangeClipping(const Capture& capture, const AdcRan
 
 std::vector<std::string> InferredRailClipping(const Capture& capture, double rail_fraction) {
   std::vector<std::string> reasons;
-  const CaptureStats stats = ComputeStats(capture.samples);  // min/max over finite samples
+  const CaptureStats& stats = capture.stats();  // min/max over finite samples
   if (stats.n == 0) return reasons;
   const double needed = std::max(2.0, rail_fraction * static_cast<double>(stats.n));
   for (int axis = 0; axis < 3; ++axis) {

@@ -26,21 +26,25 @@
 //       }, "y": {..}, "z": {..}
 //     }
 //   }
-// A figure that cannot be given (too short a record) is null, never a made-up number.
+// A figure that cannot be given (too short a record) is null, never a made-up number. The
+// report reads such a file (and the shape of README "Reports") as an AllanSection.
 #pragma once
 
 #include <string>
 
-#include <nlohmann/json.hpp>
-
 #include "accelcal/analysis/record_analysis.h"
+#include "accelcal/report/report_model.h"
 
 namespace accelcal {
 
-nlohmann::json RecordAnalysisToJson(const RecordAnalysis& analysis, const std::string& source,
-                                    double drift_window_s);
-
-// Writes the JSON above to `path` atomically. Throws accelcal::Error when it cannot.
-void WriteAllanFile(const std::string& path, const nlohmann::json& allan);
+// The file's text (2-space indent, a final newline).
+std::string AllanFileText(const RecordAnalysis& analysis, const std::string& source,
+                          double drift_window_s);
+// Writes `text` to `path` atomically. Throws accelcal::Error when it cannot.
+void WriteAllanFile(const std::string& path, const std::string& text);
+// An Allan file (or README's report shape) read strictly as the report's section; InputError
+// naming the file and field otherwise. ReadAllanFile reads `path` once (a pipe works).
+AllanSection ParseAllanText(const std::string& text, const std::string& source);
+AllanSection ReadAllanFile(const std::string& path);
 
 }  // namespace accelcal

@@ -1,28 +1,21 @@
 #include "accelcal/io/calibration_file.h"
 
-#include <cerrno>
-#include <cmath>
-#include <cstring>
-#include <fstream>
-#include <sstream>
-
 #include <fmt/core.h>
 
-#include "accelcal/io/atomic_write.h"
 #include "accelcal/base/error.h"
+#include "accelcal/io/atomic_write.h"
+#include "accelcal/io/detail/json_forms.h"
+#include "accelcal/io/detail/json_values.h"
+#include "accelcal/io/detail/read_file.h"
+#include "accelcal/base/version.h"
 
 namespace accelcal {
 namespace {
 
-using nlohmann::json;
-
-// NaN is not JSON: absent values are written as null.
-json Number(double v) { return std::isfinite(v) ? json(v) : json(nullptr); }
-
-json Triad(const Eigen::Vector3d& v) { return json::array({Number(v.x()), Number(v.y()), Number(v.z())}); }
+using namespace detail;  // the JSON helpers
 
 json Misalignment(const SensorModel& m) {
-  return {{"yz", Number(m.a_yz_rad)}, {"zy", Number(m.a_zy_rad)}, {"zx", Number(m.a_zx_rad)}};
+  return {{"yz", JsonNumber(m.a_yz_rad)}, {"zy", JsonNumber(m.a_zy_rad)}, {"zx", JsonNumber(m.a_zx_rad)}};
 }
 
 json GravityJson(const GravitySpec& g) {
@@ -34,77 +27,100 @@ json GravityJson(const GravitySpec& g) {
   return j;
 }
 
-json CaptureJson(const CaptureRecord& c) {
-  return {{"id", c.id},
-          {"kind", std::string(CaptureKindToString(c.kind))},
-          {"label", c.label},
-          {"used", c.used},
-          {"reason", c.used ? json(nullptr) : json(c.reason)},
-          {"n_samples", c.n_samples},
-          {"residual_mps2", Number(c.residual_mps2)},
-          {"reference_mps2", Number(c.reference_mps2)},
-          {"sigma_mps2", Number(c.sigma_mps2)},
-          {"radius_m", Number(c.radius_m)},
-          {"rpm", Number(c.rpm)},
-          {"t_start_s", Number(c.t_start_s)},
-          {"t_end_s", Number(c.t_end_s)},
-          {"mean_counts", Triad(c.mean_counts)}};
+json CaptureJson(const CalibrationCapture& c) {
+  json j = {{"id", c.id},
+            {"kind", std::string(CaptureKindToString(c.kind))},
+            {"label", c.label},
+            {"used", c.used},
+            {"reason", c.used ? json(nullptr) : json(c.reason)},
+            {"n_samples", c.n_samples},
+            {"residual_mps2", JsonNumber(c.residual_mps2)},
+            {"reference_mps2", JsonNumber(c.reference_mps2)},
+            {"sigma_mps2", JsonNumber(c.sigma_mps2)},
+            {"radius_m", JsonNumber(c.radius_m)},
+            {"rpm", JsonNumber(c.rpm)},
+            {"t_start_s", JsonNumber(c.t_start_s)},
+            {"t_end_s", JsonNumber(c.t_end_s)},
+            {"mean_counts", JsonTriad(c.mean_counts)}};
+  if (!c.stage_residuals_mps2.empty()) j["stage_residuals_mps2"] = JsonNumbers(c.stage_residuals_mps2);
+  return j;
 }
 
-json FitJson(const FitSummary& s) {
-  json warnings = json::array();
-  for (const std::string& w : s.warnings) warnings.push_back(w);
+json FitJson(const Calibration& cal) {
+  const FitStatistics& s = cal.fit;
   json correlated = nullptr;
-  if (s.most_correlated.first >= 0)
-    correlated = {{"first", s.parameter_labels[s.most_correlated.first]},
-                  {"second", s.parameter_labels[s.most_correlated.second]},
-                  {"rho", s.most_correlated.rho}};
-  return {{"termination", std::string(FitTerminationToString(s.termination))},
-          {"captures_used", s.num_captures},
-          {"dof", s.dof},
-          {"chi2", s.chi2},
-          {"chi2_per_dof", s.dof > 0 ? json(s.Chi2PerDof()) : json(nullptr)},
-          {"uncertainty_scale", s.uncertainty_scale},
-          {"condition_number", s.condition_number},
-          {"most_correlated", correlated},
-          {"optimizer", fmt::format("NLopt SLSQP ({}, {} evaluations) + Gauss-Newton ({} iterations)",
-                                    s.optimizer_result, s.optimizer_evaluations,
-                                    s.gauss_newton_iterations)},
-          {"warnings", warnings}};
+  if (!s.most_correlated_first.empty())
+    correlated = {{"first", s.most_correlated_first},
+                  {"second", s.most_correlated_second},
+                  {"rho", JsonNumber(s.most_correlated_rho)}};
+  json j = {{"termination", std::string(FitTerminationToString(s.termination))},
+            {"captures_used", s.captures_used},
+            {"dof", s.dof},
+            {"chi2", JsonNumber(s.chi2)},
+            {"chi2_per_dof", JsonNumber(s.chi2_per_dof)},
+            {"uncertainty_scale", JsonNumber(s.uncertainty_scale)},
+            {"condition_number", JsonNumber(s.condition_number)},
+            {"most_correlated", correlated},
+            {"optimizer", s.optimizer},
+            {"warnings", s.warnings}};
+  if (cal.diagnosis)
+    j["diagnosis"] = {{"ran", cal.diagnosis->ran},
+                      {"base_residual_rms_mps2", JsonNumber(cal.diagnosis->base_residual_rms_mps2)},
+                      {"noise_rms_mps2", JsonNumber(cal.diagnosis->noise_rms_mps2)},
+                      {"consistent_with_noise", cal.diagnosis->consistent_with_noise},
+                      {"conclusion", cal.diagnosis->conclusion}};
+  if (!cal.stages.empty()) {
+    json stages = json::array();
+    for (const ModelStage& st : cal.stages)
+      stages.push_back({{"name", st.name}, {"rms_mps2", JsonNumber(st.rms_mps2)}});
+    j["stages"] = stages;
+  }
+  return j;
+}
+
+json EffectJson(const CalibrationEffect& e, const EffectReference& ref) {
+  json parameters = json::object(), uncertainty = json::object(), units = json::object();
+  for (const EffectParameter& p : e.parameters) {
+    parameters[p.name] = JsonNumber(p.value);
+    uncertainty[p.name] = JsonNumber(p.sigma);
+    units[p.name] = p.unit;
+  }
+  return {{"name", e.name},
+          {"parameters", parameters},
+          {"uncertainty", uncertainty},
+          {"units", units},
+          {"rms_before_mps2", JsonNumber(e.rms_before_mps2)},
+          {"rms_after_mps2", JsonNumber(e.rms_after_mps2)},
+          {"chi2_per_dof_before", JsonNumber(e.chi2_per_dof_before)},
+          {"chi2_per_dof_after", JsonNumber(e.chi2_per_dof_after)},
+          {"reference", {{"temp_c", JsonNumber(ref.temp_c)}, {"t_s", JsonNumber(ref.t_s)}}},
+          {"corrects_readings", e.corrects_readings},
+          {"evidence", e.evidence}};
 }
 
 // --- strict reading -------------------------------------------------------------------------
 
-[[noreturn]] void Fail(const std::string& source, const std::string& field, const std::string& what) {
-  throw InputError(source, 0, 0, fmt::format("field '{}': {}", field, what));
-}
-
-const json& Field(const json& j, const std::string& key, const std::string& path, const std::string& source) {
-  if (!j.is_object() || !j.contains(key)) Fail(source, path + key, "missing");
-  return j.at(key);
-}
-
-double FiniteNumber(const json& j, const std::string& key, const std::string& path, const std::string& source) {
-  const json& v = Field(j, key, path, source);
-  if (!v.is_number()) Fail(source, path + key, "must be a number");
-  const double d = v.get<double>();
-  if (!std::isfinite(d)) Fail(source, path + key, "must be finite");
-  return d;
-}
-
-double OptionalNumber(const json& j, const std::string& key) {
-  return (j.contains(key) && j.at(key).is_number()) ? j.at(key).get<double>() : kNaN;
-}
-
-Eigen::Vector3d ReadTriad(const json& j, const std::string& key, const std::string& path, const std::string& source) {
-  const json& v = Field(j, key, path, source);
-  if (!v.is_array() || v.size() != 3) Fail(source, path + key, "must be an array of 3 numbers");
+Eigen::Vector3d ReadTriad(const json& j, const std::string& key, const std::string& path,
+                          const std::string& source) {
+  const json& v = RequiredField(j, key, path, source);
+  if (!v.is_array() || v.size() != 3) FailField(source, path + key, "must be an array of 3 numbers");
   Eigen::Vector3d out;
   for (int i = 0; i < 3; ++i) {
     if (!v[i].is_number() || !std::isfinite(v[i].get<double>()))
-      Fail(source, fmt::format("{}{}[{}]", path, key, i), "must be a finite number");
+      FailField(source, fmt::format("{}{}[{}]", path, key, i), "must be a finite number");
     out(i) = v[i].get<double>();
   }
+  return out;
+}
+
+// [x, y, z] with null entries as NaN; absent or null as all NaN.
+Eigen::Vector3d OptionalTriad(const json& j, const std::string& key, const std::string& path,
+                              const std::string& source) {
+  Eigen::Vector3d out = Eigen::Vector3d::Constant(NAN);
+  if (!j.contains(key) || j.at(key).is_null()) return out;
+  const std::vector<double> v = NumberArray(j, key, path, source, true);
+  if (v.size() != 3) FailField(source, path + key, "must be an array of 3 numbers");
+  for (int i = 0; i < 3; ++i) out(i) = v[static_cast<size_t>(i)];
   return out;
 }
 
@@ -112,172 +128,221 @@ SensorModel ReadModel(const json& j, const std::string& path, const std::string&
   SensorModel m;
   m.bias_counts = ReadTriad(j, "bias_counts", path, source);
   m.scale_counts_per_mps2 = ReadTriad(j, "scale_counts_per_mps2", path, source);
-  const json& mis = Field(j, "misalignment_rad", path, source);
-  m.a_yz_rad = FiniteNumber(mis, "yz", path + "misalignment_rad.", source);
-  m.a_zy_rad = FiniteNumber(mis, "zy", path + "misalignment_rad.", source);
-  m.a_zx_rad = FiniteNumber(mis, "zx", path + "misalignment_rad.", source);
+  const json& mis = RequiredField(j, "misalignment_rad", path, source);
+  m.a_yz_rad = RequiredFinite(mis, "yz", path + "misalignment_rad.", source);
+  m.a_zy_rad = RequiredFinite(mis, "zy", path + "misalignment_rad.", source);
+  m.a_zx_rad = RequiredFinite(mis, "zx", path + "misalignment_rad.", source);
   return m;
 }
 
 GravitySpec ReadGravity(const json& j, const std::string& source) {
-  const double g = FiniteNumber(j, "gravity_mps2", "", source);
+  const double g = RequiredFinite(j, "gravity_mps2", "", source);
   GravitySpec spec = GravitySpec::Given(g);
-  if (j.contains("gravity_source") && j["gravity_source"].is_object()) {
-    const json& gs = j["gravity_source"];
-    const std::string kind = gs.value("source", "given");
-    if (kind == "standard") spec.source = GravitySpec::Source::kStandard;
-    if (kind == "wgs84") {
-      spec.source = GravitySpec::Source::kWgs84;
-      spec.latitude_deg = OptionalNumber(gs, "latitude_deg");
-      spec.altitude_m = OptionalNumber(gs, "altitude_m");
-    }
+  if (!j.contains("gravity_source") || j["gravity_source"].is_null()) return spec;
+  const json& gs = j["gravity_source"];
+  if (!gs.is_object()) FailField(source, "gravity_source", "must be an object");
+  const std::string kind = OptionalString(gs, "source", "gravity_source.", source, "given");
+  if (kind == "standard") {
+    spec.source = GravitySpec::Source::kStandard;
+  } else if (kind == "wgs84") {
+    spec.source = GravitySpec::Source::kWgs84;
+    spec.latitude_deg = OptionalFinite(gs, "latitude_deg", "gravity_source.", source);
+    spec.altitude_m = OptionalFinite(gs, "altitude_m", "gravity_source.", source);
+  } else if (kind != "given") {
+    FailField(source, "gravity_source.source", "must be \"standard\", \"given\" or \"wgs84\"");
   }
   return spec;
 }
 
-CaptureRecord ReadCapture(const json& c, size_t index, const std::string& source) {
+CalibrationCapture ReadCapture(const json& c, size_t index, const std::string& source) {
   const std::string path = fmt::format("captures[{}].", index);
-  CaptureRecord r;
-  const json& id = Field(c, "id", path, source);
-  if (!id.is_number_integer()) Fail(source, path + "id", "must be an integer");
+  if (!c.is_object()) FailField(source, fmt::format("captures[{}]", index), "must be an object");
+  CalibrationCapture r;
+  const json& id = RequiredField(c, "id", path, source);
+  if (!id.is_number_integer()) FailField(source, path + "id", "must be an integer");
   r.id = id.get<int>();
-  const json& kind = Field(c, "kind", path, source);
+  const json& kind = RequiredField(c, "kind", path, source);
   const auto k = kind.is_string() ? StringToCaptureKind(kind.get<std::string>()) : std::nullopt;
-  if (!k) Fail(source, path + "kind", "must be \"static\" or \"turntable\"");
+  if (!k) FailField(source, path + "kind", "must be \"static\" or \"turntable\"");
   r.kind = *k;
-  r.label = c.value("label", "");
-  const json& used = Field(c, "used", path, source);
-  if (!used.is_boolean()) Fail(source, path + "used", "must be true or false");
+  r.label = OptionalString(c, "label", path, source);
+  const json& used = RequiredField(c, "used", path, source);
+  if (!used.is_boolean()) FailField(source, path + "used", "must be true or false");
   r.used = used.get<bool>();
-  if (c.contains("reason") && c["reason"].is_string()) r.reason = c["reason"].get<std::string>();
-  r.n_samples = c.value("n_samples", 0L);
-  r.residual_mps2 = OptionalNumber(c, "residual_mps2");
-  r.reference_mps2 = OptionalNumber(c, "reference_mps2");
-  r.sigma_mps2 = OptionalNumber(c, "sigma_mps2");
-  r.radius_m = OptionalNumber(c, "radius_m");
-  r.rpm = OptionalNumber(c, "rpm");
-  r.t_start_s = OptionalNumber(c, "t_start_s");
-  r.t_end_s = OptionalNumber(c, "t_end_s");
-  if (c.contains("mean_counts") && c["mean_counts"].is_array() && c["mean_counts"].size() == 3)
-    for (int i = 0; i < 3; ++i) r.mean_counts(i) = c["mean_counts"][i].is_number() ? c["mean_counts"][i].get<double>() : kNaN;
+  r.reason = OptionalString(c, "reason", path, source);
+  r.n_samples = OptionalInteger(c, "n_samples", path, source, 0);
+  r.residual_mps2 = OptionalFinite(c, "residual_mps2", path, source);
+  r.reference_mps2 = OptionalFinite(c, "reference_mps2", path, source);
+  r.sigma_mps2 = OptionalFinite(c, "sigma_mps2", path, source);
+  r.radius_m = OptionalFinite(c, "radius_m", path, source);
+  r.rpm = OptionalFinite(c, "rpm", path, source);
+  r.t_start_s = OptionalFinite(c, "t_start_s", path, source);
+  r.t_end_s = OptionalFinite(c, "t_end_s", path, source);
+  r.mean_counts = OptionalTriad(c, "mean_counts", path, source);
+  r.stage_residuals_mps2 = NumberArray(c, "stage_residuals_mps2", path, source, true);
+  return r;
+}
+
+FitStatistics ReadFit(const json& f, const std::string& source, Calibration* cal) {
+  FitStatistics s;
+  if (f.is_null()) return s;
+  if (!f.is_object()) FailField(source, "fit", "must be an object");
+  const std::string p = "fit.";
+  const std::string termination = OptionalString(f, "termination", p, source);
+  s.termination = FitTermination::kNotRun;
+  for (FitTermination t : {FitTermination::kConverged, FitTermination::kNoConvergence,
+                           FitTermination::kNumericalFailure, FitTermination::kUnderdetermined,
+                           FitTermination::kInvalidInput, FitTermination::kNotRun})
+    if (FitTerminationToString(t) == termination) s.termination = t;
+  s.captures_used = static_cast<int>(OptionalInteger(f, "captures_used", p, source, 0));
+  s.dof = static_cast<int>(OptionalInteger(f, "dof", p, source, 0));
+  s.chi2 = OptionalFinite(f, "chi2", p, source);
+  s.chi2_per_dof = OptionalFinite(f, "chi2_per_dof", p, source);
+  s.uncertainty_scale = OptionalFinite(f, "uncertainty_scale", p, source);
+  s.condition_number = OptionalFinite(f, "condition_number", p, source);
+  if (f.contains("most_correlated") && !f["most_correlated"].is_null()) {
+    const json& m = f["most_correlated"];
+    const std::string mp = p + "most_correlated.";
+    s.most_correlated_first = OptionalString(m, "first", mp, source);
+    s.most_correlated_second = OptionalString(m, "second", mp, source);
+    s.most_correlated_rho = OptionalFinite(m, "rho", mp, source);
+  }
+  s.optimizer = OptionalString(f, "optimizer", p, source);
+  if (f.contains("warnings") && !f["warnings"].is_null()) {
+    const json& w = f["warnings"];
+    if (!w.is_array()) FailField(source, p + "warnings", "must be an array of strings");
+    for (size_t i = 0; i < w.size(); ++i) {
+      if (!w[i].is_string()) FailField(source, fmt::format("{}warnings[{}]", p, i), "must be a string");
+      s.warnings.push_back(w[i].get<std::string>());
+    }
+  }
+  if (f.contains("diagnosis") && !f["diagnosis"].is_null()) {
+    const json& d = f["diagnosis"];
+    const std::string dp = p + "diagnosis.";
+    DiagnosisOutcome o;
+    o.ran = OptionalBool(d, "ran", dp, source, true);
+    o.base_residual_rms_mps2 = OptionalFinite(d, "base_residual_rms_mps2", dp, source);
+    o.noise_rms_mps2 = OptionalFinite(d, "noise_rms_mps2", dp, source);
+    o.consistent_with_noise = OptionalBool(d, "consistent_with_noise", dp, source, false);
+    o.conclusion = OptionalString(d, "conclusion", dp, source);
+    cal->diagnosis = o;
+  }
+  if (f.contains("stages") && !f["stages"].is_null()) {
+    const json& st = f["stages"];
+    if (!st.is_array()) FailField(source, p + "stages", "must be an array");
+    for (size_t i = 0; i < st.size(); ++i) {
+      const std::string sp = fmt::format("{}stages[{}].", p, i);
+      cal->stages.push_back({OptionalString(st[i], "name", sp, source),
+                             OptionalFinite(st[i], "rms_mps2", sp, source)});
+    }
+  }
+  return s;
+}
+
+CalibrationEffect ReadEffect(const json& e, size_t index, const std::string& source,
+                             EffectReference* reference) {
+  const std::string path = fmt::format("effects[{}].", index);
+  if (!e.is_object()) FailField(source, fmt::format("effects[{}]", index), "must be an object");
+  CalibrationEffect r;
+  const json& name = RequiredField(e, "name", path, source);
+  if (!name.is_string()) FailField(source, path + "name", "must be a string");
+  r.name = name.get<std::string>();
+  const json& params = RequiredField(e, "parameters", path, source);
+  if (!params.is_object()) FailField(source, path + "parameters", "must be an object name -> value");
+  for (const auto& [key, value] : params.items()) {
+    EffectParameter p;
+    p.name = key;
+    p.value = RequiredFinite(params, key, path + "parameters.", source);
+    if (e.contains("uncertainty") && e["uncertainty"].is_object())
+      p.sigma = OptionalFinite(e["uncertainty"], key, path + "uncertainty.", source);
+    if (e.contains("units") && e["units"].is_object())
+      p.unit = OptionalString(e["units"], key, path + "units.", source);
+    r.parameters.push_back(p);
+  }
+  r.rms_before_mps2 = OptionalFinite(e, "rms_before_mps2", path, source);
+  r.rms_after_mps2 = OptionalFinite(e, "rms_after_mps2", path, source);
+  r.chi2_per_dof_before = OptionalFinite(e, "chi2_per_dof_before", path, source);
+  r.chi2_per_dof_after = OptionalFinite(e, "chi2_per_dof_after", path, source);
+  r.corrects_readings = OptionalBool(e, "corrects_readings", path, source, false);
+  r.evidence = OptionalString(e, "evidence", path, source);
+  if (e.contains("reference") && e["reference"].is_object()) {
+    const double temp_c = OptionalFinite(e["reference"], "temp_c", path + "reference.", source);
+    const double t_s = OptionalFinite(e["reference"], "t_s", path + "reference.", source);
+    if (std::isfinite(temp_c)) reference->temp_c = temp_c;
+    if (std::isfinite(t_s)) reference->t_s = t_s;
+  }
   return r;
 }
 
 }  // namespace
 
-std::vector<CaptureRecord> MakeCaptureRecords(const std::vector<Capture>& all,
-                                              const FitSummary& summary) {
-  std::vector<CaptureRecord> records;
-  for (const Capture& c : all) {
-    const CaptureStats stats = ComputeStats(c.samples);
-    CaptureRecord r;
-    r.id = c.id;
-    r.kind = c.kind;
-    r.label = c.label;
-    r.used = c.used();
-    r.reason = c.rejection_reason;
-    r.n_samples = static_cast<long>(c.samples.size());
-    r.radius_m = c.radius_m;
-    r.rpm = c.rpm;
-    r.t_start_s = c.samples.empty() ? kNaN : c.samples.front().t_s;
-    r.t_end_s = c.samples.empty() ? kNaN : c.samples.back().t_s;
-    r.mean_counts = stats.n > 0 ? stats.mean_counts : Eigen::Vector3d::Constant(kNaN);
-    for (const CaptureResidual& res : summary.residuals) {
-      if (res.id == c.id && r.used && summary.IsUsable()) {
-        r.residual_mps2 = res.residual_mps2;
-        r.reference_mps2 = res.reference_mps2;
-        r.sigma_mps2 = res.sigma_mps2;
-      }
-    }
-    records.push_back(r);
-  }
-  return records;
-}
-
-Calibration MakeCalibration(const FitSummary& summary, const GravitySpec& gravity,
-                            const std::vector<Capture>& all, const std::string& source) {
+Calibration CalibrationFromJson(const json& j, const std::string& source) {
+  if (!j.is_object()) throw InputError(source, 0, 0, "not a JSON object");
+  const json& format = RequiredField(j, "format", "", source);
+  if (!format.is_string() || format.get<std::string>() != kCalibrationFormat)
+    FailField(source, "format", fmt::format("is {}, expected \"{}\"", format.dump(), kCalibrationFormat));
   Calibration cal;
-  cal.model = summary.Model();
-  cal.uncertainty = SensorModel::FromVector(summary.uncertainty.head(kNumBaseParameters));
-  cal.gravity = gravity;
-  cal.residual_rms_mps2 = summary.residual_rms_mps2;
-  cal.residual_max_abs_mps2 = summary.residual_max_abs_mps2;
-  cal.source = source;
-  cal.fit = FitJson(summary);
-  cal.captures = MakeCaptureRecords(all, summary);
+  cal.model = ReadModel(j, "", source);
+  if (std::string e = cal.model.Validate(); !e.empty()) throw InputError(source, 0, 0, e);
+  const json& unc = RequiredField(j, "uncertainty", "", source);
+  cal.uncertainty = ReadModel(unc, "uncertainty.", source);
+  cal.gravity = ReadGravity(j, source);
+  cal.residual_rms_mps2 = OptionalFinite(j, "residual_rms_mps2", "", source);
+  cal.residual_max_abs_mps2 = OptionalFinite(j, "residual_max_abs_mps2", "", source);
+  cal.source = OptionalString(j, "source", "", source);
+  cal.fit = ReadFit(j.contains("fit") ? j["fit"] : json(nullptr), source, &cal);
+  const json& effects = RequiredField(j, "effects", "", source);
+  if (!effects.is_array()) FailField(source, "effects", "must be an array");
+  for (size_t i = 0; i < effects.size(); ++i)
+    cal.effects.push_back(ReadEffect(effects[i], i, source, &cal.reference));
+  const json& captures = RequiredField(j, "captures", "", source);
+  if (!captures.is_array()) FailField(source, "captures", "must be an array");
+  for (size_t i = 0; i < captures.size(); ++i) cal.captures.push_back(ReadCapture(captures[i], i, source));
   return cal;
 }
 
 json CalibrationToJson(const Calibration& cal) {
   json captures = json::array();
-  for (const CaptureRecord& c : cal.captures) captures.push_back(CaptureJson(c));
+  for (const CalibrationCapture& c : cal.captures) captures.push_back(CaptureJson(c));
+  json effects = json::array();
+  for (const CalibrationEffect& e : cal.effects) effects.push_back(EffectJson(e, cal.reference));
   return {{"format", kCalibrationFormat},
-          {"tool", std::string("accelcal ") + ACCELCAL_VERSION},
+          {"tool", std::string("accelcal ") + kAccelcalVersion},
           {"source", cal.source},
           {"gravity_mps2", cal.gravity.gravity_mps2},
           {"gravity_source", GravityJson(cal.gravity)},
-          {"bias_counts", Triad(cal.model.bias_counts)},
-          {"scale_counts_per_mps2", Triad(cal.model.scale_counts_per_mps2)},
+          {"bias_counts", JsonTriad(cal.model.bias_counts)},
+          {"scale_counts_per_mps2", JsonTriad(cal.model.scale_counts_per_mps2)},
           {"misalignment_rad", Misalignment(cal.model)},
           {"uncertainty",
-           {{"bias_counts", Triad(cal.uncertainty.bias_counts)},
-            {"scale_counts_per_mps2", Triad(cal.uncertainty.scale_counts_per_mps2)},
+           {{"bias_counts", JsonTriad(cal.uncertainty.bias_counts)},
+            {"scale_counts_per_mps2", JsonTriad(cal.uncertainty.scale_counts_per_mps2)},
             {"misalignment_rad", Misalignment(cal.uncertainty)}}},
-          {"residual_rms_mps2", Number(cal.residual_rms_mps2)},
-          {"residual_max_abs_mps2", Number(cal.residual_max_abs_mps2)},
-          {"fit", cal.fit},
-          {"effects", cal.effects},
+          {"residual_rms_mps2", JsonNumber(cal.residual_rms_mps2)},
+          {"residual_max_abs_mps2", JsonNumber(cal.residual_max_abs_mps2)},
+          {"fit", FitJson(cal)},
+          {"effects", effects},
           {"captures", captures}};
 }
 
-Calibration CalibrationFromJson(const json& j, const std::string& source) {
-  if (!j.is_object()) throw InputError(source, 0, 0, "not a JSON object");
-  const json& format = Field(j, "format", "", source);
-  if (!format.is_string() || format.get<std::string>() != kCalibrationFormat)
-    Fail(source, "format", fmt::format("is {}, expected \"{}\"", format.dump(), kCalibrationFormat));
-  Calibration cal;
-  cal.model = ReadModel(j, "", source);
-  if (std::string e = cal.model.Validate(); !e.empty()) throw InputError(source, 0, 0, e);
-  const json& unc = Field(j, "uncertainty", "", source);
-  cal.uncertainty = ReadModel(unc, "uncertainty.", source);
-  cal.gravity = ReadGravity(j, source);
-  cal.residual_rms_mps2 = OptionalNumber(j, "residual_rms_mps2");
-  cal.residual_max_abs_mps2 = OptionalNumber(j, "residual_max_abs_mps2");
-  cal.source = j.value("source", "");
-  if (j.contains("fit")) cal.fit = j["fit"];
-  const json& effects = Field(j, "effects", "", source);
-  if (!effects.is_array()) Fail(source, "effects", "must be an array");
-  cal.effects = effects;
-  const json& captures = Field(j, "captures", "", source);
-  if (!captures.is_array()) Fail(source, "captures", "must be an array");
-  for (size_t i = 0; i < captures.size(); ++i) cal.captures.push_back(ReadCapture(captures[i], i, source));
-  return cal;
+std::string CalibrationToJsonText(const Calibration& cal) { return CalibrationToJson(cal).dump(2); }
+
+Calibration CalibrationFromJsonText(const std::string& text, const std::string& source_name) {
+  return CalibrationFromJson(ParseJsonText(text, source_name), source_name);
+}
+
+void ReadAnalysesFromResultText(const std::string& text, const std::string& source_name,
+                                ReportInputs* inputs) {
+  ReadAnalysesFromResult(ParseJsonText(text, source_name), source_name, inputs);
 }
 
 void WriteCalibrationFile(const std::string& path, const Calibration& cal) {
   // Beside and renamed, so a crash never leaves a half-written calibration behind.
-  WriteFileAtomically(path, CalibrationToJson(cal).dump(2) + "\n");
+  WriteFileAtomically(path, CalibrationToJsonText(cal) + "\n");
 }
 
 Calibration ReadCalibrationFile(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw Error(fmt::format("cannot open '{}': {}", path, std::strerror(errno)));
-  std::stringstream text;
-  text << in.rdbuf();
-  json j;
-  try {
-    j = json::parse(text.str());
-  } catch (const json::parse_error& e) {
-    // nlohmann reports a byte offset; turn it into line and column.
-    const std::string s = text.str();
-    const size_t at = std::min<size_t>(e.byte == 0 ? 0 : e.byte - 1, s.size());
-    long line = 1, col = 1;
-    for (size_t i = 0; i < at; ++i) {
-      if (s[i] == '\n') { ++line; col = 1; } else { ++col; }
-    }
-    throw InputError(path, line, col, "not valid JSON");
-  }
-  return CalibrationFromJson(j, path);
+  return CalibrationFromJsonText(detail::ReadWholeFile(path), path);
 }
 
 }  // namespace accelcal

@@ -8,7 +8,7 @@
 
 #include <fmt/format.h>
 
-#include "accelcal/io/detail/csv_fields.h"
+#include "accelcal/io/csv_fields.h"
 #include "accelcal/io/detail/read_file.h"
 #include "accelcal/base/text_scan.h"
 #include "accelcal/base/error.h"
@@ -16,7 +16,6 @@
 namespace accelcal {
 namespace {
 
-using detail::CsvField;
 
 enum Column : int {
   kCapture, kKind, kT, kAx, kAy, kAz, kTempC, kRadiusM, kRpm, kLabel, kUpAxis, kNumColumns
@@ -149,7 +148,7 @@ void CaptureSetParser::ParseComment(size_t hash_offset) {
 }
 
 void CaptureSetParser::ParseHeader() {
-  const detail::CsvSplitError split = detail::SplitCsvLine(line_, &fields_);
+  const CsvSplitError split = SplitCsvLine(line_, &fields_);
   if (!split.message.empty()) FailAt(split.offset, split.message);
   column_index_.fill(-1);
   for (size_t i = 0; i < fields_.size(); ++i) {
@@ -177,7 +176,7 @@ void CaptureSetParser::ParseHeader() {
 }
 
 void CaptureSetParser::ParseDataLine() {
-  const detail::CsvSplitError split = detail::SplitCsvLine(line_, &fields_);
+  const CsvSplitError split = SplitCsvLine(line_, &fields_);
   if (!split.message.empty()) FailAt(split.offset, split.message);
   if (fields_.size() != num_header_fields_) {
     const std::string message =

@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "accelcal/base/error.h"
+#include "accelcal/io/csv_fields.h"
 
 namespace accelcal {
 namespace {
@@ -31,16 +32,6 @@ void WriteRow(std::ostream& out, const Capture& c, const std::string& label, con
 
 }  // namespace
 
-std::string CsvField(const std::string& text) {
-  if (text.find_first_of(",\"") == std::string::npos) return text;
-  std::string quoted = "\"";
-  for (char ch : text) {
-    if (ch == '"') quoted += '"';
-    quoted += ch;
-  }
-  return quoted + '"';
-}
-
 void WriteCaptureSet(std::ostream& out, const CaptureSet& set) {
   out << "# accelcal capture set\n";
   if (set.adc_range) {
@@ -53,7 +44,7 @@ void WriteCaptureSet(std::ostream& out, const CaptureSet& set) {
     if (c.label.find_first_of("\r\n") != std::string::npos) {
       throw Error(fmt::format("capture {}: a label cannot hold a line break", c.id));
     }
-    const std::string label = CsvField(c.label);
+    const std::string label = CsvQuote(c.label);
     for (const Sample& s : c.samples) WriteRow(out, c, label, s);
   }
   if (!out) throw Error("cannot write the capture set");

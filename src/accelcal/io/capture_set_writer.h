@@ -51,7 +51,4 @@ class RecordingWriter {
 
 void WriteRecording(std::ostream& out, const std::vector<Sample>& samples);
 
-// A label as a CSV field: quoted (quotes doubled) when it holds a comma or a quote.
-std::string CsvField(const std::string& text);
-
 }  // namespace accelcal

@@ -2,18 +2,15 @@
 
 #include <cmath>
 
+#include "accelcal/io/detail/json_forms.h"
+#include "accelcal/io/detail/json_values.h"
+
 namespace accelcal {
 namespace {
 
-using nlohmann::json;
+using namespace detail;  // the JSON helpers
 
-json Num(double v) { return std::isfinite(v) ? json(v) : json(nullptr); }
-
-json Numbers(const std::vector<double>& v) {
-  json a = json::array();
-  for (double x : v) a.push_back(Num(x));
-  return a;
-}
+json Num(double v) { return JsonNumber(v); }
 
 json Parameters(const std::vector<ReportParameter>& params) {
   json a = json::array();
@@ -25,7 +22,7 @@ json Parameters(const std::vector<ReportParameter>& params) {
 json Captures(const std::vector<ReportCapture>& captures) {
   json a = json::array();
   for (const ReportCapture& c : captures) {
-    const CaptureRecord& r = c.record;
+    const CalibrationCapture& r = c.record;
     a.push_back({{"id", r.id},
                  {"label", r.label},
                  {"kind", std::string(CaptureKindToString(r.kind))},
@@ -62,7 +59,7 @@ json Effects(const std::vector<ReportEffect>& effects) {
 json Stages(const std::vector<ResidualStage>& stages) {
   json a = json::array();
   for (const ResidualStage& s : stages)
-    a.push_back({{"name", s.name}, {"rms_mps2", Num(s.rms_mps2)}, {"residual_mps2", Numbers(s.residual_mps2)}});
+    a.push_back({{"name", s.name}, {"rms_mps2", Num(s.rms_mps2)}, {"residual_mps2", JsonNumbers(s.residual_mps2)}});
   return a;
 }
 
@@ -116,5 +113,7 @@ json ReportToJson(const ReportModel& m) {
           {"limits", Checks(m)},
           {"verdict", std::string(VerdictToString(m.verdict))}};
 }
+
+std::string ReportJsonText(const ReportModel& model) { return ReportToJson(model).dump(2) + "\n"; }
 
 }  // namespace accelcal

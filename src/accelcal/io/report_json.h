@@ -4,7 +4,7 @@
 // calibration`).
 #pragma once
 
-#include <nlohmann/json.hpp>
+#include <string>
 
 #include "accelcal/report/report_model.h"
 
@@ -12,6 +12,7 @@ namespace accelcal {
 
 inline constexpr const char* kReportFormat = "accelcal-report/1";
 
-nlohmann::json ReportToJson(const ReportModel& model);
+// The report as JSON text (2-space indent, a final newline).
+std::string ReportJsonText(const ReportModel& model);
 
 }  // namespace accelcal

@@ -1,8 +1,11 @@
 // ParseScenario / LoadScenario: TOML -> Scenario. Every table refuses keys it does not know.
+#include "accelcal/io/scenario_file.h"
+
 #include <fstream>
 #include <sstream>
 
 #include <fmt/core.h>
+#include <nlohmann/json.hpp>
 
 #include "accelcal/io/detail/toml_reader.h"
 #include "accelcal/base/error.h"
@@ -213,6 +216,17 @@ Scenario LoadScenario(const std::string& path) {
   text << in.rdbuf();
   if (in.bad()) throw Error("cannot read scenario '" + path + "'");
   return ParseScenario(text.str(), path);
+}
+
+std::string ScenarioTruthJsonText(const Scenario& scenario) {
+  const SensorModel& m = scenario.sensor.model;
+  nlohmann::json j;
+  j["bias_counts"] = {m.bias_counts.x(), m.bias_counts.y(), m.bias_counts.z()};
+  j["scale_counts_per_mps2"] = {m.scale_counts_per_mps2.x(), m.scale_counts_per_mps2.y(),
+                                m.scale_counts_per_mps2.z()};
+  j["misalignment_rad"] = {{"yz", m.a_yz_rad}, {"zy", m.a_zy_rad}, {"zx", m.a_zx_rad}};
+  j["gravity_mps2"] = scenario.bench.gravity_mps2;
+  return j.dump(2) + "\n";
 }
 
 }  // namespace accelcal::sim

@@ -1,14 +1,15 @@
-// The Allan analysis file (io/allan_file.h) as text for a terminal or paper (80 columns): the
-// record, then per axis the IEEE 952 read-offs and the drift, then the notes.
+// The record analysis (analysis/record_analysis.h) as text for a terminal or paper (80 columns):
+// the record, then per axis the IEEE 952 read-offs and the drift, then the notes. The same
+// figures as the Allan file (io/allan_file.h).
 #pragma once
 
 #include <string>
 
-#include <nlohmann/json.hpp>
+#include "accelcal/analysis/record_analysis.h"
 
 namespace accelcal {
 
-// `allan` as written by RecordAnalysisToJson. Missing figures print as "-".
-std::string FormatAllanText(const nlohmann::json& allan);
+// `source` names what was analysed. Missing figures print as "-".
+std::string FormatAllanText(const RecordAnalysis& analysis, const std::string& source);
 
 }  // namespace accelcal

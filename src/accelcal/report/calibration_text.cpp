@@ -1,24 +1,11 @@
 #include "accelcal/report/calibration_text.h"
 
-#include <fmt/core.h>
+#include <fmt/format.h>
 
 #include "accelcal/report/fit_text.h"
 #include "accelcal/base/sensor_model.h"
 
 namespace accelcal {
-namespace {
-
-std::string EffectNames(const nlohmann::json& effects) {
-  std::string names;
-  for (const nlohmann::json& e : effects) {
-    if (!names.empty()) names += ", ";
-    names += e.is_object() && e.contains("name") && e["name"].is_string()
-                 ? e["name"].get<std::string>() : std::string("?");
-  }
-  return names.empty() ? "none" : names;
-}
-
-}  // namespace
 
 std::string FormatCalibrationText(const Calibration& cal) {
   std::string out = fmt::format("gravity: {}\n\nparameters (1-sigma):\n", cal.gravity.Describe());
@@ -29,7 +16,8 @@ std::string FormatCalibrationText(const Calibration& cal) {
                        ParameterUnit(i));
   out += fmt::format("\nresiduals: RMS {:.5f} m/s^2, max |r| {:.5f} m/s^2\n", cal.residual_rms_mps2,
                      cal.residual_max_abs_mps2);
-  out += "effects added: " + EffectNames(cal.effects) + "\n";
+  const std::vector<std::string> names = cal.EffectNames();
+  out += fmt::format("effects added: {}\n", names.empty() ? std::string("none") : fmt::format("{}", fmt::join(names, ", ")));
   out += "\ncaptures:\n" + FormatCaptureTable(cal.captures);
   return out;
 }

@@ -5,7 +5,7 @@
 
 #include <string>
 
-#include "accelcal/io/calibration_file.h"
+#include "accelcal/calibration/calibration.h"
 
 namespace accelcal {
 

@@ -8,13 +8,13 @@
 namespace accelcal {
 namespace {
 
-std::string Conditions(const CaptureRecord& c) {
+std::string Conditions(const CalibrationCapture& c) {
   if (c.kind == CaptureKind::kTurntable) return fmt::format("r={:.3f} m {:.1f} rpm", c.radius_m, c.rpm);
   if (std::isfinite(c.t_start_s)) return fmt::format("t={:.1f}-{:.1f} s", c.t_start_s, c.t_end_s);
   return "";
 }
 
-std::string Row(const CaptureRecord& c) {
+std::string Row(const CalibrationCapture& c) {
   std::string status;
   if (!c.used) {
     status = "left out: " + c.reason;
@@ -43,15 +43,15 @@ std::string FormatIntervals(const StaticDetection& detection, const StaticDetect
   return out;
 }
 
-std::string FormatCaptureTable(const std::vector<CaptureRecord>& captures) {
+std::string FormatCaptureTable(const std::vector<CalibrationCapture>& captures) {
   std::string out = fmt::format("{:>4} {:<9} {:<14} {:>6} {:<22} {}\n", "id", "kind", "label",
                                 "n", "conditions", "residual |a|-|f|");
-  for (const CaptureRecord& c : captures) out += Row(c);
+  for (const CalibrationCapture& c : captures) out += Row(c);
   return out;
 }
 
 std::string FormatCaptureTable(const std::vector<Capture>& captures, const FitSummary& summary) {
-  return FormatCaptureTable(MakeCaptureRecords(captures, summary));
+  return FormatCaptureTable(MakeCalibrationCaptures(captures, summary));
 }
 
 std::string FormatFitReport(const Calibration& cal, const FitSummary& summary) {

@@ -6,7 +6,7 @@
 
 #include "accelcal/base/capture.h"
 #include "accelcal/calibration/fit/fit_summary.h"
-#include "accelcal/io/calibration_file.h"
+#include "accelcal/calibration/calibration.h"
 #include "accelcal/acquire/static_detector.h"
 
 namespace accelcal {
@@ -16,7 +16,7 @@ std::string FormatIntervals(const StaticDetection& detection, const StaticDetect
 
 // One line per capture: id, kind, samples, used or why not, residual when fitted.
 std::string FormatCaptureTable(const std::vector<Capture>& captures, const FitSummary& summary);
-std::string FormatCaptureTable(const std::vector<CaptureRecord>& captures);
+std::string FormatCaptureTable(const std::vector<CalibrationCapture>& captures);
 
 // The fit's FullReport (parameters with 1-sigma uncertainties, residual statistics,
 // conditioning, warnings) followed by the capture table.

@@ -15,55 +15,6 @@ using analysis::RecordNoise;
 
 constexpr const char* kAxisNames[3] = {"x", "y", "z"};
 
-nlohmann::json Number(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(); }
-
-nlohmann::json Vector(const Eigen::Vector3d& v) {
-  if (!v.allFinite()) return nullptr;
-  return nlohmann::json::array({v(0), v(1), v(2)});
-}
-
-nlohmann::json Numbers(const std::vector<double>& values) {
-  nlohmann::json out = nlohmann::json::array();
-  for (double v : values) out.push_back(Number(v));
-  return out;
-}
-
-nlohmann::json NormalityJson(const NormalityTest& t) {
-  return {{"test", "jarque-bera"},
-          {"statistic", Number(t.statistic)},
-          {"p_value", Number(t.p_value)},
-          {"skewness", Number(t.skewness)},
-          {"excess_kurtosis", Number(t.excess_kurtosis)},
-          {"verdict", std::string(analysis::NormalityVerdictToString(t.verdict))},
-          {"note", t.note}};
-}
-
-nlohmann::json RecordJson(const RecordNoise& r) {
-  nlohmann::json axes = nlohmann::json::object();
-  nlohmann::json spectrum = {{"frequency_hz", Numbers(r.spectrum.frequency_hz)}};
-  for (std::size_t a = 0; a < 3; ++a) {
-    const AxisNoise& axis = r.axes[a];
-    axes[kAxisNames[a]] = {{"mean", Number(axis.mean)},
-                           {"std", Number(axis.std)},
-                           {"std_counts", Number(axis.std_counts)},
-                           {"density", Number(axis.density)},
-                           {"normality", NormalityJson(axis.normality)}};
-    spectrum[kAxisNames[a]] = Numbers(r.spectrum.density[a]);
-  }
-  return {{"label", r.label},
-          {"date", r.date.empty() ? nlohmann::json() : nlohmann::json(r.date)},
-          {"n_samples", r.num_samples},
-          {"rate_hz", Number(r.rate_hz)},
-          {"duration_s", Number(r.duration_s)},
-          {"welch", {{"segment_length", r.segment_length},
-                     {"segments", r.num_segments},
-                     {"resolution_hz", Number(r.resolution_hz)}}},
-          {"flat_band_hz", {Number(r.band_low_hz), Number(r.band_high_hz)}},
-          {"flat_band_bins", r.band_bins},
-          {"axes", axes},
-          {"spectrum", spectrum}};
-}
-
 // "normal (p 0.43)", "NOT NORMAL (p 3e-12)", "quantized: not tested".
 std::string VerdictText(const NormalityTest& t) {
   switch (t.verdict) {
@@ -151,31 +102,6 @@ std::string FormatNoiseText(const NoiseReport& report) {
   }
   out += "\n(Spectra: --format json.)\n";
   return out;
-}
-
-nlohmann::json NoiseReportToJson(const NoiseReport& report) {
-  nlohmann::json records = nlohmann::json::array();
-  for (const RecordNoise& r : report.records) records.push_back(RecordJson(r));
-  const analysis::BiasRepeatability& rep = report.repeatability;
-  nlohmann::json used = nlohmann::json::array();
-  for (std::size_t i = 0; i < rep.labels.size(); ++i) {
-    used.push_back({{"label", rep.labels[i]},
-                    {"date", rep.dates[i].empty() ? nlohmann::json() : nlohmann::json(rep.dates[i])},
-                    {"mean", Vector(rep.means[i])}});
-  }
-  return {{"format", "accelcal-noise/1"},
-          {"unit", report.unit},
-          {"density_unit", report.unit + "/sqrt(Hz)"},
-          {"psd_unit", report.unit + "^2/Hz"},
-          {"calibration", report.calibration_source.empty()
-                              ? nlohmann::json()
-                              : nlohmann::json(report.calibration_source)},
-          {"records", records},
-          {"repeatability", {{"days", rep.num_days},
-                             {"records", used},
-                             {"std_of_means", Vector(rep.std_of_means)},
-                             {"max_minus_min", Vector(rep.max_minus_min)}}},
-          {"warnings", report.warnings}};
 }
 
 }  // namespace accelcal

@@ -260,7 +260,7 @@ std::string Captures(const ReportModel& m) {
                     "<th>Kind</th><th class=\"n\">r (m)</th><th class=\"n\">rpm</th><th class=\"n\">Samples</th>"
                     "<th class=\"n\">Noise (counts)</th><th class=\"n\">Residual (m/s&sup2;)</th><th>Status</th></tr>\n";
   for (const ReportCapture& c : m.captures) {
-    const CaptureRecord& r = c.record;
+    const CalibrationCapture& r = c.record;
     out += fmt::format("<tr{}><td class=\"n\">{}</td><td>{}</td><td>{}</td><td class=\"n\">{}</td><td class=\"n\">{}</td>"
                        "<td class=\"n\">{}</td><td class=\"n\">{}</td><td class=\"n\">{}</td><td>{}</td></tr>\n",
                        r.used ? "" : " class=\"out\"", r.id, E(r.label), CaptureKindToString(r.kind),

@@ -1,13 +1,13 @@
 // The calibration report's content, gathered once so that the three renderers (report_text.h,
 // report_html.h, report_json.h) show the same numbers and never derive any themselves.
 //
-// Built from a calibration (the calibration file's content, io/calibration_file.h) plus, when
-// the report comes from a session, what the session recorded: its metadata (device, operator,
-// dates), the captures with their raw samples (per-capture noise, temperature range, and the
-// per-capture residuals before and after each adopted effect, by refitting the base model and
-// each prefix of the adopted effects), the procedure's pass/fail limits, and optional noise and
-// Allan-deviation analyses (JSON, shapes below). Whatever is absent is reported as
-// "not recorded"; nothing is guessed.
+// Built from a typed calibration (calibration/calibration.h: the parameters, the fit statistics,
+// the adopted effects and each capture's residual under each stage of the model, as the fit and
+// the diagnosis computed them: nothing is refitted here) plus, when the report comes from a
+// session, what the session recorded: its metadata (device, operator, dates), the captures with
+// their raw samples (per-capture noise and temperature range), the procedure's pass/fail
+// limits, and optional noise and Allan-deviation analyses (read by io/allan_file.h and
+// io/noise_file.h). Whatever is absent is reported as "not recorded"; nothing is guessed.
 //
 // Units: SI (m/s^2, s, degC) except where a name says counts; the noise and Allan sections keep
 // the unit their JSON states ("counts" or "m/s^2").
@@ -19,10 +19,8 @@
 #include <string>
 #include <vector>
 
-#include <nlohmann/json.hpp>
-
 #include "accelcal/base/capture.h"
-#include "accelcal/io/calibration_file.h"
+#include "accelcal/calibration/calibration.h"
 #include "accelcal/session/procedure.h"
 #include "accelcal/session/session_journal.h"
 
@@ -68,18 +66,8 @@ struct NoiseSection {
   std::string source;
 };
 
-// Strict readers: a wrong type, a non-finite number, an unknown unit or arrays of different
-// lengths throw InputError naming `source` and the field. At least one axis must be present.
-// Null figures (and null adev points, as `accelcal allan` writes them) read as NaN: absent.
-// ParseNoiseJson also reads `accelcal noise`'s file ("accelcal-noise/1": records[0]'s std and
-// density, bias repeatability = repeatability.std_of_means).
-AllanSection ParseAllanJson(const nlohmann::json& j, const std::string& source);
-NoiseSection ParseNoiseJson(const nlohmann::json& j, const std::string& source);
-nlohmann::json AllanToJson(const AllanSection& a);
-nlohmann::json NoiseToJson(const NoiseSection& n);
-
 struct ReportCapture {
-  CaptureRecord record;
+  CalibrationCapture record;
   double noise_counts = kNaN;  // RMS over the axes of the samples' std; NaN without samples
   double temp_min_c = kNaN;
   double temp_max_c = kNaN;
@@ -162,23 +150,13 @@ struct ReportInputs {
   std::optional<NoiseSection> noise;
 };
 
-// Gathers everything. Refits (base model and each prefix of the adopted effects) only when
-// `inputs.captures` is non-empty. Throws InputError when an adopted effect is unknown.
+// Gathers everything; derives nothing the calibration already states.
 ReportModel BuildReportModel(const ReportInputs& inputs);
 
 // Device, operator and place from a journal's inputs (keys "device", "operator", "place" at
 // any step; the latest step id wins when two steps hold one).
 void FillMetaFromInputs(const std::map<std::string, std::map<std::string, std::string>>& inputs,
                         ReportMeta* meta);
-
-// The "allan" and "noise" keys of a session's result JSON, when present (strictly read).
-void ReadAnalysesFromResult(const nlohmann::json& result, const std::string& source,
-                            ReportInputs* inputs);
-
-// The inputs a journal holds: its result as the calibration (InputError naming `source_name`
-// when damaged; Error when there is none yet), its captures, device/operator/place, and the
-// result's "allan"/"noise" analyses. Limits and the rest of the meta are the caller's.
-ReportInputs ReportInputsFromJournal(const SessionJournal& journal, const std::string& source_name);
 
 // Text for an absent value in every renderer.
 inline constexpr const char* kNotRecorded = "not recorded";

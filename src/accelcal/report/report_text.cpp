@@ -94,7 +94,7 @@ std::string CaptureTable(const ReportModel& m) {
   out += " ID Pose / mounting      Kind      r (m)  rpm Samples  Noise  Residual Status\n";
   out += "                                                     (cnt)   (m/s^2)\n";
   for (const ReportCapture& c : m.captures) {
-    const CaptureRecord& r = c.record;
+    const CalibrationCapture& r = c.record;
     std::string label = Clean(r.label);
     if (label.size() > 20) label = label.substr(0, 19) + "~";
     out += fmt::format("{:>3} {:<20} {:<9} {:>5} {:>4} {:>7} {:>6} {:>9} {}\n", r.id, label,

@@ -21,7 +21,7 @@ class MemoryJournal final : public SessionJournal {
   void RecordStepDone(const std::string& step_id, const std::string& outcome) override {
     done_[step_id] = outcome;
   }
-  void RecordResult(const nlohmann::json& calibration) override { result_ = calibration; }
+  void RecordResult(const std::string& calibration_json) override { result_ = calibration_json; }
   void AppendRecordChunk(const std::string& step_id, const RecordChunk& chunk) override {
     CheckRecordChunk(step_id, chunk, RecordSummaryOf(step_id));
     if (records_.count(step_id) == 0) record_order_.push_back(step_id);
@@ -31,7 +31,7 @@ class MemoryJournal final : public SessionJournal {
   std::vector<JournalCapture> Captures() const override { return captures_; }
   std::map<std::string, std::map<std::string, std::string>> Inputs() const override { return inputs_; }
   std::map<std::string, std::string> DoneSteps() const override { return done_; }
-  std::optional<nlohmann::json> Result() const override { return result_; }
+  std::optional<std::string> Result() const override { return result_; }
   RecordSummary RecordSummaryOf(const std::string& step_id) const override {
     RecordSummary s;
     if (auto r = records_.find(step_id); r != records_.end())
@@ -49,7 +49,7 @@ class MemoryJournal final : public SessionJournal {
   std::vector<JournalCapture> captures_;
   std::map<std::string, std::map<std::string, std::string>> inputs_;
   std::map<std::string, std::string> done_;
-  std::optional<nlohmann::json> result_;
+  std::optional<std::string> result_;
   std::map<std::string, std::vector<RecordChunk>> records_;
   std::vector<std::string> record_order_;
   bool done_session_ = false;

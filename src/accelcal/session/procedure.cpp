@@ -1,186 +1,15 @@
 #include "accelcal/session/procedure.h"
 
-#include <algorithm>
 #include <cmath>
-#include <set>
-
-#include <fmt/core.h>
-#include <Eigen/Geometry>
-#include <toml++/toml.h>
-
-#include "accelcal/acquire/capture_engine/orientation_check.h"
-#include "accelcal/io/detail/read_file.h"
-#include "accelcal/io/detail/toml_reader.h"
-#include "accelcal/base/error.h"
 
 namespace accelcal {
 namespace {
-
-using detail::NumberRange;
-using detail::TomlTableReader;
 
 constexpr std::pair<StepKind, std::string_view> kKindNames[] = {
     {StepKind::kLevel, "level"},         {StepKind::kStatic, "static"},
     {StepKind::kTurntable, "turntable"}, {StepKind::kRecord, "record"},
     {StepKind::kFit, "fit"},             {StepKind::kDiagnosis, "diagnosis"},
     {StepKind::kReport, "report"},       {StepKind::kAnalysis, "analysis"}};
-
-void ReadSensor(TomlTableReader& r, Procedure& p) {
-  p.range_g = r.Number("range_g", 6.0, NumberRange::kPositive);
-  const double scale = r.Number("nominal_scale_counts_per_mps2", std::nullopt, NumberRange::kPositive);
-  const double bias = r.Number("nominal_bias_counts", std::nullopt);
-  p.nominal.scale_counts_per_mps2 = Eigen::Vector3d::Constant(scale);
-  p.nominal.bias_counts = Eigen::Vector3d::Constant(bias);
-  const std::int64_t bits = r.Integer("adc_bits", 12);
-  if (bits < 1 || bits > 32) r.Fail(*r.Get("adc_bits"), "adc_bits", "must be 1..32");
-  const bool is_signed = r.Bool("adc_signed", false);
-  const double span = std::ldexp(1.0, static_cast<int>(bits));
-  p.adc_range = is_signed ? AdcRange{-span / 2, span / 2 - 1} : AdcRange{0.0, span - 1};
-}
-
-struct CaptureDefaults {
-  double duration_s = 10.0;
-  double timeout_s = 60.0;
-};
-
-CaptureDefaults ReadChecks(TomlTableReader& r, Procedure& p) {
-  CaptureDefaults d;
-  d.duration_s = r.Number("capture_duration_s", 10.0, NumberRange::kPositive);
-  d.timeout_s = r.Number("capture_timeout_s", 60.0, NumberRange::kPositive);
-  p.orientation_tolerance_deg = r.Number("orientation_tolerance_deg", 15.0, NumberRange::kPositive);
-  p.std_multiplier = r.Number("std_multiplier", 1.5, NumberRange::kPositive);
-  p.trend_multiplier = r.Number("trend_multiplier", 2.0, NumberRange::kPositive);
-  p.turntable_tolerance = r.Number("turntable_tolerance", 0.10, NumberRange::kPositive);
-  return d;
-}
-
-ProcedureLimits ReadLimits(TomlTableReader& r) {
-  ProcedureLimits l;
-  l.max_residual_rms_mps2 = r.Number("max_residual_rms_mps2", kNaN, NumberRange::kPositive);
-  l.max_residual_rms_noise = r.Number("max_residual_rms_noise", kNaN, NumberRange::kPositive);
-  l.max_bias_sigma_counts = r.Number("max_bias_sigma_counts", kNaN, NumberRange::kPositive);
-  l.max_scale_sigma_ppm = r.Number("max_scale_sigma_ppm", kNaN, NumberRange::kPositive);
-  l.max_misalignment_sigma_rad = r.Number("max_misalignment_sigma_rad", kNaN, NumberRange::kPositive);
-  const std::int64_t n = r.Integer("min_captures", 0);
-  if (n < 0 || n > 100000) r.Fail(*r.Get("min_captures"), "min_captures", "must be 0..100000");
-  l.min_captures = static_cast<int>(n);
-  return l;
-}
-
-SensorAxis ReadAxis(TomlTableReader& r, std::string_view key, SensorAxis fallback) {
-  const std::string text = r.String(key, std::string(SensorAxisToString(fallback)));
-  const std::optional<SensorAxis> axis = StringToSensorAxis(text);
-  if (!axis) r.Fail(*r.Get(key), key, "'" + text + "' is not an axis: expected +x, -x, ... -z");
-  return *axis;
-}
-
-void ReadPose(TomlTableReader& r, ProcedureStep& s) {
-  const toml::node* node = r.Get("up");
-  s.up = r.Vector3("up", Eigen::Vector3d::UnitZ());
-  if (!(s.up.norm() > 0.0)) r.Fail(*node, "up", "must not be zero");
-  s.up.normalize();
-  s.pose_name = r.String("pose", DescribeUp(s.up) + " up");
-}
-
-void ReadTurntable(TomlTableReader& r, ProcedureStep& s) {
-  s.radius_m = r.Number("radius_m", std::nullopt, NumberRange::kPositive);
-  s.rpm = r.Number("rpm", std::nullopt, NumberRange::kPositive);
-  s.radial_axis = ReadAxis(r, "radial", SensorAxis::kPlusX);
-  s.up_axis = ReadAxis(r, "up_axis", SensorAxis::kPlusZ);
-  if (SensorAxisVector(s.radial_axis).cross(SensorAxisVector(s.up_axis)).norm() < 0.5)
-    r.Fail(*r.Get("radial"), "radial", "must be perpendicular to up_axis");
-  s.pose_name = fmt::format("{} radial, {} up", SensorAxisToString(s.radial_axis),
-                            SensorAxisToString(s.up_axis));
-}
-
-void ReadDurations(TomlTableReader& r, ProcedureStep& s, const CaptureDefaults& d) {
-  s.duration_s = r.Number("duration_s", d.duration_s, NumberRange::kPositive);
-  // A long record gets a timeout beyond its own length by default.
-  const double fallback = std::max(d.timeout_s, s.duration_s + d.timeout_s);
-  s.timeout_s = r.Number("timeout_s", s.duration_s >= d.timeout_s ? fallback : d.timeout_s,
-                         NumberRange::kPositive);
-  if (s.timeout_s <= s.duration_s) {
-    if (const toml::node* node = r.Get("timeout_s")) r.Fail(*node, "timeout_s", "must exceed duration_s");
-    r.Fail(*r.Get("duration_s"), "duration_s", "must be below the capture timeout");
-  }
-}
-
-ProcedureStep ReadStep(TomlTableReader& r, const CaptureDefaults& d) {
-  ProcedureStep s;
-  s.id = r.String("id", std::nullopt);
-  if (s.id.empty()) r.Fail(*r.Get("id"), "id", "must not be empty");
-  const std::string kind = r.String("kind", std::nullopt);
-  const std::optional<StepKind> k = StringToStepKind(kind);
-  if (!k) {
-    r.Fail(*r.Get("kind"), "kind",
-           "'" + kind + "' is not a step kind: expected level, static, turntable, record, fit, "
-           "diagnosis, report or analysis");
-  }
-  s.kind = *k;
-  switch (s.kind) {
-    case StepKind::kLevel:
-      s.tolerance_deg = r.Number("tolerance_deg", 1.5, NumberRange::kPositive);
-      s.duration_s = r.Number("duration_s", 3.0, NumberRange::kPositive);
-      s.timeout_s = r.Number("timeout_s", d.timeout_s, NumberRange::kPositive);
-      break;
-    case StepKind::kStatic:
-      ReadPose(r, s);
-      ReadDurations(r, s, d);
-      break;
-    case StepKind::kRecord:
-      ReadPose(r, s);
-      ReadDurations(r, s, d);
-      s.chunk_s = r.Number("chunk_s", ProcedureStep::kDefaultRecordChunkS, NumberRange::kPositive);
-      break;
-    case StepKind::kTurntable:
-      ReadTurntable(r, s);
-      ReadDurations(r, s, d);
-      break;
-    case StepKind::kAnalysis:
-      s.record_step = r.String("record", std::nullopt);
-      s.method = r.String("method", std::nullopt);
-      if (s.method != "allan" && s.method != "noise")
-        r.Fail(*r.Get("method"), "method", "'" + s.method + "' is not an analysis: expected allan or noise");
-      break;
-    default: break;
-  }
-  s.title = r.String("title", s.pose_name.empty() ? std::string(StepKindToString(s.kind))
-                                                  : s.pose_name);
-  if (s.kind == StepKind::kLevel) s.pose_name = "+z up";  // the reversal's pose
-  return s;
-}
-
-template <typename Fn>
-void WithTable(TomlTableReader& root, std::string_view key, const std::string& source, Fn&& fn) {
-  const toml::table* table = root.Table(key);
-  if (table == nullptr) return;
-  TomlTableReader reader(*table, std::string(key), source);
-  fn(reader);
-  reader.Finish();
-}
-
-void ReadSteps(TomlTableReader& root, const CaptureDefaults& d, const std::string& source,
-               Procedure& p) {
-  const toml::array* steps = root.ArrayOfTables("step");
-  if (steps == nullptr || steps->empty())
-    throw InputError(source, 0, 0, "the procedure has no [[step]]");
-  std::set<std::string> ids;
-  for (std::size_t i = 0; i < steps->size(); ++i) {
-    const toml::table& table = *steps->get(i)->as_table();
-    TomlTableReader r(table, fmt::format("step {}", i + 1), source);
-    ProcedureStep s = ReadStep(r, d);
-    r.Finish();
-    if (!ids.insert(s.id).second) r.Fail(*r.Get("id"), "id", "'" + s.id + "' is used twice");
-    if (s.kind == StepKind::kAnalysis) {
-      const bool earlier_record = std::any_of(p.steps.begin(), p.steps.end(), [&](const ProcedureStep& e) {
-        return e.id == s.record_step && e.kind == StepKind::kRecord;
-      });
-      if (!earlier_record)
-        r.Fail(*r.Get("record"), "record", "'" + s.record_step + "' is not an earlier record step");
-    }
-    p.steps.push_back(std::move(s));
-  }
-}
 
 }  // namespace
 
@@ -209,31 +38,6 @@ bool ProcedureLimits::Any() const {
   return std::isfinite(max_residual_rms_mps2) || std::isfinite(max_residual_rms_noise) ||
          std::isfinite(max_bias_sigma_counts) || std::isfinite(max_scale_sigma_ppm) ||
          std::isfinite(max_misalignment_sigma_rad) || min_captures > 0;
-}
-
-Procedure ParseProcedure(std::string_view toml_text, const std::string& source_name) {
-  const toml::table doc = detail::ParseTomlDocument(toml_text, source_name);
-  Procedure p;
-  p.source_name = source_name;
-  TomlTableReader root(doc, "", source_name);
-  p.title = root.String("title", std::nullopt);
-  bool has_sensor = false;
-  WithTable(root, "sensor", source_name, [&](TomlTableReader& r) {
-    ReadSensor(r, p);
-    has_sensor = true;
-  });
-  if (!has_sensor) throw InputError(source_name, 0, 0, "required table [sensor] is missing");
-  CaptureDefaults defaults;
-  WithTable(root, "checks", source_name,
-            [&](TomlTableReader& r) { defaults = ReadChecks(r, p); });
-  WithTable(root, "limits", source_name, [&](TomlTableReader& r) { p.limits = ReadLimits(r); });
-  ReadSteps(root, defaults, source_name, p);
-  root.Finish();
-  return p;
-}
-
-Procedure LoadProcedure(const std::string& path) {
-  return ParseProcedure(detail::ReadWholeFile(path), path);
 }
 
 }  // namespace accelcal

@@ -1,5 +1,5 @@
 // A calibration procedure as data: the steps a wizard session walks through, read from TOML at
-// run time (procedures/*.toml; the format is in README.md, "Procedures").
+// run time (procedures/*.toml, by io/procedure_file.h; the format is in README.md, "Procedures").
 //
 // Units: deg for tolerances shown to the operator, s for durations, m and rpm for the turntable,
 // g for the accelerometer's range, counts and counts per m/s^2 for the nominal model.
@@ -89,11 +89,5 @@ struct Procedure {
   // The poses of the static steps other than the six faces (to name a wrong pose).
   std::vector<Eigen::Vector3d> TiltedPoses() const;
 };
-
-// Throws accelcal::InputError "FILE:LINE:COLUMN: what" for malformed TOML, an unknown key, a
-// wrong type or value, a duplicate step id.
-Procedure ParseProcedure(std::string_view toml_text, const std::string& source_name);
-// Reads and parses `path`; throws accelcal::Error when it cannot be read.
-Procedure LoadProcedure(const std::string& path);
 
 }  // namespace accelcal

@@ -21,8 +21,6 @@
 #include <string>
 #include <vector>
 
-#include <nlohmann/json.hpp>
-
 #include "accelcal/base/capture.h"
 
 namespace accelcal {
@@ -81,7 +79,9 @@ class SessionJournal {
   // A step finished without a capture (leveling done, skipped, ...), with its outcome.
   virtual void RecordStepDone(const std::string& step_id, const std::string& outcome) = 0;
   // The session's result (the calibration file's JSON). A later one replaces it.
-  virtual void RecordResult(const nlohmann::json& calibration) = 0;
+  // `calibration_json` is the calibration file's text (io/calibration_file.h writes and reads it;
+  // the journal stores it as it is).
+  virtual void RecordResult(const std::string& calibration_json) = 0;
   // The session is finished (its procedure completed); durable when it returns.
   virtual void MarkDone() = 0;
 
@@ -95,7 +95,7 @@ class SessionJournal {
   virtual std::vector<JournalCapture> Captures() const = 0;
   virtual std::map<std::string, std::map<std::string, std::string>> Inputs() const = 0;
   virtual std::map<std::string, std::string> DoneSteps() const = 0;  // step id -> outcome
-  virtual std::optional<nlohmann::json> Result() const = 0;
+  virtual std::optional<std::string> Result() const = 0;  // the latest RecordResult text
   // The record of `step_id` so far (an empty summary when it has none).
   virtual RecordSummary RecordSummaryOf(const std::string& step_id) const = 0;
   // Calls `visit` with each chunk of the record of `step_id`, in order (one chunk in memory at

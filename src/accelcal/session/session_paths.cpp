@@ -7,7 +7,7 @@
 #include <fmt/core.h>
 
 #include "accelcal/base/error.h"
-#include "accelcal/session/detail/utc_time.h"
+#include "accelcal/base/utc_time.h"
 
 namespace accelcal {
 
@@ -27,7 +27,7 @@ std::string NewSessionPath() {
   std::error_code ec;
   fs::create_directories(dir, ec);
   if (ec) throw Error(fmt::format("cannot create the session directory {}: {}", dir.string(), ec.message()));
-  const std::string stem = detail::UtcNowCompact();
+  const std::string stem = UtcNowCompact();
   fs::path path = dir / (stem + ".db");
   for (int i = 2; fs::exists(path); ++i) path = dir / fmt::format("{}-{}.db", stem, i);
   return path.string();

@@ -10,7 +10,7 @@
 #include "accelcal/session/detail/session_lock.h"
 #include "accelcal/session/detail/session_schema.h"
 #include "accelcal/session/detail/sqlite_db.h"
-#include "accelcal/session/detail/utc_time.h"
+#include "accelcal/base/utc_time.h"
 
 namespace accelcal {
 
@@ -109,7 +109,7 @@ void SessionStore::RequireWritable() const {
 void SessionStore::RecordInput(const std::string& step_id, const std::string& key,
                                const std::string& value) {
   RequireWritable();
-  const std::string now = detail::UtcNowIso8601();
+  const std::string now = UtcNowIso8601();
   SqliteTransaction transaction(*db_);
   SqliteStatement(*db_, "INSERT OR REPLACE INTO inputs (step_id, key, value, recorded_utc) "
                         "VALUES (?, ?, ?, ?)")
@@ -121,7 +121,7 @@ void SessionStore::RecordInput(const std::string& step_id, const std::string& ke
 
 void SessionStore::RecordCapture(const std::string& step_id, const Capture& capture) {
   RequireWritable();
-  const std::string now = detail::UtcNowIso8601();
+  const std::string now = UtcNowIso8601();
   SqliteTransaction transaction(*db_);
   detail::InsertCaptureRow(*db_, step_id, capture, now);
   TouchSession(*db_, now);
@@ -130,7 +130,7 @@ void SessionStore::RecordCapture(const std::string& step_id, const Capture& capt
 
 void SessionStore::RecordStepDone(const std::string& step_id, const std::string& outcome) {
   RequireWritable();
-  const std::string now = detail::UtcNowIso8601();
+  const std::string now = UtcNowIso8601();
   SqliteTransaction transaction(*db_);
   SqliteStatement(*db_, "INSERT OR REPLACE INTO steps_done (step_id, outcome, recorded_utc) "
                         "VALUES (?, ?, ?)")
@@ -139,20 +139,20 @@ void SessionStore::RecordStepDone(const std::string& step_id, const std::string&
   transaction.Commit();
 }
 
-void SessionStore::RecordResult(const nlohmann::json& calibration) {
+void SessionStore::RecordResult(const std::string& calibration_json) {
   RequireWritable();
-  const std::string now = detail::UtcNowIso8601();
+  const std::string now = UtcNowIso8601();
   SqliteTransaction transaction(*db_);
   // Earlier results stay as history; Result() is the latest.
   SqliteStatement(*db_, "INSERT INTO results (calibration_json, recorded_utc) VALUES (?, ?)")
-      .Bind(1, calibration.dump()).Bind(2, now).Run();
+      .Bind(1, calibration_json).Bind(2, now).Run();
   TouchSession(*db_, now);
   transaction.Commit();
 }
 
 void SessionStore::AppendRecordChunk(const std::string& step_id, const RecordChunk& chunk) {
   RequireWritable();
-  const std::string now = detail::UtcNowIso8601();
+  const std::string now = UtcNowIso8601();
   SqliteTransaction transaction(*db_);
   detail::InsertRecordChunk(*db_, step_id, chunk, now);
   TouchSession(*db_, now);
@@ -172,7 +172,7 @@ std::vector<std::string> SessionStore::RecordSteps() const { return detail::Read
 
 void SessionStore::MarkDone() {
   RequireWritable();
-  const std::string now = detail::UtcNowIso8601();
+  const std::string now = UtcNowIso8601();
   SqliteTransaction transaction(*db_);
   SqliteStatement(*db_, "UPDATE session SET state = 'done' WHERE id = 1").Run();
   TouchSession(*db_, now);
@@ -195,14 +195,10 @@ std::map<std::string, std::string> SessionStore::DoneSteps() const {
   return out;
 }
 
-std::optional<nlohmann::json> SessionStore::Result() const {
+std::optional<std::string> SessionStore::Result() const {
   SqliteStatement row(*db_, "SELECT calibration_json FROM results ORDER BY seq DESC LIMIT 1");
   if (!row.Step()) return std::nullopt;
-  try {
-    return nlohmann::json::parse(row.ColumnText(0));
-  } catch (const nlohmann::json::exception& e) {
-    throw Error(fmt::format("session {}: the stored calibration is damaged: {}", path_, e.what()));
-  }
+  return row.ColumnText(0);
 }
 
 SessionInfo SessionStore::Info() const {

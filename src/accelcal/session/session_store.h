@@ -79,13 +79,13 @@ class SessionStore final : public SessionJournal {
                    const std::string& value) override;
   void RecordCapture(const std::string& step_id, const Capture& capture) override;
   void RecordStepDone(const std::string& step_id, const std::string& outcome) override;
-  void RecordResult(const nlohmann::json& calibration) override;
+  void RecordResult(const std::string& calibration_json) override;
   void AppendRecordChunk(const std::string& step_id, const RecordChunk& chunk) override;
 
   std::vector<JournalCapture> Captures() const override;
   std::map<std::string, std::map<std::string, std::string>> Inputs() const override;
   std::map<std::string, std::string> DoneSteps() const override;
-  std::optional<nlohmann::json> Result() const override;
+  std::optional<std::string> Result() const override;
   RecordSummary RecordSummaryOf(const std::string& step_id) const override;
   void VisitRecordChunks(const std::string& step_id,
                          const std::function<void(const RecordChunk&)>& visit) const override;

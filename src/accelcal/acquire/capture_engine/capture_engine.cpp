@@ -224,6 +224,7 @@ bool CaptureEngine::CaptureComplete() const {
 }
 
 void CaptureEngine::FinishCapture() {
+  capture_.set_stats(stats_);  // computed as the samples came: carried, never recomputed
   if (std::string screening = ScreeningReason(capture_, options_.screening); !screening.empty()) {
     Reject(std::move(screening));
     return;

@@ -35,7 +35,7 @@ NoiseFloor NoiseFloor::FromCaptures(const std::vector<Capture>& captures) {
   std::vector<double> per_axis[3];
   for (const Capture& capture : captures) {
     if (!capture.used()) continue;
-    const CaptureStats stats = ComputeStats(capture.samples);
+    const CaptureStats& stats = capture.stats();
     if (stats.n < 2) continue;
     const Eigen::Vector3d std_counts = stats.StdCounts();
     for (int axis = 0; axis < 3; ++axis) per_axis[axis].push_back(std_counts[axis]);

@@ -140,13 +140,6 @@ struct Scenario {
   std::string Validate() const;
 };
 
-// Parses a scenario from TOML text. `source_name` names it in errors. Throws InputError
-// (FILE:LINE:COLUMN) on a syntax error, a missing or unknown key, a value of the wrong type or
-// out of range (negative noise, unknown kind, radial axis parallel to the up axis, ...).
-Scenario ParseScenario(std::string_view toml_text, const std::string& source_name);
-
-// Reads and parses a scenario file. Throws Error when it cannot be read, InputError as above.
-Scenario LoadScenario(const std::string& path);
 
 // The shipped scenarios/bench_default.toml, in code: a 12-bit MMA7260Q-like part at +-6 g,
 // 9 static poses and 9 turntable captures (3 mountings x 3 radii at 120 rpm), no effects.

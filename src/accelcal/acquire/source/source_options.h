@@ -6,6 +6,7 @@
 #include <optional>
 #include <string>
 
+#include "accelcal/acquire/sim/scenario.h"
 #include "accelcal/acquire/source/sim_options.h"
 
 namespace accelcal {
@@ -28,8 +29,9 @@ struct SourceOptions {
   bool realtime = false;
   // "-": the file descriptor read as standard input (0; tests pass a pipe). Not closed.
   int stdin_fd = 0;
-  // sim: the scenario file (TOML); empty => the built-in sim::DefaultScenario().
-  std::string scenario_path;
+  // sim: the bench (read from its file by io/scenario_file.h); empty => the built-in
+  // sim::DefaultScenario().
+  std::optional<sim::Scenario> scenario;
   // sim: overrides the scenario's [bench] seed.
   std::optional<std::uint64_t> seed;
   SimOptions sim;

@@ -51,8 +51,7 @@ SourceSpec ParseTcp(const std::string& spec) {
 }
 
 std::unique_ptr<SampleSource> OpenSim(const SourceOptions& options) {
-  sim::Scenario scenario = options.scenario_path.empty() ? sim::DefaultScenario()
-                                                         : sim::LoadScenario(options.scenario_path);
+  sim::Scenario scenario = options.scenario ? *options.scenario : sim::DefaultScenario();
   if (options.seed) scenario.bench.seed = *options.seed;
   return std::make_unique<SimSource>(std::move(scenario), options.sim, options.dead_after_s,
                                      options.gap_factor);

@@ -7,18 +7,8 @@
 #include <fmt/core.h>
 #include <fmt/format.h>
 
-#include "accelcal/app/analyze_recording.h"
-#include "accelcal/analysis/noise_analysis.h"
-#include "accelcal/calibration/capture_screening.h"
 #include "accelcal/base/error.h"
-#include "accelcal/calibration/fit/calibration_fit.h"
-#include "accelcal/io/allan_file.h"
-#include "accelcal/io/calibration_file.h"
-#include "accelcal/report/allan_text.h"
-#include "accelcal/report/fit_text.h"
-#include "accelcal/report/noise_text.h"
-#include "accelcal/app/report_files.h"
-#include "accelcal/session/detail/utc_time.h"
+#include "accelcal/base/utc_time.h"
 #include "accelcal/acquire/source/bench_control.h"
 #include "accelcal/app/wizard/leveling.h"
 #include "accelcal/app/wizard/quantity_input.h"
@@ -26,42 +16,10 @@
 namespace accelcal {
 namespace {
 
-// The figures of an analysis step in one line: its outcome in the journal.
-std::string AllanOutcome(const nlohmann::json& allan) {
-  std::string out = fmt::format("Allan, {}: noise density", allan.value("unit", "?"));
-  for (const char* axis : {"x", "y", "z"}) {
-    const nlohmann::json& n = allan["axes"][axis]["noise_density"];
-    out += fmt::format(" {} {}", axis, n.is_number() ? fmt::format("{:.4g}", n.get<double>()) : "-");
-  }
-  out += "; bias instability";
-  for (const char* axis : {"x", "y", "z"}) {
-    const nlohmann::json& b = allan["axes"][axis]["bias_instability"];
-    out += fmt::format(" {} {}", axis, b.is_number() ? fmt::format("{:.4g}", b.get<double>()) : "-");
-  }
-  return out;
-}
-
-std::string NoiseOutcome(const analysis::NoiseReport& n) {
-  std::string out = fmt::format("noise, {}: std", n.unit);
-  const analysis::RecordNoise& r = n.records.front();
-  for (size_t a = 0; a < 3; ++a) out += fmt::format(" {} {:.4g}", "xyz"[a], r.axes[a].std);
-  out += "; density";
-  for (size_t a = 0; a < 3; ++a) out += fmt::format(" {} {:.4g}", "xyz"[a], r.axes[a].density);
-  return out;
-}
-
-
 constexpr const char* kWelcomeId = "welcome";
 // A fresh record starts this long after the sensor is placed (the hand letting go; the
 // simulator's placement moves for 1.5 s), s.
 constexpr double kRecordSettleS = 2.0;
-
-std::vector<std::string> SplitLines(const std::string& text) {
-  std::vector<std::string> out;
-  std::istringstream in(text);
-  for (std::string line; std::getline(in, line);) out.push_back(line);
-  return out;
-}
 
 bool IsCaptureStep(StepKind kind) {
   return kind == StepKind::kStatic || kind == StepKind::kRecord || kind == StepKind::kTurntable;
@@ -71,7 +29,7 @@ bool NeedsSensor(StepKind kind) { return IsCaptureStep(kind) || kind == StepKind
 
 // Measured "up" of a capture through the rough model (platform frame, unit).
 Eigen::Vector3d MeasuredUp(const Capture& c, const SensorModel& rough) {
-  return rough.Calibrate(ComputeStats(c.samples).mean_counts).normalized();
+  return rough.Calibrate(c.stats().mean_counts).normalized();
 }
 
 }  // namespace
@@ -84,8 +42,10 @@ std::string WizardOptions::Validate() const {
 
 WizardEngine::WizardEngine(Procedure procedure, SampleSource& source, SessionJournal& journal,
                            WizardOptions options)
-    : procedure_(std::move(procedure)), source_(source), journal_(journal),
-      options_(std::move(options)) {
+    : procedure_(std::move(procedure)), source_(source), model_(journal),
+      options_(std::move(options)),
+      outputs_(options_.report_beside.empty() ? nullptr : MakeOutputsBesideSession(options_.report_beside)),
+      steps_(procedure_, model_, options_.gravity, options_.session_name, outputs_.get()) {
   if (std::string why = options_.Validate(); !why.empty()) throw Error("wizard options: " + why);
   if (procedure_.steps.empty()) throw Error("the procedure has no steps");
   ReadJournal();
@@ -95,16 +55,11 @@ WizardEngine::~WizardEngine() = default;
 
 // ---- resume ---------------------------------------------------------------------------------
 
-bool WizardEngine::StepRecorded(const std::string& id) const {
-  if (journal_.DoneSteps().count(id) != 0) return true;
-  for (const JournalCapture& c : journal_.Captures())
-    if (c.step_id == id) return true;
-  return false;
-}
+bool WizardEngine::StepRecorded(const std::string& id) const { return model_.StepRecorded(id); }
 
 void WizardEngine::ReadJournal() {
-  const std::vector<JournalCapture> captures = journal_.Captures();
-  const std::map<std::string, std::string> done = journal_.DoneSteps();
+  const std::vector<JournalCapture>& captures = model_.captures();
+  const std::map<std::string, std::string>& done = model_.done_steps();
   for (const JournalCapture& c : captures) {
     next_capture_id_ = std::max(next_capture_id_, c.capture.id + 1);
     if (c.capture.kind == CaptureKind::kStatic)
@@ -114,16 +69,16 @@ void WizardEngine::ReadJournal() {
   for (const ProcedureStep& s : procedure_.steps)
     if (s.kind == StepKind::kDiagnosis)
       if (auto d = done.find(s.id); d != done.end()) adopt_effects_ = d->second.rfind("adopted", 0) == 0;
-  resumed_ = !captures.empty() || !done.empty() || !journal_.Inputs().empty();
+  resumed_ = !captures.empty() || !done.empty() || !model_.inputs().empty();
   if (!resumed_) return;
   resume_lines_.push_back(fmt::format("Resuming session {}: {} captures and {} steps already recorded.",
                                options_.session_name, captures.size(), done.size()));
   for (const JournalCapture& c : captures)
     resume_lines_.push_back(fmt::format("  done: {} (capture {}, {})", c.step_id, c.capture.id, c.capture.label));
   for (const auto& [id, outcome] : done) resume_lines_.push_back(fmt::format("  done: {} ({})", id, outcome));
-  for (const std::string& id : journal_.RecordSteps()) {
+  for (const std::string& id : model_.RecordSteps()) {
     if (done.count(id) != 0) continue;
-    const RecordSummary r = journal_.RecordSummaryOf(id);
+    const RecordSummary r = model_.RecordSummaryOf(id);
     resume_lines_.push_back(fmt::format("  partly recorded: {} ({} recorded over {}, {} chunks)", id,
                                         FormatLongDuration(r.recorded_s()),
                                         FormatLongDuration(r.span_s()), r.num_chunks));
@@ -180,7 +135,7 @@ void WizardEngine::EnterPlace() {
 
 void WizardEngine::FinishStep(const std::string& outcome) {
   progressed_ = true;
-  journal_.RecordStepDone(step().id, outcome);
+  model_.RecordStepDone(step().id, outcome);
   AdvanceFrom(current_ + 1);
 }
 
@@ -212,8 +167,8 @@ void WizardEngine::GoBack() {
     EnterPlace();
     return;
   }
-  const std::vector<JournalCapture> captures = journal_.Captures();
-  const std::map<std::string, std::string> done = journal_.DoneSteps();
+  const std::vector<JournalCapture>& captures = model_.captures();
+  const std::map<std::string, std::string>& done = model_.done_steps();
   for (int i = current_ - 1; i >= 0; --i) {
     const ProcedureStep& s = procedure_.steps[static_cast<size_t>(i)];
     const bool has_capture = std::any_of(captures.begin(), captures.end(),
@@ -309,7 +264,7 @@ void WizardEngine::BeginCapture() {
 // ---- records --------------------------------------------------------------------------------
 
 bool WizardEngine::RecordResumable() const {
-  return journal_.RecordSummaryOf(step().id).num_chunks > 0;
+  return model_.RecordSummaryOf(step().id).num_chunks > 0;
 }
 
 void WizardEngine::StartRecord() {
@@ -321,7 +276,7 @@ void WizardEngine::StartRecord() {
   o.chunk_s = s.chunk_s;
   o.noise_std_counts = noise_floor_->std_counts;
   o.wall_now_s = options_.wall_now_s;
-  record_ = std::make_unique<RecordStream>(journal_, s.id, o);
+  record_ = std::make_unique<RecordStream>(model_, s.id, o);
   problem_.clear();
   hint_.clear();
   phase_ = Phase::kRecord;
@@ -384,17 +339,17 @@ void WizardEngine::OnCaptureAccepted() {
   engine_.reset();
   const ProcedureStep& s = step();
   if (s.kind == StepKind::kLevel) {
-    OnLevelCapture(ComputeStats(capture.samples).mean_counts);
+    OnLevelCapture(capture.stats().mean_counts);
     return;
   }
   if (s.kind == StepKind::kTurntable) {
     capture.up_axis = s.up_axis;
-    journal_.RecordInput(s.id, "radius_m", fmt::format("{}", radius_m_));
-    journal_.RecordInput(s.id, "rpm", fmt::format("{}", rpm_));
+    model_.RecordInput(s.id, "radius_m", fmt::format("{}", radius_m_));
+    model_.RecordInput(s.id, "rpm", fmt::format("{}", rpm_));
   }
   // Recorded before moving on: a crash after this line loses nothing.
   progressed_ = true;
-  journal_.RecordCapture(s.id, capture);
+  model_.RecordCapture(s.id, capture);
   if (capture.kind == CaptureKind::kStatic)
     captured_.push_back({capture.id, capture.label, MeasuredUp(capture, procedure_.nominal)});
   next_capture_id_ = capture.id + 1;
@@ -419,121 +374,28 @@ void WizardEngine::OnLevelCapture(const Eigen::Vector3d& mean_counts) {
 
 // ---- fit, diagnosis, report -----------------------------------------------------------------
 
-std::vector<Capture> WizardEngine::JournalCaptures() const {
-  std::vector<Capture> out;
-  for (const JournalCapture& c : journal_.Captures()) out.push_back(c.capture);
-  ScreenCaptures(out, [&] {
-    ScreeningOptions o;
-    o.adc_range = procedure_.adc_range;
-    return o;
-  }());
-  return out;
+// The steps that compute (calibration_steps.h); the engine only shows what they say.
+void WizardEngine::Show(StepOutcome outcome) {
+  phase_ = Phase::kResult;
+  lines_ = std::move(outcome.lines);
+  problem_ = std::move(outcome.problem);
+  hint_ = std::move(outcome.hint);
 }
 
-void WizardEngine::RunFit() {
-  phase_ = Phase::kResult;
-  FitOptions o;
-  o.gravity = options_.gravity;
-  const std::vector<Capture> captures = JournalCaptures();
-  fit_ = FitCalibration(captures, o);
-  diagnosis_.reset();
-  lines_.clear();
-  if (!fit_.IsUsable()) {
-    problem_ = "the fit is not usable: " + fit_.message;
-    hint_ = "r runs the fit again; b goes back to a skipped step to capture it";
-    return;
-  }
-  const Calibration cal = MakeCalibration(fit_, options_.gravity, captures, options_.session_name);
-  lines_ = SplitLines(FormatFitReport(cal, fit_));
-}
+void WizardEngine::RunFit() { Show(steps_.Fit()); }
 
-void WizardEngine::RunDiagnosis() {
-  phase_ = Phase::kResult;
-  std::vector<FitCapture> used;
-  for (const Capture& c : JournalCaptures())
-    if (c.used()) used.push_back(MakeFitCapture(c));
-  FitOptions o;
-  o.gravity = options_.gravity;
-  diagnosis_ = Diagnose(used, o, DiagnosisOptions());
-  lines_ = SplitLines(FormatDiagnosis(*diagnosis_));
-  if (!diagnosis_->base.IsUsable()) {
-    problem_ = "the fit is not usable: " + diagnosis_->base.message;
-    hint_ = "s skips the diagnosis (the report needs a usable fit)";
-  }
-}
+void WizardEngine::RunDiagnosis() { Show(steps_.Diagnosis()); }
 
 void WizardEngine::RunReport() {
-  phase_ = Phase::kResult;
-  if (!diagnosis_) RunDiagnosis();
-  lines_.clear();
-  const DiagnosisReport& d = *diagnosis_;
-  const bool adopt = adopt_effects_ && !d.adopted.empty();
-  const FitSummary& summary = adopt ? d.final_fit : d.base;
-  if (!summary.IsUsable()) {
-    problem_ = "no calibration: the fit is not usable: " + summary.message;
-    hint_ = "q leaves; the captures are kept in the session";
-    return;
-  }
-  problem_.clear();
-  hint_.clear();
-  Calibration cal = MakeCalibration(summary, options_.gravity, JournalCaptures(), options_.session_name);
-  if (adopt) cal.effects = EffectsToJson(d);
-  journal_.RecordResult(CalibrationToJson(cal));
-  lines_ = SplitLines(FormatFitReport(cal, summary));
-  lines_.push_back(adopt ? "Effects adopted: " + fmt::format("{}", fmt::join(d.adopted_names(), ", "))
-                         : "Model: the nine-parameter base model");
-  if (options_.report_beside.empty()) return;
-  try {
-    ReportMeta meta;
-    meta.session_path = options_.report_beside;
-    meta.procedure = procedure_.title;
-    meta.source = source_.Describe();
-    meta.date_utc = detail::UtcNowIso8601();
-    for (const std::string& path : WriteSessionReports(journal_, meta, procedure_.limits, options_.report_beside))
-      lines_.push_back("Report written to " + path);
-  } catch (const Error& e) {
-    lines_.push_back(std::string("The report was not written: ") + e.what());
-  }
+  ReportMeta meta;
+  meta.session_path = options_.report_beside;
+  meta.procedure = procedure_.title;
+  meta.source = source_.Describe();
+  meta.date_utc = UtcNowIso8601();
+  Show(steps_.Report(adopt_effects_, meta));
 }
 
-// The analysis of a record step: read back from the journal one chunk at a time (a 12-hour
-// record does not fit the view), analysed, and shown.
-void WizardEngine::RunAnalysis() {
-  phase_ = Phase::kResult;
-  lines_.clear();
-  const ProcedureStep& s = step();
-  if (journal_.RecordSummaryOf(s.record_step).num_samples == 0) {
-    problem_ = fmt::format("nothing to analyse: the record step '{}' holds no samples (skipped?)",
-                           s.record_step);
-    hint_ = "s skips the analysis; b goes back to the record";
-    return;
-  }
-  try {
-    if (s.method == "allan") {
-      const RecordAnalysis a = AnalyzeJournalRecord(journal_, s.record_step, RecordAnalysisOptions());
-      const nlohmann::json j = RecordAnalysisToJson(a, options_.session_name + ":" + s.record_step,
-                                                    RecordAnalysisOptions().drift.window_s);
-      lines_ = SplitLines(FormatAllanText(j));
-      analysis_outcome_ = AllanOutcome(j);
-      if (!options_.report_beside.empty()) {
-        const std::string path = FileBesideSession(options_.report_beside, ".allan.json");
-        WriteAllanFile(path, j);
-        lines_.push_back(fmt::format("Allan analysis written to {} (accelcal report --allan, "
-                                     "accelcal export-cal --to kalibr --allan).", path));
-      }
-    } else {
-      analysis::NoiseRecord record{s.record_step, "", ReadRecord(journal_, s.record_step).samples};
-      const analysis::NoiseReport n = analysis::AnalyzeNoise({record});
-      lines_ = SplitLines(FormatNoiseText(n));
-      lines_.push_back("The day-to-day repeatability of the bias takes three such records on "
-                       "different days: accelcal noise DEVICE.");
-      analysis_outcome_ = NoiseOutcome(n);
-    }
-  } catch (const Error& e) {
-    problem_ = std::string("the analysis failed: ") + e.what();
-    hint_ = "s skips the analysis; the record is kept in the session";
-  }
-}
+void WizardEngine::RunAnalysis() { Show(steps_.Analysis(step(), &analysis_outcome_)); }
 
 // ---- polling --------------------------------------------------------------------------------
 
@@ -602,12 +464,12 @@ void WizardEngine::HandleWelcome(const Intent& intent) {
   const WelcomeField field = Welcome(welcome_field_);
   std::string value = intent.kind == IntentKind::kSubmitText ? intent.text : "";
   if (value.empty()) value = field.default_value;
-  journal_.RecordInput(kWelcomeId, field.key, value);
+  model_.RecordInput(kWelcomeId, field.key, value);
   if (welcome_field_ + 1 < kWelcomeFields) {
     ++welcome_field_;
     return;
   }
-  journal_.RecordStepDone(kWelcomeId, "ok");
+  model_.RecordStepDone(kWelcomeId, "ok");
   AdvanceFrom(0);
 }
 
@@ -653,13 +515,15 @@ void WizardEngine::HandleResult(const Intent& intent) {
   if (intent.kind == IntentKind::kSkip) return SkipStep();
   if (intent.kind == IntentKind::kRetry) return EnterStep(current_);
   const bool accept = intent.kind == IntentKind::kAccept || intent.kind == IntentKind::kSubmitText;
+  const CalibrationOutcome* outcome = steps_.outcome();
   if (kind == StepKind::kFit) {
-    if (accept && fit_.IsUsable()) FinishStep("converged: " + fit_.BriefReport());
+    if (accept && outcome != nullptr && outcome->usable())
+      FinishStep("converged: " + outcome->diagnosis.base.BriefReport());
     return;
   }
   if (kind == StepKind::kDiagnosis) {
-    if (!diagnosis_->base.IsUsable()) return;
-    const std::vector<std::string> names = diagnosis_->adopted_names();
+    if (outcome == nullptr || !outcome->usable()) return;
+    const std::vector<std::string> names = outcome->diagnosis.adopted_names();
     if (names.empty() && accept) return FinishStep("none: the base model explains the data");
     if (names.empty()) return;
     if (accept) {

@@ -28,12 +28,13 @@
 #include <vector>
 
 #include "accelcal/acquire/capture_engine/capture_engine.h"
-#include "accelcal/calibration/diagnosis/diagnosis.h"
-#include "accelcal/calibration/fit/fit_summary.h"
 #include "accelcal/base/gravity.h"
 #include "accelcal/acquire/source/sample_source.h"
 #include "accelcal/session/procedure.h"
+#include "accelcal/app/wizard/calibration_steps.h"
 #include "accelcal/app/wizard/record_stream.h"
+#include "accelcal/app/wizard/session_model.h"
+#include "accelcal/app/wizard/wizard_outputs.h"
 #include "accelcal/session/session_journal.h"
 #include "accelcal/app/wizard/wizard_driver.h"
 
@@ -123,11 +124,11 @@ class WizardEngine final : public WizardDriver {
   void HandleTurntableInput(const Intent& intent);
   void HandleResult(const Intent& intent);
   void HandleCaptureIntent(const Intent& intent);
+  void Show(StepOutcome outcome);
   void RunFit();
   void RunDiagnosis();
   void RunReport();
   void RunAnalysis();
-  std::vector<Capture> JournalCaptures() const;
   void UpdateLive(const std::vector<Sample>& chunk);
   void SetStepView(WizardView& v) const;
   void SetPhaseView(WizardView& v) const;
@@ -144,8 +145,10 @@ class WizardEngine final : public WizardDriver {
 
   Procedure procedure_;
   SampleSource& source_;    // borrowed: outlives the engine
-  SessionJournal& journal_; // borrowed: outlives the engine
+  SessionModel model_;      // the session in memory; writes go through to the borrowed journal
   WizardOptions options_;
+  std::unique_ptr<WizardOutputs> outputs_;  // files beside the session; null: none written
+  CalibrationSteps steps_;  // fit, diagnosis, report, analysis
 
   int current_ = -1;  // -1: the welcome; steps.size(): done
   Phase phase_ = Phase::kWelcome;
@@ -175,8 +178,6 @@ class WizardEngine final : public WizardDriver {
   double radius_m_ = kNaN;
   double rpm_ = kNaN;
 
-  FitSummary fit_;
-  std::optional<DiagnosisReport> diagnosis_;
   bool adopt_effects_ = true;
   std::string analysis_outcome_;  // the analysis step's figures, for the journal
 

@@ -119,7 +119,7 @@ void WizardEngine::SetPlaceView(WizardView& v) const {
              : step().kind == StepKind::kLevel   ? WizardScreen::kLevel
                                                  : WizardScreen::kPlacePose;
   if (step().kind == StepKind::kRecord && RecordResumable()) {
-    const RecordSummary r = journal_.RecordSummaryOf(step().id);
+    const RecordSummary r = model_.RecordSummaryOf(step().id);
     v.prompt = fmt::format("Resuming the {}: {} recorded of {}. Leave the sensor as it is and "
                            "press Enter to go on recording (the gap is recorded).",
                            step().title, FormatLongDuration(r.recorded_s()),
@@ -182,9 +182,10 @@ void WizardEngine::SetResultView(WizardView& v) const {
     v.keys = WithNavigation({{"r", "retry"}});
     return;
   }
-  if (kind == StepKind::kDiagnosis && diagnosis_ && !diagnosis_->adopted.empty()) {
+  const CalibrationOutcome* outcome = steps_.outcome();
+  if (kind == StepKind::kDiagnosis && outcome != nullptr && !outcome->diagnosis.adopted.empty()) {
     v.prompt = fmt::format("Adopt {} into the calibration? Enter adopts, n keeps the base model.",
-                           fmt::join(diagnosis_->adopted_names(), ", "));
+                           fmt::join(outcome->diagnosis.adopted_names(), ", "));
     v.keys = WithNavigation({{"Enter", "adopt"}, {"n", "keep the base model"}});
     return;
   }

@@ -250,6 +250,20 @@ int RunRound(const std::vector<const Effect*>& adopted, const FitSummary& curren
   return best;
 }
 
+// Each adopted effect's parameters as the final fit has them (an effect adopted in a later round
+// moves the earlier ones' parameters: the round that adopted one saw a different model).
+void TakeParametersFromFinalFit(const std::vector<const Effect*>& adopted, DiagnosisReport* report) {
+  int offset = kNumBaseParameters;
+  for (size_t e = 0; e < adopted.size(); ++e) {
+    AdoptedEffect& a = report->adopted[e];
+    for (int i = 0; i < adopted[e]->NumParameters(); ++i) {
+      a.parameters[static_cast<size_t>(i)] = report->final_fit.parameters(offset + i);
+      a.uncertainty[static_cast<size_t>(i)] = report->final_fit.uncertainty(offset + i);
+    }
+    offset += adopted[e]->NumParameters();
+  }
+}
+
 }  // namespace
 
 std::string DiagnosisOptions::Validate() const {
@@ -275,6 +289,7 @@ DiagnosisReport Diagnose(const std::vector<FitCapture>& captures, const FitOptio
     return report;
   }
   report.noise_rms_mps2 = NoiseRms(report.base);
+  report.stages.push_back(report.base);
   const EffectContext ctx = MakeEffectContext(captures, fit_options.gravity.gravity_mps2);
   report.context = ctx;
   std::vector<const Effect*> adopted;
@@ -303,7 +318,9 @@ DiagnosisReport Diagnose(const std::vector<FitCapture>& captures, const FitOptio
                                    report.final_fit, captures));
     report.adopted.back().evidence += RunnersUp(trials, best);
     report.final_fit = trials[best].fit;
+    report.stages.push_back(report.final_fit);
   }
+  TakeParametersFromFinalFit(adopted, &report);
   const ResidualStats last = StatsOf(report.final_fit);
   report.conclusion =
       report.adopted.empty()
@@ -317,32 +334,6 @@ DiagnosisReport Diagnose(const std::vector<FitCapture>& captures, const FitOptio
                         report.consistent ? "the residuals are now what noise explains"
                                           : "the residuals still exceed the noise");
   return report;
-}
-
-nlohmann::json EffectsToJson(const DiagnosisReport& report) {
-  nlohmann::json list = nlohmann::json::array();
-  for (const AdoptedEffect& a : report.adopted) {
-    nlohmann::json parameters = nlohmann::json::object(), uncertainty = nlohmann::json::object(),
-                   units = nlohmann::json::object();
-    for (size_t i = 0; i < a.parameters.size(); ++i) {
-      parameters[a.parameter_names[i]] = a.parameters[i];
-      uncertainty[a.parameter_names[i]] = a.uncertainty[i];
-      units[a.parameter_names[i]] = a.parameter_units[i];
-    }
-    const Effect* effect = FindEffect(a.name);
-    list.push_back({{"name", a.name},
-                    {"parameters", parameters},
-                    {"uncertainty", uncertainty},
-                    {"units", units},
-                    {"rms_before_mps2", a.before.rms_mps2},
-                    {"rms_after_mps2", a.after.rms_mps2},
-                    {"chi2_per_dof_before", a.before.Chi2PerDof()},
-                    {"chi2_per_dof_after", a.after.Chi2PerDof()},
-                    {"reference", {{"temp_c", report.context.temp_ref_c}, {"t_s", report.context.t_ref_s}}},
-                    {"corrects_readings", effect != nullptr && effect->CorrectsReadings()},
-                    {"evidence", a.evidence}});
-  }
-  return list;
 }
 
 std::string FormatDiagnosis(const DiagnosisReport& report) {

@@ -21,8 +21,6 @@
 #include <string>
 #include <vector>
 
-#include <nlohmann/json.hpp>
-
 #include "accelcal/calibration/diagnosis/effect.h"
 #include "accelcal/calibration/fit/calibration_fit.h"
 #include "accelcal/calibration/fit/fit_summary.h"
@@ -59,6 +57,8 @@ struct CandidateScore {
 
 struct AdoptedEffect {
   std::string name;
+  // Parameters and their 1-sigma from the final fit (the one with every adopted effect), not from
+  // the round that adopted this one: an effect adopted later can move them.
   std::vector<std::string> parameter_names;
   std::vector<std::string> parameter_units;
   std::vector<double> parameters;
@@ -77,7 +77,11 @@ struct DiagnosisRound {
 struct DiagnosisReport {
   FitSummary base;                       // the seed's model alone
   FitSummary final_fit;                  // with the adopted effects (== base when none)
-  std::vector<AdoptedEffect> adopted;    // in the order adopted
+  // In the order adopted; each one's parameters and 1-sigma are those of final_fit.
+  std::vector<AdoptedEffect> adopted;
+  // The fit of each stage: the base model, then after each adopted effect (stages.back() ==
+  // final_fit); empty when the base fit is not usable.
+  std::vector<FitSummary> stages;
   std::vector<DiagnosisRound> rounds;
   EffectContext context;                 // reference temperature and time of the effects
   double noise_rms_mps2 = 0.0;           // RMS of the captures' own sigma_i: what noise explains
@@ -90,11 +94,6 @@ struct DiagnosisReport {
 // not usable, the report's base says why and nothing else is done.
 DiagnosisReport Diagnose(const std::vector<FitCapture>& captures, const FitOptions& fit_options,
                          const DiagnosisOptions& options);
-
-// The calibration file's "effects" list (README): name, parameters, uncertainty, units,
-// rms_before_mps2, rms_after_mps2, reference conditions, evidence, and whether `accelcal apply`
-// corrects readings with it.
-nlohmann::json EffectsToJson(const DiagnosisReport& report);
 
 // Several lines: before/after per adopted effect, parameters, evidence, candidates of each round.
 std::string FormatDiagnosis(const DiagnosisReport& report);

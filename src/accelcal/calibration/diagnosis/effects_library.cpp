@@ -3,9 +3,9 @@
 #include <array>
 #include <cmath>
 
-#include <Eigen/SVD>
 #include <fmt/core.h>
 
+#include "accelcal/base/linear_algebra.h"
 #include "accelcal/calibration/diagnosis/effect.h"
 
 namespace accelcal {
@@ -64,7 +64,7 @@ bool SeesThreeLevels(const std::vector<FitCapture>& captures, int j) {
   Eigen::MatrixXd design(xs.size(), 3);
   for (size_t i = 0; i < xs.size(); ++i) design.row(i) << 1.0, xs[i], xs[i] * xs[i];
   for (int k = 0; k < 3; ++k) design.col(k).normalize();
-  const Eigen::Vector3d sv = Eigen::JacobiSVD<Eigen::MatrixXd>(design).singularValues();
+  const Eigen::Vector3d sv = SingularValues(design);
   return sv(2) > 0.05 * sv(0);
 }
 

@@ -2,9 +2,10 @@
 
 #include <cmath>
 
-#include <Eigen/Dense>
+#include <Eigen/Core>
 #include <fmt/core.h>
 
+#include "accelcal/base/linear_algebra.h"
 #include "accelcal/calibration/fit/initial_guess.h"
 #include "accelcal/calibration/fit/residual_model.h"
 
@@ -41,13 +42,13 @@ std::string CheckSeparable(const ResidualModel& model, const std::vector<FitCapt
     if (!(norm > 0.0)) return fmt::format("no capture is sensitive to {}", model.ParameterLabel(j));
     jac.col(j) /= norm;
   }
-  Eigen::JacobiSVD<Eigen::MatrixXd> svd(jac, Eigen::ComputeFullV);
-  const Eigen::VectorXd sv = svd.singularValues();
+  const SingularValueDecomposition svd = DecomposeSvd(jac);
+  const Eigen::VectorXd& sv = svd.values;
   // Well-designed sets (six faces, three tilted poses, turntable runs) sit near 0.2; a set whose
   // tilted poses repeat an axis-sign pattern falls below 1e-3: treat that as not determinable.
   constexpr double kRankTolerance = 1e-3;
   if (sv(np - 1) > kRankTolerance * sv(0)) return {};
-  const Eigen::VectorXd null = svd.matrixV().col(np - 1);
+  const Eigen::VectorXd null = svd.v.col(np - 1);
   std::string names;
   for (int j = 0; j < np; ++j)
     if (std::fabs(null(j)) > 0.1) names += (names.empty() ? "" : ", ") + model.ParameterLabel(j);
@@ -77,18 +78,19 @@ std::string CheckDeterminable(const std::vector<FitCapture>& captures, const Fit
   for (const FitCapture& c : captures) centre += c.mean_counts / n;
   Eigen::MatrixXd centred(n, 3);
   for (int i = 0; i < n; ++i) centred.row(i) = (captures[i].mean_counts - centre).transpose();
-  Eigen::JacobiSVD<Eigen::MatrixXd> svd(centred, Eigen::ComputeThinV);
-  const Eigen::Vector3d sv = svd.singularValues();
+  const SingularValueDecomposition svd = DecomposeSvd(centred);
+  Eigen::Vector3d sv = Eigen::Vector3d::Zero();  // fewer than 3 captures: the missing ones are 0
+  sv.head(svd.values.size()) = svd.values;
   if (!(sv(0) > 0.0)) return "all captures have the same mean reading: the sensor never moved";
   if (sv(1) / sv(0) < options.min_planarity_ratio)
     return fmt::format("all captures lie along one line of readings (direction {} in sensor axes): "
                        "the nine parameters cannot be determined; add poses along other axes",
-                       AxisDirection(svd.matrixV().col(0)));
+                       AxisDirection(svd.v.col(0)));
   if (sv(2) / sv(0) < options.min_planarity_ratio)
     return fmt::format("all captures lie near one plane of readings (its normal is {} in sensor "
                        "axes, spread ratio {:.4f}): the nine parameters cannot be determined; add "
                        "poses with a component along that normal",
-                       AxisDirection(svd.matrixV().col(2)), sv(2) / sv(0));
+                       AxisDirection(svd.v.col(2)), sv(2) / sv(0));
   return {};
 }
 

@@ -3,7 +3,7 @@
 namespace accelcal {
 
 FitCapture MakeFitCapture(const Capture& capture) {
-  const CaptureStats stats = ComputeStats(capture.samples);
+  const CaptureStats& stats = capture.stats();
   FitCapture c;
   c.id = capture.id;
   c.kind = capture.kind;
@@ -14,7 +14,7 @@ FitCapture MakeFitCapture(const Capture& capture) {
   c.mean_counts = stats.mean_counts;
   c.mean_t_s = stats.mean_t_s;
   c.mean_temp_c = stats.mean_temp_c;
-  Eigen::Matrix3d cov = stats.n >= 2 ? Eigen::Matrix3d(stats.cov_counts2 / double(stats.n - 1))
+  Eigen::Matrix3d cov = stats.n >= 2 ? stats.Covariance()
                                      : Eigen::Matrix3d::Zero();
   constexpr double kQuantizationVarianceCounts2 = 1.0 / 12.0;
   for (int i = 0; i < 3; ++i) cov(i, i) = std::max(cov(i, i), kQuantizationVarianceCounts2);

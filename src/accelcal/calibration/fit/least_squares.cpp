@@ -1,9 +1,11 @@
 #include "accelcal/calibration/fit/least_squares.h"
+#include "accelcal/base/linear_algebra.h"
 
 #include <cmath>
 #include <exception>
 
-#include <Eigen/Dense>
+#include <Eigen/Cholesky>
+#include <Eigen/QR>
 #include <fmt/core.h>
 #include <nlopt.hpp>
 
@@ -178,7 +180,7 @@ void FillStatistics(const Problem& pr, const Eigen::VectorXd& p, const LeastSqua
 
   Eigen::MatrixXd equilibrated = jac;
   for (int j = 0; j < np; ++j) equilibrated.col(j).normalize();
-  const Eigen::VectorXd sv = Eigen::JacobiSVD<Eigen::MatrixXd>(equilibrated).singularValues();
+  const Eigen::VectorXd sv = SingularValues(equilibrated);
   s->condition_number = sv(0) / sv(np - 1);
 
   for (int a = 0; a < np; ++a) {

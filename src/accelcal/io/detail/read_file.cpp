@@ -39,8 +39,9 @@ std::string ReadWholeFile(const std::string& path) {
   if (S_ISDIR(info.st_mode)) throw Error(Failure("cannot open", path, EISDIR));
 
   std::string bytes;
-  // The size is a hint only (pipes and /proc files report 0): read until end of file.
-  bytes.resize(info.st_size > 0 ? static_cast<size_t>(info.st_size) : 4096);
+  // The size is a hint only (pipes and /proc files report 0): read until end of file. One byte
+  // more than the size, so the read that finds the end fits without doubling the buffer.
+  bytes.resize(info.st_size > 0 ? static_cast<size_t>(info.st_size) + 1 : 4096);
   size_t used = 0;
   for (;;) {
     if (used == bytes.size()) bytes.resize(bytes.size() * 2);

@@ -20,7 +20,7 @@ std::string Triple(const Eigen::Vector3d& v) { return Triple(v.x(), v.y(), v.z()
 
 Eigen::Vector3d EffectTriple(const Calibration& cal, const std::string& name, const std::string& prefix) {
   Eigen::Vector3d v;
-  for (int j = 0; j < 3; ++j) v(j) = EffectParameter(cal, name, fmt::format("{}_{}", prefix, kAxes[j]));
+  for (int j = 0; j < 3; ++j) v(j) = EffectParameterValue(cal, name, fmt::format("{}_{}", prefix, kAxes[j]));
   return v;
 }
 
@@ -94,10 +94,9 @@ ExportResult ExportCHeader(const Calibration& cal, const ExportContext& context)
                     Triple(m.scale_counts_per_mps2), Triple(EffectTriple(cal, "quadratic_nonlinearity", "q"))));
   }
   if (temperature) {
-    const std::string ref_effect = Has(effects, "temperature_bias") ? "temperature_bias" : "temperature_scale";
     put(fmt::format("/* temperature effects: reference temperature, degC */\n"
                     "static const ACCELCAL_REAL accelcal_temp_ref_c = {};\n",
-                    ExportNumber(EffectReferenceTempC(cal, ref_effect))));
+                    ExportNumber(EffectReferenceTempC(cal))));
     if (Has(effects, "temperature_bias"))
       put(fmt::format("static const ACCELCAL_REAL accelcal_tc_bias_counts_per_degc[3] = {};\n",
                       Triple(EffectTriple(cal, "temperature_bias", "tc_bias"))));

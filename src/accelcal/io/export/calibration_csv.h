@@ -14,7 +14,4 @@ namespace accelcal {
 
 ExportResult ExportCalibrationCsv(const Calibration& cal);
 
-// One CSV field, quoted as RFC 4180 requires (only when needed).
-std::string CsvQuote(const std::string& field);
-
 }  // namespace accelcal

@@ -3,11 +3,11 @@
 #include <cmath>
 
 #include <Eigen/LU>
-#include <Eigen/SVD>
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
 #include "accelcal/base/error.h"
+#include "accelcal/base/linear_algebra.h"
 
 namespace accelcal {
 
@@ -24,7 +24,7 @@ std::string DriverScaleOptions::Validate() const {
 
 double MisalignmentLossMaxMps2(const SensorModel& model, double magnitude_mps2) {
   const Eigen::Matrix3d error = model.Misalignment().inverse() - Eigen::Matrix3d::Identity();
-  return magnitude_mps2 * Eigen::JacobiSVD<Eigen::Matrix3d>(error).singularValues()(0);
+  return magnitude_mps2 * SingularValues(error)(0);
 }
 
 DiagonalCorrection ToDiagonalCorrection(const Calibration& cal, const DriverScaleOptions& options) {

@@ -11,23 +11,12 @@
 namespace accelcal {
 namespace {
 
-std::string NameOf(const nlohmann::json& e) {
-  return e.contains("name") && e["name"].is_string() ? e["name"].get<std::string>() : e.dump();
-}
-
-const Effect& KnownEffect(const nlohmann::json& e) {
-  const std::string name = NameOf(e);
-  const Effect* effect = FindEffect(name);
+const Effect& KnownEffect(const CalibrationEffect& e) {
+  const Effect* effect = FindEffect(e.name);
   if (effect == nullptr)
     throw Error(fmt::format("the calibration lists the effect '{}', which this version of "
-                            "accelcal does not know", name));
+                            "accelcal does not know", e.name));
   return *effect;
-}
-
-const nlohmann::json& AdoptedEffect(const Calibration& cal, const std::string& name) {
-  for (const nlohmann::json& e : cal.effects)
-    if (NameOf(e) == name) return e;
-  throw Error(fmt::format("the calibration has no effect '{}'", name));
 }
 
 }  // namespace
@@ -38,7 +27,7 @@ Eigen::Matrix3d CorrectionMatrix(const SensorModel& model) {
 
 std::vector<std::string> SensorEffectNames(const Calibration& cal) {
   std::vector<const Effect*> effects;
-  for (const nlohmann::json& e : cal.effects) {
+  for (const CalibrationEffect& e : cal.effects) {
     const Effect& effect = KnownEffect(e);
     if (effect.CorrectsReadings()) effects.push_back(&effect);
   }
@@ -49,7 +38,7 @@ std::vector<std::string> SensorEffectNames(const Calibration& cal) {
 
 std::vector<std::string> SessionEffectNotes(const Calibration& cal) {
   std::vector<std::string> notes;
-  for (const nlohmann::json& e : cal.effects) {
+  for (const CalibrationEffect& e : cal.effects) {
     const Effect& effect = KnownEffect(e);
     if (!effect.CorrectsReadings())
       notes.push_back(fmt::format("effect {} is not exported: an error of the calibration session "
@@ -59,20 +48,19 @@ std::vector<std::string> SessionEffectNotes(const Calibration& cal) {
   return notes;
 }
 
-double EffectParameter(const Calibration& cal, const std::string& name, const std::string& key) {
-  const nlohmann::json& e = AdoptedEffect(cal, name);
-  if (!e.contains("parameters") || !e["parameters"].contains(key) ||
-      !e["parameters"][key].is_number() || !std::isfinite(e["parameters"][key].get<double>()))
+double EffectParameterValue(const Calibration& cal, const std::string& name, const std::string& key) {
+  const CalibrationEffect* e = cal.FindEffect(name);
+  if (e == nullptr) throw Error(fmt::format("the calibration has no effect '{}'", name));
+  const EffectParameter* p = e->Find(key);
+  if (p == nullptr || !std::isfinite(p->value))
     throw Error(fmt::format("effect '{}': parameter '{}' is missing or not a finite number", name, key));
-  return e["parameters"][key].get<double>();
+  return p->value;
 }
 
-double EffectReferenceTempC(const Calibration& cal, const std::string& name) {
-  const nlohmann::json& e = AdoptedEffect(cal, name);
-  if (!e.contains("reference") || !e["reference"].contains("temp_c") ||
-      !e["reference"]["temp_c"].is_number() || !std::isfinite(e["reference"]["temp_c"].get<double>()))
-    throw Error(fmt::format("effect '{}': reference.temp_c is missing", name));
-  return e["reference"]["temp_c"].get<double>();
+double EffectReferenceTempC(const Calibration& cal) {
+  if (!std::isfinite(cal.reference.temp_c))
+    throw Error("the calibration's temperature effects have no reference temperature (reference.temp_c)");
+  return cal.reference.temp_c;
 }
 
 std::string ExportNumber(double value) { return fmt::format("{}", value); }

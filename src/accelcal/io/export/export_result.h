@@ -13,7 +13,7 @@
 
 #include <Eigen/Core>
 
-#include "accelcal/io/calibration_file.h"
+#include "accelcal/calibration/calibration.h"
 
 namespace accelcal {
 
@@ -42,9 +42,9 @@ std::vector<std::string> SensorEffectNames(const Calibration& cal);
 // not a property of the sensor's readings, so no export carries it (as in `accelcal apply`).
 std::vector<std::string> SessionEffectNotes(const Calibration& cal);
 // Parameter `key` of adopted effect `name` (throws accelcal::Error when missing or not finite).
-double EffectParameter(const Calibration& cal, const std::string& name, const std::string& key);
-// reference.temp_c of adopted effect `name`, degC (throws when missing).
-double EffectReferenceTempC(const Calibration& cal, const std::string& name);
+double EffectParameterValue(const Calibration& cal, const std::string& name, const std::string& key);
+// The effects' reference temperature, degC (throws when the calibration lacks it).
+double EffectReferenceTempC(const Calibration& cal);
 
 // A number as the shortest text that reads back to the same double ("0.1", "2048.25", "1e-05").
 std::string ExportNumber(double value);

@@ -7,6 +7,8 @@
 #include <fmt/format.h>
 
 #include "accelcal/base/error.h"
+#include "accelcal/io/detail/json_forms.h"
+#include "accelcal/io/detail/json_values.h"
 
 namespace accelcal {
 namespace {
@@ -117,6 +119,11 @@ AllanNoiseFigures AllanNoiseForKalibr(const nlohmann::json& allan, const Calibra
   if (std::isnan(f.noise_density_mps2_per_sqrt_hz))
     throw InputError(source, 0, 0, "no axis has a noise_density");
   return f;
+}
+
+AllanNoiseFigures AllanNoiseForKalibrText(const std::string& allan_text, const Calibration& cal,
+                                          const std::string& source_name) {
+  return AllanNoiseForKalibr(detail::ParseJsonText(allan_text, source_name), cal, source_name);
 }
 
 }  // namespace accelcal

@@ -19,8 +19,6 @@
 
 #include <string>
 
-#include <nlohmann/json.hpp>
-
 #include "accelcal/io/export/export_result.h"
 
 namespace accelcal {
@@ -53,8 +51,9 @@ struct AllanNoiseFigures {
   char noise_density_axis = '?';                // which axis gave each figure
   char random_walk_axis = '?';
 };
-// Throws InputError (naming `source_name` and the field) for a malformed file.
-AllanNoiseFigures AllanNoiseForKalibr(const nlohmann::json& allan, const Calibration& cal,
-                                      const std::string& source_name);
+// `allan_text` is the file's text. Throws InputError (naming `source_name` and the field) for a
+// malformed file.
+AllanNoiseFigures AllanNoiseForKalibrText(const std::string& allan_text, const Calibration& cal,
+                                          const std::string& source_name);
 
 }  // namespace accelcal

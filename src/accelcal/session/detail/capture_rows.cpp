@@ -10,8 +10,9 @@ namespace {
 
 constexpr const char* kInsert =
     "INSERT INTO captures (step_id, capture_id, kind, label, radius_m, rpm, up_axis, "
-    "rejection_reason, n, mean_x_counts, mean_y_counts, mean_z_counts, cov_xx_counts2, "
-    "cov_xy_counts2, cov_xz_counts2, cov_yy_counts2, cov_yz_counts2, cov_zz_counts2, t_first_s, "
+    "rejection_reason, n, mean_x_counts, mean_y_counts, mean_z_counts, comoment_xx_counts2, "
+    "comoment_xy_counts2, comoment_xz_counts2, comoment_yy_counts2, comoment_yz_counts2, "
+    "comoment_zz_counts2, t_first_s, "
     "t_last_s, mean_temp_c, samples, recorded_utc) "
     "VALUES (?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?)";
 
@@ -28,7 +29,7 @@ bool StepHasCapture(SqliteDb& db, const std::string& step_id) {
 void BindStats(SqliteStatement& insert, const CaptureStats& stats) {
   insert.Bind(9, static_cast<std::int64_t>(stats.n));
   for (int i = 0; i < 3; ++i) insert.Bind(10 + i, stats.mean_counts(i));
-  const Eigen::Matrix3d& c = stats.cov_counts2;
+  const Eigen::Matrix3d& c = stats.comoment_counts2;
   insert.Bind(13, c(0, 0)).Bind(14, c(0, 1)).Bind(15, c(0, 2));
   insert.Bind(16, c(1, 1)).Bind(17, c(1, 2)).Bind(18, c(2, 2));
   insert.Bind(19, stats.t_first_s).Bind(20, stats.t_last_s).Bind(21, stats.mean_temp_c);
@@ -71,7 +72,7 @@ void InsertCaptureRow(SqliteDb& db, const std::string& step_id, const Capture& c
   }
   insert.Bind(8, capture.rejection_reason);
   // n counts every sample stored (the blob), including non-finite ones the stats skip.
-  CaptureStats stats = ComputeStats(capture.samples);
+  CaptureStats stats = capture.stats();
   stats.n = static_cast<long>(capture.samples.size());
   BindStats(insert, stats);
   insert.BindBlob(22, EncodeSamples(capture.samples)).Bind(23, recorded_utc);

@@ -3,7 +3,7 @@
 #include <fmt/core.h>
 
 #include "accelcal/base/error.h"
-#include "accelcal/session/detail/utc_time.h"
+#include "accelcal/base/utc_time.h"
 
 namespace accelcal::detail {
 namespace {
@@ -23,8 +23,8 @@ CREATE TABLE captures (
   label TEXT NOT NULL, radius_m REAL, rpm REAL, up_axis TEXT, rejection_reason TEXT NOT NULL,
   n INTEGER NOT NULL,
   mean_x_counts REAL, mean_y_counts REAL, mean_z_counts REAL,
-  cov_xx_counts2 REAL, cov_xy_counts2 REAL, cov_xz_counts2 REAL,
-  cov_yy_counts2 REAL, cov_yz_counts2 REAL, cov_zz_counts2 REAL,
+  comoment_xx_counts2 REAL, comoment_xy_counts2 REAL, comoment_xz_counts2 REAL,
+  comoment_yy_counts2 REAL, comoment_yz_counts2 REAL, comoment_zz_counts2 REAL,
   t_first_s REAL, t_last_s REAL, mean_temp_c REAL,
   samples BLOB NOT NULL, recorded_utc TEXT NOT NULL);
 CREATE TABLE inputs (step_id TEXT NOT NULL, key TEXT NOT NULL, value TEXT NOT NULL,
@@ -45,6 +45,17 @@ CREATE TABLE record_gaps (
   step_id TEXT NOT NULL, before_chunk INTEGER NOT NULL, t_start_s REAL NOT NULL,
   t_end_s REAL NOT NULL, reason TEXT NOT NULL, recorded_utc TEXT NOT NULL,
   PRIMARY KEY (step_id, before_chunk));
+)sql";
+
+// Version 3: the capture statistics' second moments are named for what they hold, the co-moment
+// sum (x - mean)(y - mean) (versions 1 and 2 called it cov_*; the values are unchanged).
+constexpr const char* kRenameComoments = R"sql(
+ALTER TABLE captures RENAME COLUMN cov_xx_counts2 TO comoment_xx_counts2;
+ALTER TABLE captures RENAME COLUMN cov_xy_counts2 TO comoment_xy_counts2;
+ALTER TABLE captures RENAME COLUMN cov_xz_counts2 TO comoment_xz_counts2;
+ALTER TABLE captures RENAME COLUMN cov_yy_counts2 TO comoment_yy_counts2;
+ALTER TABLE captures RENAME COLUMN cov_yz_counts2 TO comoment_yz_counts2;
+ALTER TABLE captures RENAME COLUMN cov_zz_counts2 TO comoment_zz_counts2;
 )sql";
 
 }  // namespace
@@ -98,6 +109,7 @@ void MigrateSessionSchema(SqliteDb& db) {
   const std::int64_t version = db.QueryInt("PRAGMA user_version");
   if (version >= kSessionSchemaVersion) return;  // rolled back: nothing was written
   if (version < 2 && !HasTable(db, "record_chunks")) db.Exec(kRecordTables);
+  if (version < 3) db.Exec(kRenameComoments);
   db.Exec(fmt::format("PRAGMA user_version = {}", kSessionSchemaVersion));
   transaction.Commit();
 }

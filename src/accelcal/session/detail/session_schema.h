@@ -5,7 +5,8 @@
 //              state ('open' | 'done')
 //   devices    serial (one row per device seen), first_seen_utc
 //   captures   seq (recording order), step_id UNIQUE, capture_id, kind, label, radius_m, rpm,
-//              up_axis, rejection_reason, n, mean_{x,y,z}_counts, cov_{xx,xy,xz,yy,yz,zz}_counts2,
+//              up_axis, rejection_reason, n, mean_{x,y,z}_counts,
+//              comoment_{xx,xy,xz,yy,yz,zz}_counts2 (sum of (x - mean)(y - mean), version 3),
 //              t_first_s, t_last_s, mean_temp_c, samples (BLOB, see sample_blob.h), recorded_utc
 //   inputs     (step_id, key) PRIMARY KEY, value, recorded_utc
 //   steps_done step_id PRIMARY KEY, outcome, recorded_utc
@@ -16,9 +17,10 @@
 //   record_gaps    (step_id, before_chunk) PRIMARY KEY, t_start_s, t_end_s, reason,
 //              recorded_utc: the hole just before chunk `before_chunk` (version 2)
 //
-// Version 1 (no record tables) is migrated by the first read-write open: the two tables are
-// created and user_version set to 2 in one transaction. A read-only open of a version-1 file
-// reads it as it is (no records).
+// An older version is migrated by the first read-write open, in one transaction: version 1 gets
+// the two record tables; versions 1 and 2 get the co-moment columns' names (they were called
+// cov_*, for values that were always the co-moment). A read-only open of an older file reads it
+// as it is (a version-1 file has no records).
 //
 // NaN (no radius, no temperature) is stored as NULL. Times are UTC ISO 8601 text.
 #pragma once
@@ -29,7 +31,7 @@
 
 namespace accelcal::detail {
 
-inline constexpr int kSessionSchemaVersion = 2;
+inline constexpr int kSessionSchemaVersion = 3;
 inline constexpr int kSessionApplicationId = 0x41434331;  // "ACC1"
 
 // Creates the tables and the session row in a new, empty database (one transaction).

@@ -1,10 +1,13 @@
-#include "accelcal/io/detail/csv_fields.h"
+#include "accelcal/io/csv_fields.h"
 
 #include <algorithm>
 
 #include "accelcal/base/text_scan.h"
 
-namespace accelcal::detail {
+namespace accelcal {
+
+using detail::IsBlank;
+using detail::TrimBlanks;
 namespace {
 
 size_t SkipBlanks(std::string_view line, size_t pos) {
@@ -55,4 +58,14 @@ CsvSplitError SplitCsvLine(std::string_view line, std::vector<CsvField>* fields)
   }
 }
 
-}  // namespace accelcal::detail
+std::string CsvQuote(std::string_view field) {
+  if (field.find_first_of(",\"\r\n") == std::string_view::npos) return std::string(field);
+  std::string quoted = "\"";
+  for (char ch : field) {
+    if (ch == '"') quoted += '"';
+    quoted += ch;
+  }
+  return quoted + '"';
+}
+
+}  // namespace accelcal

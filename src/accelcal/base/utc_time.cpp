@@ -1,11 +1,11 @@
-#include "accelcal/session/detail/utc_time.h"
+#include "accelcal/base/utc_time.h"
 
 #include <chrono>
 #include <ctime>
 
 #include <fmt/core.h>
 
-namespace accelcal::detail {
+namespace accelcal {
 namespace {
 
 std::tm UtcNow(long* millis) {
@@ -34,4 +34,4 @@ std::string UtcNowCompact() {
                      t.tm_hour, t.tm_min, t.tm_sec);
 }
 
-}  // namespace accelcal::detail
+}  // namespace accelcal

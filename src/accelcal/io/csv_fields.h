@@ -1,4 +1,5 @@
-// Splitting one line of a comma-separated file into fields (RFC 4180 quoting, one line only).
+// CSV fields (RFC 4180): splitting one line of a comma-separated file into fields (quoted fields
+// within one line), and quoting one field for writing.
 #pragma once
 
 #include <cstddef>
@@ -6,7 +7,7 @@
 #include <string_view>
 #include <vector>
 
-namespace accelcal::detail {
+namespace accelcal {
 
 struct CsvField {
   // The value: blanks around an unquoted value are trimmed; a quoted value keeps everything
@@ -30,4 +31,8 @@ struct CsvSplitError {
 // without a closing one on the same line is an "unterminated quote".
 CsvSplitError SplitCsvLine(std::string_view line, std::vector<CsvField>* fields);
 
-}  // namespace accelcal::detail
+// One CSV field for writing, quoted as RFC 4180 requires and only when needed: when it holds a
+// comma, a quote, CR or LF (quotes doubled inside).
+std::string CsvQuote(std::string_view field);
+
+}  // namespace accelcal

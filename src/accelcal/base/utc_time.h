@@ -3,11 +3,11 @@
 
 #include <string>
 
-namespace accelcal::detail {
+namespace accelcal {
 
 // Now, UTC, ISO 8601 with milliseconds: "2025-03-01T14:05:09.123Z".
 std::string UtcNowIso8601();
 // Now, UTC, for file names: "20250301T140509Z".
 std::string UtcNowCompact();
 
-}  // namespace accelcal::detail
+}  // namespace accelcal

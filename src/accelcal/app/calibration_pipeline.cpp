@@ -1,0 +1,38 @@
+#include "accelcal/app/calibration_pipeline.h"
+
+#include "accelcal/base/error.h"
+
+namespace accelcal {
+
+const FitSummary& CalibrationOutcome::Fit(bool adopt_effects) const {
+  return adopt_effects && !diagnosis.adopted.empty() ? diagnosis.final_fit : diagnosis.base;
+}
+
+Calibration CalibrationOutcome::MakeCalibration(bool adopt_effects) const {
+  Calibration cal = accelcal::MakeCalibration(diagnosis, adopt_effects, gravity, captures, source_name);
+  if (cal.diagnosis) cal.diagnosis->ran = diagnosed;
+  return cal;
+}
+
+CalibrationOutcome CalibrateCaptures(CalibrationRequest request) {
+  if (std::string e = request.screening.Validate(); !e.empty()) throw Error(e);
+  CalibrationOutcome out;
+  out.gravity = request.gravity;
+  out.source_name = request.source_name;
+  out.diagnosed = request.diagnose;
+  out.captures = std::move(request.captures);
+  ScreenCaptures(out.captures, request.screening);
+  if (request.stability) ScreenStaticStability(out.captures, *request.stability);
+
+  FitOptions fit;
+  fit.gravity = request.gravity;
+  std::vector<FitCapture> used;
+  for (const Capture& c : out.captures)
+    if (c.used()) used.push_back(MakeFitCapture(c));
+  DiagnosisOptions diagnosis = request.diagnosis;
+  if (!request.diagnose) diagnosis.max_effects = 0;
+  out.diagnosis = Diagnose(used, fit, diagnosis);
+  return out;
+}
+
+}  // namespace accelcal

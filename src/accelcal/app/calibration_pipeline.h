@@ -1,0 +1,53 @@
+// The calibration pipeline, one for every front end: the captures (a capture set, a recording's
+// static intervals, a wizard session's accepted captures) are screened (too short, NaN,
+// clipped; optionally the offline stillness check), the used ones fitted, the diagnosis run
+// (find the effect the model lacks, add it, before and after), and the calibration made from
+// the chosen model. `accelcal fit` and the wizard's fit, diagnosis and report steps all run it.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "accelcal/acquire/capture_engine/offline_stability.h"
+#include "accelcal/base/capture.h"
+#include "accelcal/base/gravity.h"
+#include "accelcal/calibration/calibration.h"
+#include "accelcal/calibration/capture_screening.h"
+#include "accelcal/calibration/diagnosis/diagnosis.h"
+#include "accelcal/calibration/fit/calibration_fit.h"
+
+namespace accelcal {
+
+struct CalibrationRequest {
+  std::vector<Capture> captures;      // all of them; screening decides which are used
+  std::string source_name;            // what they came from (the calibration's "source")
+  GravitySpec gravity;
+  ScreeningOptions screening;
+  // Capture sets read from files: judge each static capture's stillness offline (the wizard's
+  // captures were judged live by the capture engine).
+  std::optional<OfflineStabilityOptions> stability;
+  bool diagnose = true;               // false: the base model alone (no effect looked for)
+  DiagnosisOptions diagnosis;         // max_effects is set to 0 when !diagnose
+};
+
+struct CalibrationOutcome {
+  std::vector<Capture> captures;      // as screened: rejection_reason says why one is left out
+  GravitySpec gravity;
+  std::string source_name;
+  bool diagnosed = false;
+  DiagnosisReport diagnosis;          // base fit, adopted effects, final fit, stages
+
+  // The base fit is usable (there is a calibration).
+  bool usable() const { return diagnosis.base.IsUsable(); }
+  // The fit that `adopt_effects` chooses: the final one (with the adopted effects) or the base.
+  const FitSummary& Fit(bool adopt_effects) const;
+  // The calibration of that fit (usable() must be true).
+  Calibration MakeCalibration(bool adopt_effects) const;
+};
+
+// Throws accelcal::Error for invalid options; an unusable set comes back with the reason in
+// diagnosis.base.message.
+CalibrationOutcome CalibrateCaptures(CalibrationRequest request);
+
+}  // namespace accelcal

@@ -1,0 +1,21 @@
+#include "accelcal/app/report_inputs.h"
+
+#include <fmt/core.h>
+
+#include "accelcal/base/error.h"
+#include "accelcal/io/calibration_file.h"
+
+namespace accelcal {
+
+ReportInputs ReportInputsFromJournal(const SessionJournal& journal, const std::string& source_name) {
+  const std::optional<std::string> result = journal.Result();
+  if (!result) throw Error(fmt::format("session {} has no calibration yet", source_name));
+  ReportInputs in;
+  in.calibration = CalibrationFromJsonText(*result, source_name);
+  for (JournalCapture& c : journal.Captures()) in.captures.push_back(std::move(c.capture));
+  FillMetaFromInputs(journal.Inputs(), &in.meta);
+  ReadAnalysesFromResultText(*result, source_name, &in);
+  return in;
+}
+
+}  // namespace accelcal

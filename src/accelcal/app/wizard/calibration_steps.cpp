@@ -1,0 +1,162 @@
+#include "accelcal/app/wizard/calibration_steps.h"
+
+#include <sstream>
+
+#include <fmt/format.h>
+
+#include "accelcal/app/analyze_recording.h"
+#include "accelcal/analysis/noise_analysis.h"
+#include "accelcal/base/error.h"
+#include "accelcal/io/calibration_file.h"
+#include "accelcal/report/allan_text.h"
+#include "accelcal/report/fit_text.h"
+#include "accelcal/report/noise_text.h"
+
+namespace accelcal {
+namespace {
+
+std::vector<std::string> SplitLines(const std::string& text) {
+  std::vector<std::string> out;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) out.push_back(line);
+  return out;
+}
+
+std::string Figures(const RecordAnalysis& a, double AllanReadOffs::*figure) {
+  std::string out;
+  for (size_t i = 0; i < 3; ++i) {
+    const std::optional<AllanReadOffs>& r = a.axes[i].read_offs;
+    const double v = r ? (*r).*figure : kNaN;
+    out += fmt::format(" {} {}", "xyz"[i], std::isfinite(v) ? fmt::format("{:.4g}", v) : "-");
+  }
+  return out;
+}
+
+// The figures of an analysis step in one line: its outcome in the journal.
+std::string AllanOutcome(const RecordAnalysis& a) {
+  return fmt::format("Allan, {}: noise density{}; bias instability{}", a.unit,
+                     Figures(a, &AllanReadOffs::noise_density), Figures(a, &AllanReadOffs::bias_instability));
+}
+
+std::string NoiseOutcome(const analysis::NoiseReport& n) {
+  std::string out = fmt::format("noise, {}: std", n.unit);
+  const analysis::RecordNoise& r = n.records.front();
+  for (size_t a = 0; a < 3; ++a) out += fmt::format(" {} {:.4g}", "xyz"[a], r.axes[a].std);
+  out += "; density";
+  for (size_t a = 0; a < 3; ++a) out += fmt::format(" {} {:.4g}", "xyz"[a], r.axes[a].density);
+  return out;
+}
+
+}  // namespace
+
+CalibrationSteps::CalibrationSteps(const Procedure& procedure, SessionModel& model,
+                                   GravitySpec gravity, std::string session_name,
+                                   WizardOutputs* outputs)
+    : procedure_(procedure), model_(model), gravity_(gravity),
+      session_name_(std::move(session_name)), outputs_(outputs) {}
+
+const CalibrationOutcome& CalibrationSteps::Run() {
+  if (outcome_ && outcome_captures_ == model_.captures().size()) return *outcome_;
+  CalibrationRequest request;
+  for (const JournalCapture& c : model_.captures()) request.captures.push_back(c.capture);
+  request.source_name = session_name_;
+  request.gravity = gravity_;
+  request.screening.adc_range = procedure_.adc_range;
+  outcome_ = CalibrateCaptures(std::move(request));
+  outcome_captures_ = model_.captures().size();
+  return *outcome_;
+}
+
+StepOutcome CalibrationSteps::Fit() {
+  outcome_.reset();  // the fit step always fits what the session holds now
+  const CalibrationOutcome& o = Run();
+  StepOutcome out;
+  const FitSummary& fit = o.diagnosis.base;
+  if (!fit.IsUsable()) {
+    out.problem = "the fit is not usable: " + fit.message;
+    out.hint = "r runs the fit again; b goes back to a skipped step to capture it";
+    return out;
+  }
+  out.lines = SplitLines(FormatFitReport(o.MakeCalibration(false), fit));
+  return out;
+}
+
+StepOutcome CalibrationSteps::Diagnosis() {
+  const CalibrationOutcome& o = Run();
+  StepOutcome out;
+  out.lines = SplitLines(FormatDiagnosis(o.diagnosis));
+  if (!o.usable()) {
+    out.problem = "the fit is not usable: " + o.diagnosis.base.message;
+    out.hint = "s skips the diagnosis (the report needs a usable fit)";
+  }
+  return out;
+}
+
+StepOutcome CalibrationSteps::Report(bool adopt_effects, const ReportMeta& meta) {
+  const CalibrationOutcome& o = Run();
+  StepOutcome out;
+  const bool adopt = adopt_effects && !o.diagnosis.adopted.empty();
+  const FitSummary& summary = o.Fit(adopt);
+  if (!summary.IsUsable()) {
+    out.problem = "no calibration: the fit is not usable: " + summary.message;
+    out.hint = "q leaves; the captures are kept in the session";
+    return out;
+  }
+  const Calibration cal = o.MakeCalibration(adopt);
+  model_.RecordResult(CalibrationToJsonText(cal));
+  out.lines = SplitLines(FormatFitReport(cal, summary));
+  out.lines.push_back(adopt ? fmt::format("Effects adopted: {}", fmt::join(o.diagnosis.adopted_names(), ", "))
+                            : "Model: the nine-parameter base model");
+  if (outputs_ == nullptr) return out;
+  ReportInputs in;
+  in.calibration = cal;
+  in.meta = meta;
+  FillMetaFromInputs(model_.inputs(), &in.meta);  // what was typed wins over the defaults
+  for (const JournalCapture& c : model_.captures()) in.captures.push_back(c.capture);
+  in.limits = procedure_.limits;
+  try {
+    for (const std::string& path : outputs_->WriteReports(in)) out.lines.push_back("Report written to " + path);
+  } catch (const Error& e) {
+    out.lines.push_back(std::string("The report was not written: ") + e.what());
+  }
+  return out;
+}
+
+// The analysis of a record step: read back from the journal one chunk at a time (a 12-hour
+// record does not fit the view), analysed, and shown.
+StepOutcome CalibrationSteps::Analysis(const ProcedureStep& step, std::string* outcome) {
+  StepOutcome out;
+  if (model_.RecordSummaryOf(step.record_step).num_samples == 0) {
+    out.problem = fmt::format("nothing to analyse: the record step '{}' holds no samples (skipped?)",
+                              step.record_step);
+    out.hint = "s skips the analysis; b goes back to the record";
+    return out;
+  }
+  try {
+    if (step.method == "allan") {
+      const RecordAnalysisOptions options;
+      const RecordAnalysis a = AnalyzeJournalRecord(model_, step.record_step, options);
+      const std::string source = session_name_ + ":" + step.record_step;
+      out.lines = SplitLines(FormatAllanText(a, source));
+      *outcome = AllanOutcome(a);
+      if (outputs_ != nullptr) {
+        const std::string path = outputs_->WriteAllan(a, source, options.drift.window_s);
+        out.lines.push_back(fmt::format("Allan analysis written to {} (accelcal report --allan, "
+                                        "accelcal export-cal --to kalibr --allan).", path));
+      }
+    } else {
+      analysis::NoiseRecord record{step.record_step, "", ReadRecord(model_, step.record_step).samples};
+      const analysis::NoiseReport n = analysis::AnalyzeNoise({record});
+      out.lines = SplitLines(FormatNoiseText(n));
+      out.lines.push_back("The day-to-day repeatability of the bias takes three such records on "
+                          "different days: accelcal noise DEVICE.");
+      *outcome = NoiseOutcome(n);
+    }
+  } catch (const Error& e) {
+    out.problem = std::string("the analysis failed: ") + e.what();
+    out.hint = "s skips the analysis; the record is kept in the session";
+  }
+  return out;
+}
+
+}  // namespace accelcal

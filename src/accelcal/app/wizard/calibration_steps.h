@@ -1,0 +1,59 @@
+// The wizard's steps that compute rather than capture: the fit, the diagnosis, the report and
+// the analysis of a record. Each runs on the session model (the accepted captures, the record
+// chunks) through the shared pipeline (app/calibration_pipeline.h), and says what to show.
+// Files are written only through WizardOutputs; the session's result through the model.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "accelcal/app/calibration_pipeline.h"
+#include "accelcal/app/wizard/session_model.h"
+#include "accelcal/app/wizard/wizard_outputs.h"
+#include "accelcal/base/gravity.h"
+#include "accelcal/report/report_model.h"
+#include "accelcal/session/procedure.h"
+
+namespace accelcal {
+
+// What a step has to say: its text, and what went wrong (empty when nothing) with what to do.
+struct StepOutcome {
+  std::vector<std::string> lines;
+  std::string problem;
+  std::string hint;
+};
+
+class CalibrationSteps {
+ public:
+  // Borrows `procedure`, `model` and `outputs` (nullable: no file written); all must outlive
+  // this object.
+  CalibrationSteps(const Procedure& procedure, SessionModel& model, GravitySpec gravity,
+                   std::string session_name, WizardOutputs* outputs);
+
+  // The fit step: the pipeline over the accepted captures, the base fit's report.
+  StepOutcome Fit();
+  // The diagnosis step: the pipeline's diagnosis (run again when the captures changed).
+  StepOutcome Diagnosis();
+  // The report step: the calibration of the chosen model recorded as the session's result, and
+  // the report files written (through the outputs) with `meta`.
+  StepOutcome Report(bool adopt_effects, const ReportMeta& meta);
+  // The analysis step `step` of an earlier record; `outcome` gets its figures in one line.
+  StepOutcome Analysis(const ProcedureStep& step, std::string* outcome);
+
+  // The current pipeline outcome (after Fit or Diagnosis); nullptr before.
+  const CalibrationOutcome* outcome() const { return outcome_ ? &*outcome_ : nullptr; }
+
+ private:
+  const CalibrationOutcome& Run();
+
+  const Procedure& procedure_;  // borrowed
+  SessionModel& model_;         // borrowed
+  GravitySpec gravity_;
+  std::string session_name_;
+  WizardOutputs* outputs_;      // borrowed, nullable
+  std::optional<CalibrationOutcome> outcome_;
+  size_t outcome_captures_ = 0;  // the number of accepted captures outcome_ was computed from
+};
+
+}  // namespace accelcal
