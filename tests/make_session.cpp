@@ -117,7 +117,7 @@ void MakeNoiseSession(const std::string& path, const std::string& procedure_path
     auto store = SessionStore::Open(path, options);
     store->RecordInput(kSessionStep, kDeviceKey, serial);
     store->RecordInput(kSessionStep, kOperatorKey, "e2e");
-    // As the wizard keeps a record step: chunks of the step's chunk_s (record_stream.h).
+    // As the wizard keeps a record step: chunks of the step's chunk_s (record_step_writer.h).
     long index = 0;
     RecordChunk chunk;
     for (const Sample& sample : captures[0].samples) {

@@ -9,12 +9,12 @@ SOURCE_DIR=$2
 
 fail() { echo "FAIL: $*"; [ -n "${last_screen:-}" ] && printf '%s\n' "--- screen:" "$last_screen"; exit 1; }
 
-command -v tmux >/dev/null || { echo "SKIP: tmux not installed"; exit 0; }
-# An unknown subcommand's --help prints the main help (status 0), so look at the usage line.
-if ! "$ACCELCAL" wizard --help 2>/dev/null | grep -q '^Usage: .*wizard'; then
-  echo "SKIP: accelcal wizard not available"
-  exit 0
-fi
+# 77: CTest's skip code (SKIP_RETURN_CODE in tests/CMakeLists.txt): shown as skipped, never as
+# passed. scripts/setup.sh installs tmux, so CI runs this test.
+command -v tmux >/dev/null || { echo "SKIP: tmux not installed"; exit 77; }
+# An unknown subcommand's --help prints the main help (status 0), so look at the usage line: a
+# binary without a working wizard fails here.
+"$ACCELCAL" wizard --help 2>/dev/null | grep -q '^Usage: .*wizard' || fail "accelcal wizard --help has no wizard usage line"
 
 work=$(mktemp -d)
 sock="accelcal_tui_$$"  # a private tmux server: nothing of the user's is touched

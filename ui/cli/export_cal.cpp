@@ -21,6 +21,7 @@
 #include "accelcal/session/session_store.h"
 #include "accelcal/session/procedure.h"
 #include "cli/commands.h"
+#include "cli/output.h"
 
 namespace accelcal::cli {
 namespace {
@@ -136,17 +137,8 @@ void RunExportCal(const ExportCalCommandOptions& o) {
   const ExportResult r = Export(o, cal, context);
   // The statements go where they do not mix with the exported text.
   std::ostream& say = o.output_path.empty() ? std::cerr : std::cout;
-  if (o.output_path.empty()) {
-    std::cout << r.text;
-    std::cout.flush();
-    if (!std::cout) throw Error("cannot write to standard output");
-  } else {
-    std::ofstream out(o.output_path, std::ios::binary);
-    out << r.text;
-    out.close();
-    if (!out) throw Error(fmt::format("cannot write {}", o.output_path));
-    say << fmt::format("{} export written to {}\n", o.target, o.output_path);
-  }
+  WriteOutputText(o.output_path, r.text);
+  if (!o.output_path.empty()) say << fmt::format("{} export written to {}\n", o.target, o.output_path);
   if (r.cannot_hold.empty())
     say << fmt::format("{} holds the whole calibration\n", o.target);
   for (const std::string& s : r.cannot_hold) say << fmt::format("cannot hold: {}\n", s);

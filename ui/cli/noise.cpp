@@ -18,6 +18,7 @@
 #include "accelcal/session/session_paths.h"
 #include "accelcal/session/procedure.h"
 #include "cli/commands.h"
+#include "cli/output.h"
 
 namespace accelcal::cli {
 namespace {
@@ -32,21 +33,6 @@ struct NoiseCommandOptions {
   std::string output_path;             // empty: stdout
 };
 
-std::string DefaultNoiseProcedurePath() {
-  return std::string(ACCELCAL_PROCEDURES_DIR) + "/noise.toml";
-}
-
-void WriteText(const std::string& path, const std::string& text) {
-  if (path.empty()) {
-    std::cout << text;
-    return;
-  }
-  std::ofstream out(path, std::ios::binary | std::ios::trunc);
-  out << text;
-  out.close();
-  if (!out) throw Error(fmt::format("cannot write {}", path));
-}
-
 std::vector<analysis::NoiseRecord> Records(const NoiseCommandOptions& o,
                                            std::vector<std::string>* notes) {
   std::vector<analysis::NoiseRecord> records;
@@ -56,7 +42,7 @@ std::vector<analysis::NoiseRecord> Records(const NoiseCommandOptions& o,
     return records;
   }
   const Procedure procedure = LoadProcedure(
-      o.procedure_path.empty() ? DefaultNoiseProcedurePath() : o.procedure_path);
+      o.procedure_path.empty() ? ShippedProcedurePath("noise.toml") : o.procedure_path);
   const std::string dir = o.sessions_dir.empty() ? DefaultSessionDir() : o.sessions_dir;
   analysis::NoiseRecordSet set = analysis::NoiseRecordsOfDevice(dir, o.device, procedure);
   *notes = std::move(set.notes);
@@ -74,10 +60,10 @@ void RunNoise(const NoiseCommandOptions& o) {
       records, analysis::NoiseAnalysisOptions{}, calibration ? &*calibration : nullptr);
   report.warnings.insert(report.warnings.begin(), notes.begin(), notes.end());
   if (o.format == "json") {
-    WriteText(o.output_path, NoiseFileText(report));
+    WriteOutputText(o.output_path, NoiseFileText(report));
   } else {
     std::string header = o.device.empty() ? "" : fmt::format("Device {}\n", o.device);
-    WriteText(o.output_path, header + FormatNoiseText(report));
+    WriteOutputText(o.output_path, header + FormatNoiseText(report));
   }
 }
 

@@ -22,6 +22,7 @@
 #include "accelcal/session/session_paths.h"
 #include "accelcal/session/session_store.h"
 #include "cli/commands.h"
+#include "cli/output.h"
 
 namespace accelcal::cli {
 namespace {
@@ -34,18 +35,6 @@ struct ReportCommandOptions {
   std::string noise_path;        // noise.json; empty: the session's, if any
   std::string procedure_path;    // limits from here; empty: the default procedure when it matches
 };
-
-std::string DefaultProcedurePath() {
-  return std::string(ACCELCAL_PROCEDURES_DIR) + "/seed_calibration.toml";
-}
-
-void WriteText(const std::string& path, const std::string& text) {
-  if (path.empty()) {
-    std::cout << text;
-    return;
-  }
-  WriteReportFile(path, text);
-}
 
 // A calibration file is JSON (its first non-blank byte is '{'); a session is SQLite.
 bool LooksLikeJson(const std::string& path) {
@@ -91,7 +80,7 @@ void AddLimits(const ReportCommandOptions& o, ReportInputs* in) {
   // that is the one it ran (a calibration file alone states no procedure).
   if (in->meta.procedure.empty()) return;
   try {
-    const Procedure p = LoadProcedure(DefaultProcedurePath());
+    const Procedure p = LoadProcedure(ShippedProcedurePath("seed_calibration.toml"));
     if (p.title == in->meta.procedure) in->limits = p.limits;
   } catch (const Error&) {
     // No default procedure installed: the report says no limits were stated.
@@ -108,7 +97,7 @@ void RunReport(const ReportCommandOptions& o) {
     in = FromSession(o.input);
   }
   if (o.format == "calibration") {
-    WriteText(o.output_path, CalibrationToJsonText(in.calibration) + "\n");
+    WriteOutputText(o.output_path, CalibrationToJsonText(in.calibration) + "\n");
     if (!o.output_path.empty()) std::cout << fmt::format("calibration written to {}\n", o.output_path);
     return;
   }
@@ -120,7 +109,7 @@ void RunReport(const ReportCommandOptions& o) {
   if (o.format == "html") text = RenderReportHtml(model);
   else if (o.format == "json") text = ReportJsonText(model);
   else text = RenderReportText(model);
-  WriteText(o.output_path, text);
+  WriteOutputText(o.output_path, text);
   if (!o.output_path.empty())
     std::cout << fmt::format("{} report written to {} ({})\n", o.format, o.output_path,
                              VerdictToString(model.verdict));

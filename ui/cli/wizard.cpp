@@ -16,16 +16,13 @@
 #include "accelcal/session/procedure.h"
 #include "accelcal/app/wizard/wizard_engine.h"
 #include "cli/commands.h"
+#include "cli/output.h"
 #include "cli/gravity_options.h"
 #include "cli/wizard_journal.h"
 #include "frontend.h"
 
 namespace accelcal::cli {
 namespace {
-
-std::string DefaultProcedurePath() {
-  return std::string(ACCELCAL_PROCEDURES_DIR) + "/seed_calibration.toml";
-}
 
 std::string OperatorFromEnvironment() {
   const char* user = std::getenv("USER");
@@ -36,7 +33,7 @@ std::string OperatorFromEnvironment() {
 
 int RunWizard(const WizardCommandOptions& options) {
   const Procedure procedure = LoadProcedure(
-      options.procedure_path.empty() ? DefaultProcedurePath() : options.procedure_path);
+      options.procedure_path.empty() ? ShippedProcedurePath("seed_calibration.toml") : options.procedure_path);
   SourceOptions source_options;
   source_options.sim.speed = options.speed;
   source_options.seed = options.seed;

@@ -58,7 +58,7 @@ NoiseRecordSet NoiseRecordsOfDevice(const std::string& sessions_dir, const std::
   read_only.read_only = true;
   for (const SessionInfo& info : listing.sessions) {
     const std::unique_ptr<SessionStore> store = SessionStore::Open(info.path, read_only);
-    // The wizard streams a record step in chunks (record_stream.h); sessions of schema 1 kept
+    // The wizard streams a record step in chunks (record_step_writer.h); sessions of schema 1 kept
     // it as one capture.
     std::vector<Sample> samples;
     for (const std::string& step : store->RecordSteps())

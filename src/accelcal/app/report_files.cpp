@@ -19,10 +19,6 @@ std::string ReportPathFor(const std::string& session_path, const std::string& ex
   return FileBesideSession(session_path, ".report." + extension);
 }
 
-void WriteReportFile(const std::string& path, const std::string& text) {
-  WriteFileAtomically(path, text);
-}
-
 std::vector<std::string> WriteSessionReports(ReportInputs in, const std::string& session_path) {
   if (in.meta.session_name.empty()) {
     // The file's stem, as `accelcal sessions` names it.
@@ -32,8 +28,8 @@ std::vector<std::string> WriteSessionReports(ReportInputs in, const std::string&
   }
   const ReportModel model = BuildReportModel(in);
   const std::vector<std::string> paths = {ReportPathFor(session_path, "html"), ReportPathFor(session_path, "txt")};
-  WriteReportFile(paths[0], RenderReportHtml(model));
-  WriteReportFile(paths[1], RenderReportText(model));
+  WriteFileAtomically(paths[0], RenderReportHtml(model));
+  WriteFileAtomically(paths[1], RenderReportText(model));
   return paths;
 }
 

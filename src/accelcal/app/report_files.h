@@ -17,9 +17,6 @@ std::string FileBesideSession(const std::string& session_path, const std::string
 // `session_path` without a trailing ".db", then ".report." and `extension` ("html", "txt").
 std::string ReportPathFor(const std::string& session_path, const std::string& extension);
 
-// Writes `text` to `path` (via path.tmp and a rename). Throws accelcal::Error naming the file.
-void WriteReportFile(const std::string& path, const std::string& text);
-
 // The report of `inputs` written as HTML and text beside `session_path` (the session's name
 // from the file's stem when the meta lacks it). Returns the paths written. Throws
 // accelcal::Error naming the file.

@@ -17,9 +17,6 @@ namespace accelcal {
 namespace {
 
 constexpr const char* kWelcomeId = "welcome";
-// A fresh record starts this long after the sensor is placed (the hand letting go; the
-// simulator's placement moves for 1.5 s), s.
-constexpr double kRecordSettleS = 2.0;
 
 bool IsCaptureStep(StepKind kind) {
   return kind == StepKind::kStatic || kind == StepKind::kRecord || kind == StepKind::kTurntable;
@@ -45,7 +42,8 @@ WizardEngine::WizardEngine(Procedure procedure, SampleSource& source, SessionJou
     : procedure_(std::move(procedure)), source_(source), model_(journal),
       options_(std::move(options)),
       outputs_(options_.report_beside.empty() ? nullptr : MakeOutputsBesideSession(options_.report_beside)),
-      steps_(procedure_, model_, options_.gravity, options_.session_name, outputs_.get()) {
+      steps_(procedure_, model_, options_.gravity, options_.session_name, outputs_.get()),
+      acq_(options_.quiet_period_s) {
   if (std::string why = options_.Validate(); !why.empty()) throw Error("wizard options: " + why);
   if (procedure_.steps.empty()) throw Error("the procedure has no steps");
   ReadJournal();
@@ -96,8 +94,7 @@ void WizardEngine::AdvanceFrom(int index) {
 
 void WizardEngine::EnterStep(int index) {
   current_ = index;
-  engine_.reset();
-  record_.reset();
+  acq_.Stop();
   problem_.clear();
   hint_.clear();
   input_error_.clear();
@@ -123,10 +120,9 @@ void WizardEngine::EnterStep(int index) {
 }
 
 void WizardEngine::EnterPlace() {
-  engine_.reset();
-  StopRecord();
-  if (!noise_floor_ && NeedsSensor(step().kind)) {
-    quiet_ = CaptureStats();
+  acq_.Stop();
+  if (!acq_.noise_floor() && NeedsSensor(step().kind)) {
+    acq_.MeasureNoiseFloor();
     phase_ = Phase::kQuiet;
     return;
   }
@@ -146,7 +142,7 @@ void WizardEngine::SkipStep() {
     return;
   }
   if (source_.bench() != nullptr && kind == StepKind::kTurntable) source_.bench()->StopTurntable();
-  StopRecord();
+  acq_.Stop();
   FinishStep("skipped");
 }
 
@@ -161,7 +157,7 @@ void WizardEngine::GoBack() {
       phase_ == Phase::kLevelTurn) {
     if (step().kind == StepKind::kTurntable) {
       phase_ = Phase::kRpm;
-      engine_.reset();
+      acq_.Stop();
       return;
     }
     EnterPlace();
@@ -185,8 +181,7 @@ void WizardEngine::GoBack() {
 }
 
 void WizardEngine::Quit() {
-  engine_.reset();
-  StopRecord();
+  acq_.Stop();
   quit_ = true;
   phase_ = Phase::kDone;
 }
@@ -215,7 +210,7 @@ CaptureRequest WizardEngine::MakeRequest() const {
 CaptureContext WizardEngine::MakeContext() const {
   CaptureContext c;
   c.rough_model = procedure_.nominal;
-  c.noise_floor = *noise_floor_;
+  c.noise_floor = *acq_.noise_floor();
   // Leveling measures the same pose twice: no duplicate check there.
   if (step().kind != StepKind::kLevel) c.captured = captured_;
   for (const ProcedureStep& s : procedure_.steps)
@@ -243,7 +238,7 @@ void WizardEngine::StartCaptureEngine() {
   o.turntable.gravity_mps2 = options_.gravity.gravity_mps2;
   o.turntable.centripetal_tolerance = procedure_.turntable_tolerance;
   o.screening.adc_range = procedure_.adc_range;
-  engine_ = std::make_unique<CaptureEngine>(MakeRequest(), o, MakeContext());
+  acq_.StartCapture(MakeRequest(), o, MakeContext());
   problem_.clear();
   hint_.clear();
   phase_ = Phase::kCapture;
@@ -269,74 +264,54 @@ bool WizardEngine::RecordResumable() const {
 
 void WizardEngine::StartRecord() {
   const ProcedureStep& s = step();
-  record_settle_until_s_ = kNaN;
-  record_settling_ = !RecordResumable();  // a fresh placement: let the hand go first
-  RecordStreamOptions o;
+  RecordStepWriterOptions o;
   o.duration_s = s.duration_s;
   o.chunk_s = s.chunk_s;
-  o.noise_std_counts = noise_floor_->std_counts;
+  o.noise_std_counts = acq_.noise_floor()->std_counts;
   o.wall_now_s = options_.wall_now_s;
-  record_ = std::make_unique<RecordStream>(model_, s.id, o);
+  // A fresh placement lets the hand go first; a resumed record goes on at once.
+  const bool settle = !RecordResumable();
+  acq_.StartRecord(std::make_unique<RecordStepWriter>(model_, s.id, o), settle);
   problem_.clear();
   hint_.clear();
   phase_ = Phase::kRecord;
   // Killed after the last chunk but before the step was marked done: nothing left to record.
-  if (record_->complete()) FinishStep(record_->Outcome());
+  if (acq_.record().complete()) FinishRecord();
 }
 
-void WizardEngine::FeedRecord(const std::vector<Sample>& chunk) {
-  std::vector<Sample> samples = chunk;
-  if (record_settling_) {
-    // The record starts kRecordSettleS after the first sample following the placement.
-    if (std::isnan(record_settle_until_s_)) record_settle_until_s_ = chunk.front().t_s + kRecordSettleS;
-    std::erase_if(samples, [&](const Sample& x) { return x.t_s < record_settle_until_s_; });
-    if (samples.empty()) return;
-    record_settling_ = false;
-  }
-  record_->Feed(samples);
-  if (record_->complete()) FinishStep(record_->Outcome());
+void WizardEngine::FinishRecord() {
+  const std::string outcome = acq_.record().Outcome();
+  acq_.Stop();
+  FinishStep(outcome);
 }
 
-// Leaving a running record (q, b, s, the source ended): the chunk being filled is committed, so
-// only an unclean end loses it.
-void WizardEngine::StopRecord() {
-  if (record_ && !record_->complete()) record_->Flush();
-  record_.reset();
-}
-
-void WizardEngine::FeedQuiet(const std::vector<Sample>& chunk) {
-  for (const Sample& s : chunk) quiet_.Add(s);
-  if (quiet_.n < 3 || !(quiet_.t_last_s - quiet_.t_first_s >= options_.quiet_period_s)) return;
-  noise_floor_ = NoiseFloor::FromQuietPeriod(quiet_);
-  phase_ = Phase::kPlace;
-}
-
-void WizardEngine::FeedCapture(const std::vector<Sample>& chunk) {
-  engine_->Feed(chunk);
-  const CaptureSnapshot snap = engine_->Snapshot();
-  switch (snap.state) {
-    case CaptureState::kAccepted: OnCaptureAccepted(); break;
-    case CaptureState::kRejected:
-    case CaptureState::kTimedOut:
-      problem_ = snap.reason;
+// What the acquisition reports, acted on.
+void WizardEngine::OnAcquisition(AcquisitionEvent event) {
+  switch (event) {
+    case AcquisitionEvent::kNoiseFloorMeasured: phase_ = Phase::kPlace; break;
+    case AcquisitionEvent::kCaptureAccepted: OnCaptureAccepted(); break;
+    case AcquisitionEvent::kCaptureRejected:
+      problem_ = acq_.reason();
       hint_ = step().kind == StepKind::kTurntable
                   ? "check the mounting, radius and speed; Enter tries again, b re-enters the values"
                   : fmt::format("put the prism with {} and let go; Enter tries again", MakeRequest().expected.name);
       phase_ = Phase::kProblem;
       break;
-    case CaptureState::kRetrying:
-      problem_ = snap.reason;
+    case AcquisitionEvent::kCaptureRetrying:
+      problem_ = acq_.reason();
       hint_ = "retrying by itself once the sensor is still again";
       break;
-    default:
-      if (snap.state == CaptureState::kCapturing) problem_.clear(), hint_.clear();
+    case AcquisitionEvent::kCapturing:
+      problem_.clear();
+      hint_.clear();
       break;
+    case AcquisitionEvent::kRecordComplete: FinishRecord(); break;
+    case AcquisitionEvent::kNone: break;
   }
 }
 
 void WizardEngine::OnCaptureAccepted() {
-  Capture capture = engine_->capture();
-  engine_.reset();
+  Capture capture = acq_.TakeCapture();
   const ProcedureStep& s = step();
   if (s.kind == StepKind::kLevel) {
     OnLevelCapture(capture.stats().mean_counts);
@@ -414,17 +389,15 @@ void WizardEngine::Poll(double timeout_s) {
     if (source_.status().link == LinkState::kEnded &&
         (phase_ == Phase::kCapture || phase_ == Phase::kQuiet || phase_ == Phase::kRecord)) {
       // Nothing more will come (a recording replayed to its end): say so instead of waiting.
-      engine_.reset();
-      StopRecord();
+      acq_.Stop();
       problem_ = "the source has ended: no more samples from " + source_.Describe();
       hint_ = "q leaves; everything accepted is in the session";
       phase_ = Phase::kProblem;
     }
     return;
   }
-  if (phase_ == Phase::kQuiet) FeedQuiet(chunk);
-  else if (phase_ == Phase::kCapture && engine_) FeedCapture(chunk);
-  else if (phase_ == Phase::kRecord && record_) FeedRecord(chunk);
+  if (phase_ == Phase::kQuiet || phase_ == Phase::kCapture || phase_ == Phase::kRecord)
+    OnAcquisition(acq_.Feed(chunk));
 }
 
 // ---- intents --------------------------------------------------------------------------------

@@ -8,7 +8,7 @@
 // diagnosis (asks before adopting), report (the calibration JSON is the journal's result).
 //
 // Records (kind "record": the noise and drift records) are streamed to the journal in chunks
-// by RecordStream (record_stream.h): never refused for drift, a movement is shown and the
+// by RecordStepWriter (record_step_writer.h): never refused for drift, a movement is shown and the
 // record goes on; q commits the chunk being filled. An interrupted record resumes where it
 // stopped (without placing the sensor again) and its gap is recorded; the step is done
 // (RecordStepDone with the recorded and gap times) when its duration is covered.
@@ -32,8 +32,9 @@
 #include "accelcal/acquire/source/sample_source.h"
 #include "accelcal/session/procedure.h"
 #include "accelcal/app/wizard/calibration_steps.h"
-#include "accelcal/app/wizard/record_stream.h"
+#include "accelcal/app/wizard/record_step_writer.h"
 #include "accelcal/app/wizard/session_model.h"
+#include "accelcal/app/wizard/step_acquisition.h"
 #include "accelcal/app/wizard/wizard_outputs.h"
 #include "accelcal/session/session_journal.h"
 #include "accelcal/app/wizard/wizard_driver.h"
@@ -101,11 +102,9 @@ class WizardEngine final : public WizardDriver {
   void PlaceOnBench();
   CaptureRequest MakeRequest() const;
   CaptureContext MakeContext() const;
-  void FeedQuiet(const std::vector<Sample>& chunk);
-  void FeedCapture(const std::vector<Sample>& chunk);
   void StartRecord();
-  void FeedRecord(const std::vector<Sample>& chunk);
-  void StopRecord();
+  void FinishRecord();
+  void OnAcquisition(AcquisitionEvent event);
   bool RecordResumable() const;
   void OnCaptureAccepted();
   void OnLevelCapture(const Eigen::Vector3d& mean_counts);
@@ -162,12 +161,7 @@ class WizardEngine final : public WizardDriver {
   bool progressed_ = false;                // this run has recorded a step or capture
   bool quit_ = false;
 
-  std::unique_ptr<CaptureEngine> engine_;
-  std::unique_ptr<RecordStream> record_;  // phase kRecord
-  bool record_settling_ = false;          // a fresh record waits for the hand to let go
-  double record_settle_until_s_ = kNaN;   // source t at which it starts, s
-  std::optional<NoiseFloor> noise_floor_;
-  CaptureStats quiet_;
+  StepAcquisition acq_;  // the noise floor, the capture or the record being acquired
   std::vector<CapturedPose> captured_;
   int next_capture_id_ = 1;
 

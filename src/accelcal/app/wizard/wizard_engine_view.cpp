@@ -108,9 +108,7 @@ void WizardEngine::SetQuietView(WizardView& v) const {
   v.prompt =
       fmt::format("Leave the sensor resting on the table: measuring the noise floor ({:g} s).",
                   options_.quiet_period_s);
-  v.progress = quiet_.n >= 2
-                   ? std::min(1.0, (quiet_.t_last_s - quiet_.t_first_s) / options_.quiet_period_s)
-                   : 0.0;
+  v.progress = acq_.quiet_progress();
   v.keys = {{"q", "save and quit"}};
 }
 
@@ -211,18 +209,19 @@ void WizardEngine::SetDoneView(WizardView& v) const {
 void WizardEngine::SetRecordView(WizardView& v) const {
   v.screen = WizardScreen::kRecording;
   v.keys = {{"s", "skip"}, {"b", "back"}, {"q", "save and quit"}};
-  const RecordView r = record_->View();
+  const RecordStepWriter& record = acq_.record();
+  const RecordView r = record.View();
   v.progress = std::clamp(r.elapsed_s / r.duration_s, 0.0, 1.0);
   const std::string clock = fmt::format("{} of {}", FormatClock(r.elapsed_s), FormatClock(r.duration_s));
-  if (record_settling_) {
+  if (acq_.record_settling()) {
     v.prompt = fmt::format("Recording the {} with {}; letting the sensor settle", step().title,
                            step().pose_name);
-  } else if (record_->resuming()) {
-    const std::string gap = r.gaps > record_->resumed_from().num_gaps
-                                ? fmt::format("gap of {:.0f} s", r.gaps_s - record_->resumed_from().gaps_s)
+  } else if (record.resuming()) {
+    const std::string gap = r.gaps > record.resumed_from().num_gaps
+                                ? fmt::format("gap of {:.0f} s", r.gaps_s - record.resumed_from().gaps_s)
                                 : "waiting for the first sample";
     v.prompt = fmt::format("Resuming the {}: {} recorded, {}; recording {}", step().title,
-                           FormatLongDuration(record_->resumed_from().recorded_s()), gap, clock);
+                           FormatLongDuration(record.resumed_from().recorded_s()), gap, clock);
   } else {
     v.prompt = fmt::format("Recording the {} with {}; {}", step().title, step().pose_name, clock);
   }
@@ -240,7 +239,7 @@ void WizardEngine::SetCaptureView(WizardView& v) const {
     v.keys.insert(v.keys.begin(), KeyHint{"Enter", "try again"});
     return;
   }
-  const CaptureSnapshot snap = engine_->Snapshot();
+  const CaptureSnapshot snap = acq_.capture_snapshot();
   v.prompt =
       fmt::format("{} {} (attempt {}): {}", CaptureStateToString(snap.state), step().pose_name,
                   std::max(1, snap.attempts),

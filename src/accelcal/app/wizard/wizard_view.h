@@ -76,7 +76,7 @@ struct RecordView {
   std::string last_bump;      // "at 03:12:05, 41 counts on x"; empty when none
   double drift_bin_s = 0.0;   // width of the drift plot's bins, s
   std::vector<DriftPoint> drift;  // in time order; bins without samples (gaps) are absent
-  // The Allan deviation so far, per axis (x, y, z), tau increasing, counts: RecordStream's
+  // The Allan deviation so far, per axis (x, y, z), tau increasing, counts: RecordStepWriter's
   // streaming record analysis (analysis/record_analysis.h) of every recorded sample, gaps
   // declared missing. Empty until the record holds a few averaging times.
   std::array<std::vector<AllanCurvePoint>, 3> allan;

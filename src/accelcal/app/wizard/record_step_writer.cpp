@@ -1,4 +1,4 @@
-#include "accelcal/app/wizard/record_stream.h"
+#include "accelcal/app/wizard/record_step_writer.h"
 
 #include <algorithm>
 #include <chrono>
@@ -30,7 +30,7 @@ RecordAnalysisOptions LiveAnalysisOptions() {
 
 }  // namespace
 
-std::string RecordStreamOptions::Validate() const {
+std::string RecordStepWriterOptions::Validate() const {
   if (!(duration_s > 0.0) || !std::isfinite(duration_s)) return "duration_s must be positive";
   if (!(chunk_s > 0.0) || !std::isfinite(chunk_s)) return "chunk_s must be positive";
   if (!noise_std_counts.allFinite() || (noise_std_counts.array() < 0.0).any())
@@ -42,7 +42,7 @@ std::string RecordStreamOptions::Validate() const {
   return "";
 }
 
-RecordStream::RecordStream(SessionJournal& journal, std::string step_id, RecordStreamOptions options)
+RecordStepWriter::RecordStepWriter(SessionJournal& journal, std::string step_id, RecordStepWriterOptions options)
     : journal_(journal),
       step_id_(std::move(step_id)),
       options_(std::move(options)),
@@ -58,7 +58,7 @@ RecordStream::RecordStream(SessionJournal& journal, std::string step_id, RecordS
   if (resuming()) complete_ = committed_.span_s() >= options_.duration_s;
 }
 
-void RecordStream::Feed(const std::vector<Sample>& samples) {
+void RecordStepWriter::Feed(const std::vector<Sample>& samples) {
   for (const Sample& raw : samples) {
     if (complete_) return;
     if (!offset_known_) {
@@ -79,7 +79,7 @@ void RecordStream::Feed(const std::vector<Sample>& samples) {
   }
 }
 
-void RecordStream::Accept(const Sample& s) {
+void RecordStepWriter::Accept(const Sample& s) {
   if (!pending_.empty() && s.t_s - pending_.front().t_s >= options_.chunk_s) Commit();
   pending_.push_back(s);
   CheckMovement(s);
@@ -90,7 +90,7 @@ void RecordStream::Accept(const Sample& s) {
   }
 }
 
-void RecordStream::Commit() {
+void RecordStepWriter::Commit() {
   if (pending_.empty()) return;
   RecordChunk chunk;
   chunk.index = committed_.num_chunks;
@@ -103,14 +103,14 @@ void RecordStream::Commit() {
   pending_.clear();
 }
 
-double RecordStream::DriftBinS() const {
+double RecordStepWriter::DriftBinS() const {
   return options_.duration_s / static_cast<double>(options_.drift_points);
 }
 
 // The figures of one recorded sample (stored or new, in record order). The per-axis Allan
 // accumulators of RecordView::allan take the sample here too; a sample that follows a gap
 // (t - previous t well beyond one interval) is where they take the missing count.
-void RecordStream::Accumulate(const Sample& s) {
+void RecordStepWriter::Accumulate(const Sample& s) {
   if (std::isnan(t_first_s_)) t_first_s_ = s.t_s;
   if (!s.raw_counts.allFinite()) return;
   const double since_s = s.t_s - t_first_s_;
@@ -132,7 +132,7 @@ void RecordStream::Accumulate(const Sample& s) {
 // time constant of each other are one movement, and they do not move the mean (a knock must
 // not drag it along); a level that stays off for longer than that is a new pose: the mean
 // starts over from it.
-void RecordStream::CheckMovement(const Sample& s) {
+void RecordStepWriter::CheckMovement(const Sample& s) {
   if (!s.raw_counts.allFinite()) return;
   if (!running_mean_.allFinite() || !(s.t_s - last_t_s_ < options_.running_mean_s)) {
     running_mean_ = s.raw_counts;  // the first sample, or after a gap: start over
@@ -162,7 +162,7 @@ void RecordStream::CheckMovement(const Sample& s) {
   last_t_s_ = s.t_s;
 }
 
-RecordView RecordStream::View() const {
+RecordView RecordStepWriter::View() const {
   RecordView v;
   v.duration_s = options_.duration_s;
   const double t_last = !pending_.empty() ? pending_.back().t_s : committed_.t_last_s;
@@ -195,9 +195,9 @@ RecordView RecordStream::View() const {
   return v;
 }
 
-RecordAnalysis RecordStream::Analysis() const { return analyzer_.Result(); }
+RecordAnalysis RecordStepWriter::Analysis() const { return analyzer_.Result(); }
 
-std::string RecordStream::Outcome() const {
+std::string RecordStepWriter::Outcome() const {
   const RecordView v = View();
   return fmt::format("recorded {} over {}, {} gap{} ({}), {} movement{}",
                      FormatLongDuration(v.recorded_s), FormatLongDuration(v.elapsed_s), v.gaps,

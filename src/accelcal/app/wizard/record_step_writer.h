@@ -31,7 +31,7 @@
 
 namespace accelcal {
 
-struct RecordStreamOptions {
+struct RecordStepWriterOptions {
   double duration_s = 60.0;  // span to record, s; > 0
   double chunk_s = 10.0;     // record time per committed chunk, s; > 0
   // Noise floor per axis (counts, finite, >= 0): the scale of the movement check.
@@ -51,12 +51,12 @@ struct RecordStreamOptions {
   std::string Validate() const;
 };
 
-class RecordStream {
+class RecordStepWriter {
  public:
   // Borrows `journal` (outlives the stream). Reads what the journal holds for `step_id`: an
   // interrupted record is rebuilt (figures included) and resumed. Throws accelcal::Error for
   // invalid options.
-  RecordStream(SessionJournal& journal, std::string step_id, RecordStreamOptions options);
+  RecordStepWriter(SessionJournal& journal, std::string step_id, RecordStepWriterOptions options);
 
   // Appends samples (the source's clock). Each chunk is committed as soon as it is complete;
   // the last one when the duration is covered (later samples are ignored).
@@ -94,7 +94,7 @@ class RecordStream {
 
   SessionJournal& journal_;  // borrowed
   std::string step_id_;
-  RecordStreamOptions options_;
+  RecordStepWriterOptions options_;
   RecordSummary resumed_from_;
   RecordSummary committed_;
   bool complete_ = false;

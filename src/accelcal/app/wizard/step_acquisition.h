@@ -1,0 +1,83 @@
+// Feeding the source's samples to what the wizard's current step acquires: the noise floor
+// measured while the sensor rests, one capture (acquire/capture_engine), or a record streamed to
+// the journal in chunks (record_step_writer.h). The wizard engine decides what to acquire and reacts
+// to what Feed reports; this class holds no step logic and knows nothing of the procedure.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "accelcal/acquire/capture_engine/capture_engine.h"
+#include "accelcal/acquire/capture_engine/noise_floor.h"
+#include "accelcal/app/wizard/record_step_writer.h"
+#include "accelcal/base/capture.h"
+
+namespace accelcal {
+
+enum class AcquisitionEvent {
+  kNone,                // nothing to report (idle, or still filling)
+  kNoiseFloorMeasured,  // the quiet period is over: noise_floor() is set
+  kCapturing,           // the capture engine is capturing (the sensor is still)
+  kCaptureRetrying,     // a capture was interrupted (a bump, settling); it retries by itself
+  kCaptureRejected,     // rejected or timed out: reason() says why; the capture is over
+  kCaptureAccepted,     // TakeCapture() hands it over
+  kRecordComplete,      // the record covers its duration
+};
+
+class StepAcquisition {
+ public:
+  // `quiet_period_s`: how long the sensor rests for the noise floor, s (> 0).
+  explicit StepAcquisition(double quiet_period_s);
+
+  // Starts measuring the noise floor (forgetting any earlier one).
+  void MeasureNoiseFloor();
+  // Starts a capture judged against the measured noise floor (which must exist).
+  void StartCapture(const CaptureRequest& request, const CaptureEngineOptions& options,
+                    const CaptureContext& context);
+  // Starts streaming `record`; with `settle`, its first kRecordSettleS of samples are dropped
+  // (the hand letting go of a freshly placed sensor).
+  void StartRecord(std::unique_ptr<RecordStepWriter> record, bool settle);
+  // Stops what runs: a record commits the chunk being filled; a capture in progress is dropped.
+  void Stop();
+
+  AcquisitionEvent Feed(const std::vector<Sample>& chunk);
+
+  bool measuring_noise_floor() const { return quiet_.has_value(); }
+  bool capturing() const { return capture_ != nullptr; }
+  bool recording() const { return record_ != nullptr; }
+  bool record_settling() const { return record_ != nullptr && settling_; }
+
+  const std::optional<NoiseFloor>& noise_floor() const { return noise_floor_; }
+  // Of the quiet period, 0..1.
+  double quiet_progress() const;
+  // The running capture's snapshot (capturing() must be true).
+  CaptureSnapshot capture_snapshot() const { return capture_->Snapshot(); }
+  // Why the last capture was rejected or is retrying.
+  const std::string& reason() const { return reason_; }
+  // The accepted capture (after kCaptureAccepted); the capture is over.
+  Capture TakeCapture();
+  // The running record (recording() must be true).
+  const RecordStepWriter& record() const { return *record_; }
+
+  // A fresh record starts this long after the sensor is placed (the hand letting go; the
+  // simulator's placement moves for 1.5 s), s.
+  static constexpr double kRecordSettleS = 2.0;
+
+ private:
+  AcquisitionEvent FeedQuiet(const std::vector<Sample>& chunk);
+  AcquisitionEvent FeedCapture(const std::vector<Sample>& chunk);
+  AcquisitionEvent FeedRecord(const std::vector<Sample>& chunk);
+
+  double quiet_period_s_;
+  std::optional<CaptureStats> quiet_;  // while measuring the noise floor
+  std::optional<NoiseFloor> noise_floor_;
+  std::unique_ptr<CaptureEngine> capture_;
+  std::optional<Capture> accepted_;
+  std::unique_ptr<RecordStepWriter> record_;
+  bool settling_ = false;
+  double settle_until_s_ = kNaN;  // source t at which a settling record starts, s
+  std::string reason_;
+};
+
+}  // namespace accelcal

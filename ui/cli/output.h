@@ -1,0 +1,16 @@
+// What the subcommands share at their edge: where their output text goes, and where the shipped
+// procedures are.
+#pragma once
+
+#include <string>
+
+namespace accelcal::cli {
+
+// `text` to the file at `path`, written atomically (a crash never leaves half a file), or to
+// standard output when `path` is empty. Throws accelcal::Error naming the file.
+void WriteOutputText(const std::string& path, const std::string& text);
+
+// A procedure shipped in the source tree's procedures/ ("seed_calibration.toml", "noise.toml").
+std::string ShippedProcedurePath(const std::string& file_name);
+
+}  // namespace accelcal::cli
