@@ -7,7 +7,8 @@
 //   accelcal_physgen selfcheck                        the generator against the physics
 //   accelcal_physgen cases                            the named cases
 //
-// The generator uses only the standard library and Eigen; `compare` reads accelcal's
+// --no-temperature leaves the temp_c column empty (the sensor still warms: a temperature effect
+// injected then acts unobserved). The generator uses only the standard library and Eigen; `compare` reads accelcal's
 // calibration file with nlohmann-json. Nothing of the project is included.
 #include <algorithm>
 #include <cmath>
@@ -40,7 +41,8 @@ constexpr double kPi = 3.14159265358979323846;
   std::cerr << "accelcal_physgen: " << why << "\n"
             << "usage: accelcal_physgen generate [--plan seed|rich] [--case NAME] [--seed N]\n"
                "         [--gravity G] [--static-s S] [--turntable-s S] [--rate HZ] [--noise N|X,Y,Z]\n"
-               "         [--placement-deg D] [--gap MIN,MAX] [--no-temperature] [--no-quantize]\n"
+               "         [--placement-deg D] [--gap MIN,MAX] [--temperature START,END] [--warmup-tau S]\n"
+               "         [--no-temperature] [--no-quantize]\n"
                "         [--fixed-sensor] [--quadratic X,Y,Z] [--temp-bias X,Y,Z] [--temp-scale X,Y,Z]\n"
                "         [--drift X,Y,Z] [--radius-offset M] [--rpm-scale S] [--size X,Y,Z]\n"
                "         [--cubic X,Y,Z] [--cross C] [--tilt-deg D] -o SET.csv [--truth TRUTH.json]\n"
@@ -145,7 +147,14 @@ int Generate(const std::vector<std::string>& args) {
       if (comma == std::string::npos) Usage("--gap MIN,MAX");
       bench.gap_min_s = ParseNumber(v.substr(0, comma));
       bench.gap_max_s = ParseNumber(v.substr(comma + 1));
-    } else if (a == "--no-temperature") bench.temperature = false;
+    } else if (a == "--temperature") {
+      const std::string v = value();
+      const size_t comma = v.find(',');
+      if (comma == std::string::npos) Usage("--temperature START,END");
+      bench.temp_start_c = ParseNumber(v.substr(0, comma));
+      bench.temp_end_c = ParseNumber(v.substr(comma + 1));
+    } else if (a == "--warmup-tau") bench.warmup_tau_s = ParseNumber(value());
+    else if (a == "--no-temperature") bench.temperature = false;
     else if (a == "--no-quantize") sensor.quantize = false;
     else if (a == "--fixed-sensor") fixed_sensor = true;
     else if (a == "--quadratic") { overrides.quadratic = ParseVector(value()); overridden.insert(a); }
