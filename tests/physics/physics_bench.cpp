@@ -1,0 +1,359 @@
+// The independent bench of physics_bench.h: the standard library and Eigen only.
+#include "physics_bench.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+
+#include <Eigen/Geometry>
+#include <Eigen/LU>
+
+namespace physgen {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+double RadPerS(double rpm) { return rpm * 2.0 * kPi / 60.0; }
+
+// A small random rotation: each component of the rotation vector ~ N(0, sigma).
+Eigen::Matrix3d SmallRotation(double sigma_rad, std::mt19937_64& rng) {
+  if (sigma_rad <= 0.0) return Eigen::Matrix3d::Identity();
+  std::normal_distribution<double> n(0.0, sigma_rad);
+  const Eigen::Vector3d v(n(rng), n(rng), n(rng));
+  const double angle = v.norm();
+  if (angle == 0.0) return Eigen::Matrix3d::Identity();
+  return Eigen::AngleAxisd(angle, v / angle).toRotationMatrix();
+}
+
+std::string Num(double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.17g", v);
+  return buf;
+}
+
+std::string Short(double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.10g", v);
+  return buf;
+}
+
+std::string Vec(const Eigen::Vector3d& v) {
+  return "[" + Num(v.x()) + ", " + Num(v.y()) + ", " + Num(v.z()) + "]";
+}
+
+std::string Quoted(const std::string& s) {
+  if (s.find_first_of(",\"") == std::string::npos) return s;
+  std::string out = "\"";
+  for (char ch : s) {
+    if (ch == '"') out += '"';
+    out += ch;
+  }
+  return out + "\"";
+}
+
+std::string JsonString(const std::string& s) {
+  std::string out = "\"";
+  for (char ch : s) {
+    if (ch == '"' || ch == '\\') out += '\\';
+    out += ch;
+  }
+  return out + "\"";
+}
+
+}  // namespace
+
+Eigen::Matrix3d Sensor::Misalignment() const {
+  Eigen::Matrix3d t;
+  t << 1.0, -a_yz_rad, a_zy_rad,
+       0.0, 1.0, -a_zx_rad,
+       0.0, 0.0, 1.0;
+  return t;
+}
+
+Eigen::Vector3d AxisVector(const std::string& axis) {
+  if (axis.size() != 2 || (axis[0] != '+' && axis[0] != '-') || axis[1] < 'x' || axis[1] > 'z')
+    throw std::invalid_argument("not a sensor axis: '" + axis + "' (+x ... -z)");
+  Eigen::Vector3d v = Eigen::Vector3d::Zero();
+  v(axis[1] - 'x') = axis[0] == '+' ? 1.0 : -1.0;
+  return v;
+}
+
+Eigen::Matrix3d MountingRotation(const std::string& radial_axis, const std::string& up_axis) {
+  const Eigen::Vector3d e_r = AxisVector(radial_axis);
+  const Eigen::Vector3d e_u = AxisVector(up_axis);
+  if (std::fabs(e_r.dot(e_u)) > 0.5)
+    throw std::invalid_argument("radial and up axes must be perpendicular");
+  Eigen::Matrix3d m;
+  m.row(0) = e_r.transpose();
+  m.row(1) = e_u.cross(e_r).transpose();
+  m.row(2) = e_u.transpose();
+  return m;
+}
+
+double TrueTemperatureC(const Bench& bench, double t_s) {
+  if (bench.warmup_tau_s <= 0.0) return bench.temp_start_c;
+  return bench.temp_end_c +
+         (bench.temp_start_c - bench.temp_end_c) * std::exp(-std::max(t_s, 0.0) / bench.warmup_tau_s);
+}
+
+Eigen::Vector3d SpecificForce(const CaptureSetData& set, const CaptureData& c, double t_s, int j) {
+  const double g = set.bench.gravity_mps2;
+  const Eigen::Matrix3d& p = c.placement;  // v_ideal = P v_platform
+  if (c.spec.kind == Kind::kStatic) {
+    // At rest: f = -g_vec = g up; the operator's pose is "up" turned by the placement error.
+    return p.transpose() * (g * c.spec.up.normalized());
+  }
+  const Eigen::Matrix3d m = MountingRotation(c.spec.radial_axis, c.spec.up_axis);
+  const double w = (1.0 + set.effects.rpm_scale) * RadPerS(c.spec.rpm);
+  const double phi = c.phase0_rad + w * (t_s - c.start_s);
+  const double th = set.effects.tilt_rad;
+  // World up in the table frame (spin axis tilted by th about world X, table turned by phi).
+  const Eigen::Vector3d up_world(std::sin(th) * std::sin(phi), std::sin(th) * std::cos(phi),
+                                 std::cos(th));
+  Eigen::Vector3d pos(c.spec.radius_m + set.effects.radius_offset_m, 0.0, 0.0);
+  if (j >= 0) pos += m * p * (set.effects.size_effect_m(j) * Eigen::Vector3d::Unit(j));
+  // Constant rate: the acceleration is centripetal, toward the axis; f = a + g up_world.
+  const Eigen::Vector3d f_table =
+      Eigen::Vector3d(-w * w * pos.x(), -w * w * pos.y(), 0.0) + g * up_world;
+  return p.transpose() * m.transpose() * f_table;
+}
+
+Eigen::Vector3d NoiseFreeReading(const CaptureSetData& set, const CaptureData& c, double t_s) {
+  const Sensor& s = set.sensor;
+  const Effects& e = set.effects;
+  const Eigen::Matrix3d t_inv = s.Misalignment().inverse();
+  Eigen::Vector3d u;
+  for (int j = 0; j < 3; ++j) u(j) = (t_inv * SpecificForce(set, c, t_s, j))(j);  // a^a_j
+  const double dtemp = TrueTemperatureC(set.bench, t_s) - set.temp_ref_c;
+  const double dt = t_s - set.t_ref_s;
+  Eigen::Vector3d raw;
+  for (int j = 0; j < 3; ++j) {
+    double response = s.scale_counts_per_mps2(j) * u(j) + e.quadratic(j) * u(j) * u(j) +
+                      e.cubic(j) * u(j) * u(j) * u(j);
+    if (j == 0) response += e.cross_x_yz * u(1) * u(2);
+    raw(j) = s.bias_counts(j) + e.drift(j) * dt + e.temp_bias(j) * dtemp +
+             (1.0 + e.temp_scale(j) * dtemp) * response;
+  }
+  return raw;
+}
+
+CaptureSetData Generate(const Sensor& sensor, const Effects& effects, const Bench& bench,
+                        const std::vector<CaptureSpec>& plan, std::mt19937_64& rng) {
+  CaptureSetData set;
+  set.sensor = sensor;
+  set.effects = effects;
+  set.bench = bench;
+  std::uniform_real_distribution<double> gap(bench.gap_min_s, bench.gap_max_s);
+  std::uniform_real_distribution<double> phase(0.0, 2.0 * kPi);
+  const double dt = 1.0 / sensor.rate_hz;
+
+  // 1. The schedule: start times, placements, phases; the references.
+  double t = bench.first_start_s;
+  double t_sum = 0.0, temp_sum = 0.0;
+  for (const CaptureSpec& spec : plan) {
+    CaptureData c;
+    c.spec = spec;
+    c.start_s = t;
+    c.placement = SmallRotation(bench.placement_error_deg * kPi / 180.0, rng);
+    c.phase0_rad = phase(rng);
+    const long n = std::lround(spec.duration_s * sensor.rate_hz);
+    double ct = 0.0, ctemp = 0.0;
+    for (long i = 0; i < n; ++i) {
+      Sample smp;
+      smp.t_s = c.start_s + static_cast<double>(i) * dt;
+      ct += smp.t_s;
+      ctemp += TrueTemperatureC(bench, smp.t_s);
+      c.samples.push_back(smp);
+    }
+    t_sum += ct / static_cast<double>(n);
+    temp_sum += ctemp / static_cast<double>(n);
+    t = c.samples.back().t_s + gap(rng);
+    set.captures.push_back(std::move(c));
+  }
+  set.t_ref_s = t_sum / static_cast<double>(plan.size());
+  set.temp_ref_c = temp_sum / static_cast<double>(plan.size());
+
+  // 2. The samples.
+  std::normal_distribution<double> unit(0.0, 1.0);
+  for (CaptureData& c : set.captures) {
+    for (Sample& smp : c.samples) {
+      Eigen::Vector3d raw = NoiseFreeReading(set, c, smp.t_s);
+      for (int j = 0; j < 3; ++j) {
+        raw(j) += sensor.noise_counts(j) * unit(rng);
+        if (sensor.quantize) raw(j) = std::clamp(std::round(raw(j)), sensor.adc_min, sensor.adc_max);
+      }
+      smp.raw_counts = raw;
+      smp.temp_c = TrueTemperatureC(bench, smp.t_s) + bench.temp_noise_c * unit(rng);
+    }
+  }
+  return set;
+}
+
+void WriteCsv(const CaptureSetData& set, std::ostream& out) {
+  out << "# accelcal capture set\n";
+  out << "# generated by accelcal_physgen (tests/physics): an independent bench\n";
+  if (set.sensor.quantize)
+    out << "# adc_range_counts = " << Num(set.sensor.adc_min) << "," << Num(set.sensor.adc_max)
+        << "\n";
+  out << "capture,kind,t,ax,ay,az,temp_c,radius_m,rpm,label,up_axis\n";
+  char buf[256];
+  int id = 0;
+  for (const CaptureData& c : set.captures) {
+    ++id;
+    const bool tt = c.spec.kind == Kind::kTurntable;
+    for (const Sample& s : c.samples) {
+      out << id << (tt ? ",turntable," : ",static,");
+      std::snprintf(buf, sizeof buf, "%.4f,", s.t_s);
+      out << buf;
+      for (int j = 0; j < 3; ++j) {
+        if (set.sensor.quantize)
+          std::snprintf(buf, sizeof buf, "%.0f,", s.raw_counts(j));
+        else
+          std::snprintf(buf, sizeof buf, "%.6f,", s.raw_counts(j));
+        out << buf;
+      }
+      if (set.bench.temperature) {
+        std::snprintf(buf, sizeof buf, "%.2f", s.temp_c);
+        out << buf;
+      }
+      out << ",";
+      if (tt) out << Short(c.spec.radius_m) << "," << Short(c.spec.rpm) << ",";
+      else out << ",,";
+      out << Quoted(c.spec.label) << "," << (tt ? c.spec.up_axis : "") << "\n";
+    }
+  }
+}
+
+void WriteTruthJson(const CaptureSetData& set, const std::map<std::string, std::string>& info,
+                    std::ostream& out) {
+  const Sensor& s = set.sensor;
+  const Effects& e = set.effects;
+  out << "{\n  \"generator\": \"accelcal_physgen\",\n";
+  for (const auto& [k, v] : info) out << "  " << JsonString(k) << ": " << JsonString(v) << ",\n";
+  out << "  \"gravity_mps2\": " << Num(set.bench.gravity_mps2) << ",\n";
+  out << "  \"bias_counts\": " << Vec(s.bias_counts) << ",\n";
+  out << "  \"scale_counts_per_mps2\": " << Vec(s.scale_counts_per_mps2) << ",\n";
+  out << "  \"misalignment_rad\": {\"yz\": " << Num(s.a_yz_rad) << ", \"zy\": " << Num(s.a_zy_rad)
+      << ", \"zx\": " << Num(s.a_zx_rad) << "},\n";
+  out << "  \"noise_counts\": " << Vec(s.noise_counts) << ",\n";
+  out << "  \"rate_hz\": " << Num(s.rate_hz) << ",\n";
+  out << "  \"reference\": {\"t_s\": " << Num(set.t_ref_s) << ", \"temp_c\": " << Num(set.temp_ref_c)
+      << "},\n";
+  out << "  \"captures\": " << set.captures.size() << ",\n";
+  // Effects: name -> {parameter: value}; "library": whether accelcal's library has it today.
+  std::vector<std::string> items;
+  auto per_axis = [&](const char* name, const char* stem, const Eigen::Vector3d& v, bool lib) {
+    if (v.isZero()) return;
+    std::string body = "    " + JsonString(name) + ": {\"library\": " + (lib ? "true" : "false") +
+                       ", \"parameters\": {";
+    for (int j = 0; j < 3; ++j)
+      body += std::string(j ? ", " : "") + "\"" + stem + "_" + "xyz"[j] + "\": " + Num(v(j));
+    items.push_back(body + "}}");
+  };
+  auto scalar = [&](const char* name, const char* param, double v, bool lib) {
+    if (v == 0.0) return;
+    items.push_back("    " + JsonString(name) + ": {\"library\": " + (lib ? "true" : "false") +
+                    ", \"parameters\": {" + JsonString(param) + ": " + Num(v) + "}}");
+  };
+  per_axis("quadratic_nonlinearity", "q", e.quadratic, true);
+  per_axis("temperature_bias", "tc_bias", e.temp_bias, true);
+  per_axis("temperature_scale", "tc_scale", e.temp_scale, true);
+  per_axis("bias_drift", "drift", e.drift, true);
+  scalar("radius_offset", "dr", e.radius_offset_m, true);
+  scalar("rpm_scale", "rpm_scale", e.rpm_scale, true);
+  per_axis("size_effect", "d", e.size_effect_m, true);
+  per_axis("cubic_nonlinearity", "c3", e.cubic, false);
+  scalar("cross_axis_coupling", "c_x_yz", e.cross_x_yz, false);
+  scalar("turntable_tilt", "tilt_rad", e.tilt_rad, false);
+  out << "  \"effects\": {";
+  for (size_t i = 0; i < items.size(); ++i) out << (i ? ",\n" : "\n") << items[i];
+  out << (items.empty() ? "}\n" : "\n  }\n") << "}\n";
+}
+
+namespace {
+
+CaptureSpec Static(const std::string& label, Eigen::Vector3d up, double duration_s) {
+  CaptureSpec c;
+  c.kind = Kind::kStatic;
+  c.label = label;
+  c.up = up.normalized();
+  c.duration_s = duration_s;
+  return c;
+}
+
+CaptureSpec Turntable(const std::string& radial, const std::string& up, double r, double rpm,
+                      double duration_s) {
+  CaptureSpec c;
+  c.kind = Kind::kTurntable;
+  c.radial_axis = radial;
+  c.up_axis = up;
+  c.radius_m = r;
+  c.rpm = rpm;
+  c.duration_s = duration_s;
+  char buf[96];
+  std::snprintf(buf, sizeof buf, "%s radial, %s up, r = %.2f m, %.0f rpm", radial.c_str(),
+                up.c_str(), r, rpm);
+  c.label = buf;
+  return c;
+}
+
+std::string SignLabel(const Eigen::Vector3d& v) {
+  std::string s;
+  for (int j = 0; j < 3; ++j) {
+    if (v(j) == 0.0) continue;
+    s += v(j) > 0 ? "+" : "-";
+    s += "xyz"[j];
+  }
+  return s;
+}
+
+}  // namespace
+
+std::vector<CaptureSpec> SeedPlan(double static_s, double turntable_s) {
+  std::vector<CaptureSpec> plan;
+  const char* faces[] = {"+z", "-z", "+x", "-x", "+y", "-y"};
+  for (const char* f : faces) plan.push_back(Static(std::string(f) + " up", AxisVector(f), static_s));
+  for (const Eigen::Vector3d& v :
+       {Eigen::Vector3d(1, 1, 1), Eigen::Vector3d(1, 1, -1), Eigen::Vector3d(1, -1, 1)})
+    plan.push_back(Static("tilted " + SignLabel(v), v, static_s));
+  const std::pair<const char*, const char*> mounts[] = {{"+x", "+z"}, {"+y", "+z"}, {"+z", "+x"}};
+  for (const auto& [radial, up] : mounts)
+    for (double r : {0.05, 0.10, 0.15}) plan.push_back(Turntable(radial, up, r, 120.0, turntable_s));
+  return plan;
+}
+
+std::vector<CaptureSpec> RichPlan(double static_s, double turntable_s) {
+  std::vector<CaptureSpec> plan;
+  // 26 directions: faces (one non-zero component), edges (two), corners (three).
+  for (int nonzero = 1; nonzero <= 3; ++nonzero)
+    for (int x = -1; x <= 1; ++x)
+      for (int y = -1; y <= 1; ++y)
+        for (int z = -1; z <= 1; ++z) {
+          if (std::abs(x) + std::abs(y) + std::abs(z) != nonzero) continue;
+          const Eigen::Vector3d v(x, y, z);
+          plan.push_back(Static((nonzero == 1 ? "" : "tilted ") + SignLabel(v) + (nonzero == 1 ? " up" : ""),
+                                v, static_s));
+        }
+  const std::pair<const char*, const char*> mounts[] = {{"+x", "+z"}, {"-x", "+z"}, {"+y", "+z"},
+                                                        {"-y", "+z"}, {"+z", "+x"}, {"-z", "+x"}};
+  const std::pair<double, double> runs[] = {{0.05, 120}, {0.10, 120}, {0.15, 120}, {0.10, 90}, {0.15, 150}};
+  for (const auto& [radial, up] : mounts)
+    for (const auto& [r, rpm] : runs) plan.push_back(Turntable(radial, up, r, rpm, turntable_s));
+  return plan;
+}
+
+Sensor DrawSensor(const Sensor& nominal, std::mt19937_64& rng) {
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  Sensor s = nominal;
+  for (int j = 0; j < 3; ++j) {
+    s.bias_counts(j) = 2048.0 + 20.0 * u(rng);
+    s.scale_counts_per_mps2(j) = 34.8 * (1.0 + 0.02 * u(rng));
+  }
+  s.a_yz_rad = 0.008 * u(rng);
+  s.a_zy_rad = 0.008 * u(rng);
+  s.a_zx_rad = 0.008 * u(rng);
+  return s;
+}
+
+}  // namespace physgen
