@@ -16,6 +16,8 @@ SessionModel::SessionModel(SessionJournal& journal)
       result_(journal.Result()),
       record_steps_(journal.RecordSteps()) {
   for (const std::string& step : record_steps_) records_[step] = journal.RecordSummaryOf(step);
+  // Each capture's statistics computed once here; every copy the wizard makes carries them.
+  for (const JournalCapture& c : captures_) c.capture.stats();
 }
 
 void SessionModel::RecordInput(const std::string& step_id, const std::string& key,
