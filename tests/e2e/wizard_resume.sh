@@ -7,7 +7,7 @@ accelcal=$1
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 fail() { echo "FAIL: $*" >&2; exit 1; }
-RANDOM=4242  # deterministic delays
+RANDOM=4242  # deterministic kill instants
 
 run_wizard() { { yes '' || true; } | "$accelcal" wizard --source sim --speed 0 --session "$work/s.db" --plain; }
 
@@ -18,14 +18,27 @@ captures_now() {
   grep -v '^#' "$work/c.csv" | tail -n +2 | cut -d, -f1 | uniq | tee "$work/ids" | wc -l
 }
 
+# Each round is killed when its output has grown past a random size: an instant in the
+# session's progress, not in wall-clock time, so a slow (loaded, sanitized) machine kills at the
+# same kind of moments as a fast one. A round that finishes before its instant is not killed.
+killed_after_bytes() {  # $1: the run's pid, $2: its output file, $3: size in bytes
+  local waited=0
+  while kill -0 "$1" 2>/dev/null && [ "$(stat -c %s "$2" 2>/dev/null || echo 0)" -lt "$3" ]; do
+    sleep 0.005
+    waited=$((waited + 1))
+    [ "$waited" -lt 12000 ] || fail "a run made no progress in a minute"
+  done
+  # The wizard runs in a pipeline's subshell; kill -9 the accelcal process itself.
+  local target
+  target=$(pgrep -P "$1" -x accelcal || true)
+  [ -n "$target" ] && kill -9 $target 2>/dev/null || true
+}
+
 previous=0 resumed=0
 for round in $(seq 1 8); do
   run_wizard >"$work/out.$round" 2>&1 &
   pid=$!
-  sleep "0.$(printf '%02d' $((RANDOM % 30 + 2)))"
-  # The wizard runs in a pipeline's subshell; kill -9 the accelcal process itself.
-  pkill_target=$(pgrep -P "$pid" -x accelcal || true)
-  [ -n "$pkill_target" ] && kill -9 $pkill_target 2>/dev/null || true
+  killed_after_bytes "$pid" "$work/out.$round" $((RANDOM % 9000 + 300))
   wait "$pid" 2>/dev/null || true
   grep -q "Resuming session" "$work/out.$round" && resumed=$((resumed + 1))
   now=$(captures_now)
