@@ -23,6 +23,14 @@ grep -q "Result: *INCOMPLETE" "$work/report" || fail "the session's report does 
 tr -s ' \n' '  ' < "$work/report" | grep -qF "Gravity used: 9.80665 +- 0.02309 m/s^2 (standard gravity, not the local value)" ||
   fail "the report does not say what gravity was used"
 
+# Declined: the base model keeps the same error in its scales: still not PASS. (Welcome 4,
+# noise floor 1, leveling 3, 9 poses, 9 runs x 3, fit 1: the 46th answer is the diagnosis's.)
+wizard clumsy_local_gravity.toml "$work/n.db" "$(printf '\\n%.0s' $(seq 45))n\\n"
+said "Adopt rpm_scale into the calibration?"
+said "Model: the nine-parameter base model"
+said "Verdict: INCOMPLETE"
+"$accelcal" report "$work/n.db" | grep -q "Result: *INCOMPLETE" || fail "declined: the report does not say INCOMPLETE"
+
 # The measured value at the welcome (device, operator, place by default, then gravity).
 wizard clumsy_local_gravity.toml "$work/g.db" '\n\n\n9.7803 +- 0.00001\n'
 said "Verdict: PASS"

@@ -13,9 +13,9 @@ short_procedure
 # First run: welcome, noise floor, leveling, three poses, then q.
 wizard bench_default.toml "$work/s.db" '\n\n\n\n\n\n\n\n\n\n\nq\n'
 said "Saved."
-sleep 1
 wizard bench_default.toml "$work/s.db" ''
 said "Resuming session"
+said "The session clock goes on at t = "
 said "Verdict: PASS"
 "$accelcal" export "$work/s.db" -o "$work/c.csv" > /dev/null
 "$accelcal" fit "$work/c.csv" -o "$work/fit.json" > "$work/fit.out" 2>&1 || { cat "$work/fit.out" >&2; fail "the export does not fit"; }

@@ -93,6 +93,7 @@ TEST(CalibrationFile, ASessionResultCarriesItsGaps) {
   SessionGaps gaps;
   gaps.steps.push_back({"pose_mx", "-x up", "skipped", true});
   gaps.identification.push_back("operator");
+  gaps.gravity_ambiguity = "rpm_scale found while gravity is the standard value";
   const std::string text = SessionResultJsonText(Example(), gaps);
   EXPECT_EQ(CalibrationFromJsonText(text, "r").model.ToVector(), Example().model.ToVector());
   ReportInputs in;
@@ -102,6 +103,7 @@ TEST(CalibrationFile, ASessionResultCarriesItsGaps) {
   EXPECT_EQ(in.gaps->steps[0].title, "-x up");
   EXPECT_TRUE(in.gaps->steps[0].required);
   EXPECT_EQ(in.gaps->identification, std::vector<std::string>{"operator"});
+  EXPECT_EQ(in.gaps->gravity_ambiguity, "rpm_scale found while gravity is the standard value");
 }
 
 TEST(CalibrationFile, RefusesAnotherFormat) {

@@ -297,6 +297,21 @@ TEST(ReportModel, ASpeedScaleOnTheStandardGravityIsIncomplete) {
   EXPECT_EQ(GravityAmbiguityNote(GravitySpec::Standard(), {"bias_drift"}), "");
 }
 
+// The same scale found and declined: the base model carries the gravity error in its scales,
+// and the calibration file shows no effect; the session's gaps remember the finding.
+TEST(ReportModel, ASpeedScaleDeclinedOnTheStandardGravityIsIncompleteToo) {
+  ReportInputs in = FixtureInputs();
+  in.calibration.gravity = GravitySpec::Standard();
+  in.gaps = SessionGaps{};
+  EXPECT_EQ(BuildReportModel(in).verdict, Verdict::kPass);  // nothing found: standard is fine
+  in.gaps->gravity_ambiguity = GravityAmbiguityNote(GravitySpec::Standard(), {"rpm_scale"});
+  ASSERT_FALSE(in.gaps->gravity_ambiguity.empty());
+  const ReportModel m = BuildReportModel(in);
+  EXPECT_EQ(m.verdict, Verdict::kIncomplete);
+  ASSERT_EQ(m.incomplete.size(), 1u);
+  EXPECT_TRUE(Contains(m.incomplete[0], "gravity not established")) << m.incomplete[0];
+}
+
 TEST(ReportModel, FromSessionCapturesMeasuresNoiseAndTemperature) {
   sim::VirtualBench bench(sim::DefaultScenario());
   std::vector<Capture> captures = bench.SimulateCaptureSet();

@@ -14,7 +14,8 @@ nlohmann::json SessionGapsToJson(const SessionGaps& gaps) {
   nlohmann::json steps = nlohmann::json::array();
   for (const SessionGaps::Step& s : gaps.steps)
     steps.push_back({{"id", s.id}, {"title", s.title}, {"why", s.why}, {"required", s.required}});
-  return {{"steps", steps}, {"identification", gaps.identification}};
+  return {{"steps", steps}, {"identification", gaps.identification},
+          {"gravity_ambiguity", gaps.gravity_ambiguity}};
 }
 
 SessionGaps SessionGapsFromJson(const nlohmann::json& j, const std::string& source) {
@@ -41,6 +42,7 @@ SessionGaps SessionGapsFromJson(const nlohmann::json& j, const std::string& sour
       gaps.identification.push_back(ids[i].get<std::string>());
     }
   }
+  gaps.gravity_ambiguity = OptionalString(j, "gravity_ambiguity", "session_gaps.", source);
   return gaps;
 }
 

@@ -116,9 +116,10 @@ std::vector<std::string> IncompleteReasons(const std::optional<SessionGaps>& gap
   for (const CalibrationEffect& e : cal.effects) names.push_back(e.name);
   bool turntable = false;
   for (const CalibrationCapture& c : cal.captures) turntable = turntable || (c.used && c.kind == CaptureKind::kTurntable);
-  if (turntable && !GravityAmbiguityNote(cal.gravity, names).empty())
-    out.push_back("gravity not established: a speed or radius scale was adopted while gravity is "
-                  "the standard value (a gravity error looks the same)");
+  const bool found = gaps && !gaps->gravity_ambiguity.empty();
+  if (found || (turntable && !GravityAmbiguityNote(cal.gravity, names).empty()))
+    out.push_back("gravity not established: the diagnosis found a turntable speed or radius scale "
+                  "while gravity is the standard value (a gravity error looks the same)");
   return out;
 }
 

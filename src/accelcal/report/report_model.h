@@ -119,6 +119,9 @@ struct SessionGaps {
   };
   std::vector<Step> steps;                  // in procedure order
   std::vector<std::string> identification;  // required and empty: "device serial", "operator"
+  // The diagnosis found a turntable speed or radius scale while gravity was the standard value
+  // (adopted or declined: the base model then carries the same error): its note, else empty.
+  std::string gravity_ambiguity;
 };
 
 // PASS: every limit met and nothing required missing. FAIL: a limit not met. INCOMPLETE: the

@@ -121,6 +121,8 @@ StepOutcome CalibrationSteps::Fit() {
     return out;
   }
   out.lines = SplitLines(FormatFitReport(o.MakeCalibration(false), fit));
+  const std::vector<std::string> gravity = WrapWords("Gravity: " + gravity_.Describe(), 78);
+  out.lines.insert(out.lines.begin(), gravity.begin(), gravity.end());
   return out;
 }
 
@@ -140,7 +142,7 @@ StepOutcome CalibrationSteps::Diagnosis() {
 }
 
 StepOutcome CalibrationSteps::Report(bool adopt_effects, const ReportMeta& meta,
-                                     const SessionGaps& gaps) {
+                                     const SessionGaps& session_gaps) {
   const CalibrationOutcome& o = Run();
   StepOutcome out;
   const bool adopt = adopt_effects && !o.diagnosis.adopted.empty();
@@ -151,8 +153,12 @@ StepOutcome CalibrationSteps::Report(bool adopt_effects, const ReportMeta& meta,
     return out;
   }
   const Calibration cal = o.MakeCalibration(adopt);
+  SessionGaps gaps = session_gaps;
+  gaps.gravity_ambiguity = GravityAmbiguityNote(gravity_, o.diagnosis.adopted_names());
   model_.RecordResult(SessionResultJsonText(cal, gaps));
   out.lines = SplitLines(FormatFitReport(cal, summary));
+  const std::vector<std::string> gravity = WrapWords("Gravity: " + gravity_.Describe(), 78);
+  out.lines.insert(out.lines.begin(), gravity.begin(), gravity.end());
   out.lines.push_back(adopt ? fmt::format("Effects adopted: {}", fmt::join(o.diagnosis.adopted_names(), ", "))
                             : "Model: the nine-parameter base model");
   ReportInputs in;

@@ -68,7 +68,7 @@ NoiseFloorRecheck NoiseFloorGuard::Recheck(const Capture& latest,
 
 std::string NoiseFloorGuard::Describe() const {
   if (!floor_) return "";
-  return fmt::format("{} counts ({})", Triad(floor_->std_counts), floor_->source);
+  return fmt::format("{} counts, {}", Triad(floor_->std_counts), floor_->source);
 }
 
 }  // namespace accelcal
