@@ -12,6 +12,7 @@
 #                              bench's truth (scenarios/bench_default.toml); else prints them
 #   said TEXT                  $work/out holds TEXT (fixed string; runs of blanks and line
 #                              breaks read as one blank, so wrapped lines match)
+#   flat FILE TEXT             the same for any FILE (status only)
 
 short_procedure() {
   sed -e 's/^capture_duration_s = 10 /capture_duration_s = 3 /' \
@@ -51,5 +52,13 @@ within_truth() {  # K
 }
 
 said() {
-  tr -s ' \n' '  ' < "$work/out" | grep -qF -- "$1" || { tail -30 "$work/out" >&2; fail "never said: $1"; }
+  flat "$work/out" "$1" || { tail -30 "$work/out" >&2; fail "never said: $1"; }
+}
+
+# flat FILE TEXT: FILE holds TEXT, blanks and line breaks read as one blank. Never `producer |
+# grep -q`: under pipefail, grep leaving at the first match can kill the producer with SIGPIPE
+# and fail a check that matched, depending on how the two processes are scheduled.
+flat() {
+  tr -s ' \n' '  ' < "$1" > "$1.flat"
+  grep -qF -- "$2" "$1.flat"
 }
