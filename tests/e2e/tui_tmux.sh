@@ -23,11 +23,11 @@ trap 'tmx kill-server 2>/dev/null; rm -rf "$work"' EXIT
 
 # Starts the wizard in a detached session of the given size. After it exits, the pane's shell
 # writes its exit status and the terminal modes (icanon and echo must be back on).
-start() {  # NAME COLS ROWS [VAR=VALUE...]
-  local name=$1 cols=$2 rows=$3; shift 3
+start() {  # NAME COLS ROWS [VAR=VALUE] [WIZARD ARGS...]
+  local name=$1 cols=$2 rows=$3 vars=${4:-}; shift 3; [ $# -gt 0 ] && shift
   cat > "$work/$name.sh" <<EOS
 cd "$work"
-env $* "$ACCELCAL" wizard --source sim --speed 0 --session "$work/$name.db"
+env $vars "$ACCELCAL" wizard --source sim --speed 0 --session "$work/$name.db" $*
 status=\$?
 echo "EXIT=\$status \$(stty -a | grep -o -- ' -\\?icanon') \$(stty -a | grep -o -- ' -\\?echo ')" > "$work/$name.exit"
 sleep 60
@@ -87,7 +87,40 @@ echo "full: final screen reached"
 tmx send-keys -t full q
 check_restored full
 
-# --- 2. NO_COLOR: no colour escapes on screen; q saves and leaves in the middle.
+# --- 2. The clumsy bench in the TUI: a procedure of one step, a scenario with one fault; Enter
+# until the final screen; what the technician is told must have been on the screen.
+# Enter is sent only to a screen that waits for it (its keys line offers Enter), never while a
+# measurement runs: a key sent during a capture could otherwise be read by the refusal that
+# ends it, and the refusal would leave the screen between two looks (flaky on a loaded machine).
+# A screen that waits does not change by itself, so the text is always seen before Enter goes.
+# The deadline only guards against a hang.
+# Usage: clumsy NAME SCENARIO STEP_ID TEXT
+seed_procedure="$SOURCE_DIR/procedures/seed_calibration.toml"
+clumsy() {
+  local name=$1 scenario=$2 step=$3 text=$4
+  { sed '/^\[\[step\]\]/,$d' "$seed_procedure"
+    awk -v id="$step" 'BEGIN { RS = ""; ORS = "\n\n" }
+      $0 ~ "\\[\\[step\\]\\]\nid = \"" id "\"" { sub(/^[^[]*\[\[step\]\]/, "[[step]]"); print }' "$seed_procedure"
+  } > "$work/$name.toml"
+  start "$name" 100 32 "" --scenario "$SOURCE_DIR/scenarios/$scenario" --procedure "$work/$name.toml"
+  local deadline=$((SECONDS + 240)) seen=0
+  while [ $SECONDS -lt $deadline ]; do
+    sleep 0.3
+    s=$(screen_of "$name")
+    echo "$s" | tr -s ' \n' ' ' | grep -qF "$text" && seen=1
+    echo "$s" | grep -q 'any key leave' && break
+    echo "$s" | grep -q '  Enter [a-z]' && tmx send-keys -t "$name" Enter 2>/dev/null
+  done
+  [ $seen = 1 ] || fail "$name: never saw '$text' on the screen"
+  echo "$s" | grep -q 'any key leave' || fail "$name: no final screen"
+  tmx send-keys -t "$name" q
+  check_restored "$name"
+  echo "$name: told '$text'"
+}
+clumsy axis clumsy_wrong_axis.toml tt_x_050 "wrong mounting: the samples show +y radial, +z up"
+clumsy level clumsy_tilted_table.toml level "the table is not level: raise the left side by about"
+
+# --- 3. NO_COLOR: no colour escapes on screen; q saves and leaves in the middle.
 start mono 100 32 NO_COLOR=1
 sleep 2
 tmx send-keys -t mono Enter

@@ -1,5 +1,6 @@
 #include "accelcal/io/calibration_file.h"
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 
@@ -65,6 +66,44 @@ TEST(CalibrationFile, FileRoundTripIsExact) {
   EXPECT_EQ(back.captures[0].label, Example().captures[0].label);
   EXPECT_FALSE(std::filesystem::exists(path + ".tmp"));
   std::filesystem::remove(path);
+}
+
+TEST(CalibrationFile, GravityAndItsUncertaintyRoundTrip) {
+  for (const GravitySpec& g : {GravitySpec::Given(9.7803, 0.00002), GravitySpec::Standard(),
+                               GravitySpec::FromLocation(-34.9, 43.0)}) {
+    Calibration cal = Example();
+    cal.gravity = g;
+    const Calibration back = CalibrationFromJson(CalibrationToJson(cal), "cal.json");
+    EXPECT_EQ(back.gravity.source, g.source);
+    EXPECT_DOUBLE_EQ(back.gravity.gravity_mps2, g.gravity_mps2);
+    EXPECT_DOUBLE_EQ(back.gravity.sigma_mps2, g.sigma_mps2);
+    EXPECT_DOUBLE_EQ(back.gravity.latitude_deg, g.latitude_deg);
+  }
+  // A file written before the uncertainty was recorded: the source's own, or "not stated".
+  json j = CalibrationToJson(Example());
+  j["gravity_source"].erase("sigma_mps2");
+  EXPECT_TRUE(std::isnan(CalibrationFromJson(j, "cal.json").gravity.sigma_mps2));
+  j["gravity_source"]["source"] = "standard";
+  EXPECT_NEAR(CalibrationFromJson(j, "cal.json").gravity.sigma_mps2, kStandardGravitySigmaMps2, 1e-15);
+  j["gravity_source"]["sigma_mps2"] = "big";
+  EXPECT_NE(Expect(j).find("gravity_source.sigma_mps2"), std::string::npos) << Expect(j);
+}
+
+TEST(CalibrationFile, ASessionResultCarriesItsGaps) {
+  SessionGaps gaps;
+  gaps.steps.push_back({"pose_mx", "-x up", "skipped", true});
+  gaps.identification.push_back("operator");
+  gaps.gravity_ambiguity = "rpm_scale found while gravity is the standard value";
+  const std::string text = SessionResultJsonText(Example(), gaps);
+  EXPECT_EQ(CalibrationFromJsonText(text, "r").model.ToVector(), Example().model.ToVector());
+  ReportInputs in;
+  ReadAnalysesFromResultText(text, "r", &in);
+  ASSERT_TRUE(in.gaps.has_value());
+  ASSERT_EQ(in.gaps->steps.size(), 1u);
+  EXPECT_EQ(in.gaps->steps[0].title, "-x up");
+  EXPECT_TRUE(in.gaps->steps[0].required);
+  EXPECT_EQ(in.gaps->identification, std::vector<std::string>{"operator"});
+  EXPECT_EQ(in.gaps->gravity_ambiguity, "rpm_scale found while gravity is the standard value");
 }
 
 TEST(CalibrationFile, RefusesAnotherFormat) {

@@ -1,5 +1,7 @@
 #include "accelcal/base/gravity.h"
 
+#include <cmath>
+
 #include <gtest/gtest.h>
 
 namespace accelcal {
@@ -26,6 +28,18 @@ TEST(Gravity, ValidateCatchesUnitMistakes) {
   EXPECT_NE(GravitySpec::FromLocation(120.0, 0.0).Validate(), "");
   EXPECT_NE(GravitySpec::FromLocation(45.0, 45000.0).Validate(), "");  // feet? km?
   EXPECT_TRUE(GravitySpec::FromLocation(-34.9, 43.0).Validate().empty());
+}
+
+TEST(Gravity, EachSourceCarriesItsStandardUncertainty) {
+  // The standard value: Earth's surface spans about 9.76..9.84 m/s^2, rectangular around it.
+  EXPECT_NEAR(GravitySpec::Standard().sigma_mps2, 0.04 / std::sqrt(3.0), 1e-12);
+  EXPECT_NEAR(GravitySpec::FromLocation(45.0, 100.0).sigma_mps2, 0.0005, 1e-6);
+  EXPECT_DOUBLE_EQ(GravitySpec::Given(9.81, 0.0001).sigma_mps2, 0.0001);
+  EXPECT_TRUE(std::isnan(GravitySpec::Given(9.81).sigma_mps2));  // not stated
+  EXPECT_NE(GravitySpec::Given(9.81, -0.1).Validate(), "");
+  EXPECT_NE(GravitySpec::Given(9.81, 0.5).Validate(), "");
+  EXPECT_NE(GravitySpec::Given(9.7803, 0.00002).Describe().find("+- 0.00002"), std::string::npos);
+  EXPECT_NE(GravitySpec::Standard().Describe().find("not the local value"), std::string::npos);
 }
 
 TEST(Gravity, DescribeNamesTheSource) {

@@ -246,6 +246,72 @@ TEST(ReportModel, LimitsAreCheckedAgainstIndependentFigures) {
   EXPECT_EQ(m.verdict, Verdict::kFail);
 }
 
+// Issue 12, problem 4: a skipped step vanished and the report said PASS.
+TEST(ReportModel, ASkippedRequiredStepOrAMissingOperatorMakesItIncomplete) {
+  ReportInputs in = FixtureInputs();
+  ASSERT_EQ(BuildReportModel(in).verdict, Verdict::kPass);
+  SessionGaps gaps;
+  gaps.steps.push_back({"diagnosis", "Diagnosis", "skipped", false});
+  in.gaps = gaps;
+  ReportModel m = BuildReportModel(in);
+  EXPECT_EQ(m.verdict, Verdict::kPass);  // not required: listed, not held against it
+  const std::string listed = RenderReportText(m);
+  EXPECT_TRUE(Contains(listed, "7. Steps skipped or missing")) << listed;
+  EXPECT_TRUE(Contains(listed, "Diagnosis (diagnosis): skipped")) << listed;
+  in.gaps->steps.push_back({"pose_mx", "-x up", "skipped", true});
+  m = BuildReportModel(in);
+  EXPECT_EQ(m.verdict, Verdict::kIncomplete);
+  ASSERT_EQ(m.incomplete.size(), 1u);
+  EXPECT_EQ(m.incomplete[0], "required step '-x up' skipped");
+  const std::string text = RenderReportText(m);
+  EXPECT_TRUE(Contains(text, "Result:             INCOMPLETE")) << text;
+  EXPECT_TRUE(Contains(text, "-x up (pose_mx, required): skipped")) << text;
+  EXPECT_TRUE(Contains(RenderReportHtml(m), "INCOMPLETE:</b> required step &#39;-x up&#39; skipped") ||
+              Contains(RenderReportHtml(m), "INCOMPLETE:</b> required step '-x up' skipped"));
+  EXPECT_EQ(json::parse(ReportJsonText(m)).at("verdict"), "INCOMPLETE");
+  in.gaps->steps.clear();
+  in.gaps->identification = {"operator"};
+  EXPECT_EQ(BuildReportModel(in).verdict, Verdict::kIncomplete);
+  // A limit that fails is FAIL, whatever else is missing.
+  in.limits->min_captures = 19;
+  EXPECT_EQ(BuildReportModel(in).verdict, Verdict::kFail);
+}
+
+// Issue 12, problem 1: a speed scale adopted on the standard gravity cannot be told from a
+// gravity error: the report cannot say PASS.
+TEST(ReportModel, ASpeedScaleOnTheStandardGravityIsIncomplete) {
+  ReportInputs in = FixtureInputs();
+  CalibrationEffect rpm;
+  rpm.name = "rpm_scale";
+  rpm.parameters.push_back({"rpm_scale", "", -0.0013, 0.0001});
+  in.calibration.effects = {rpm};
+  EXPECT_EQ(BuildReportModel(in).verdict, Verdict::kPass);  // WGS84 gravity: the speed it is
+  in.calibration.gravity = GravitySpec::Standard();
+  const ReportModel m = BuildReportModel(in);
+  EXPECT_EQ(m.verdict, Verdict::kIncomplete);
+  ASSERT_EQ(m.incomplete.size(), 1u);
+  EXPECT_TRUE(Contains(m.incomplete[0], "gravity not established")) << m.incomplete[0];
+  EXPECT_TRUE(Contains(GravityAmbiguityNote(GravitySpec::Standard(), {"rpm_scale"}),
+                       "the data cannot tell a gravity error from a speed or radius error"));
+  EXPECT_EQ(GravityAmbiguityNote(GravitySpec::Given(9.7803, 1e-5), {"rpm_scale"}), "");
+  EXPECT_EQ(GravityAmbiguityNote(GravitySpec::Standard(), {"bias_drift"}), "");
+}
+
+// The same scale found and declined: the base model carries the gravity error in its scales,
+// and the calibration file shows no effect; the session's gaps remember the finding.
+TEST(ReportModel, ASpeedScaleDeclinedOnTheStandardGravityIsIncompleteToo) {
+  ReportInputs in = FixtureInputs();
+  in.calibration.gravity = GravitySpec::Standard();
+  in.gaps = SessionGaps{};
+  EXPECT_EQ(BuildReportModel(in).verdict, Verdict::kPass);  // nothing found: standard is fine
+  in.gaps->gravity_ambiguity = GravityAmbiguityNote(GravitySpec::Standard(), {"rpm_scale"});
+  ASSERT_FALSE(in.gaps->gravity_ambiguity.empty());
+  const ReportModel m = BuildReportModel(in);
+  EXPECT_EQ(m.verdict, Verdict::kIncomplete);
+  ASSERT_EQ(m.incomplete.size(), 1u);
+  EXPECT_TRUE(Contains(m.incomplete[0], "gravity not established")) << m.incomplete[0];
+}
+
 TEST(ReportModel, FromSessionCapturesMeasuresNoiseAndTemperature) {
   sim::VirtualBench bench(sim::DefaultScenario());
   std::vector<Capture> captures = bench.SimulateCaptureSet();
@@ -315,7 +381,7 @@ TEST(ReportModel, StagesAreTheDiagnosisResidualsNotARefit) {
   }
   // The same from the file: the stages travel with the calibration.
   const ReportModel from_file = BuildReportModel(
-      {CalibrationFromJsonText(CalibrationToJsonText(in.calibration), "c.json"), {}, {}, {}, {}, {}});
+      {CalibrationFromJsonText(CalibrationToJsonText(in.calibration), "c.json"), {}, {}, {}, {}, {}, {}});
   ASSERT_EQ(from_file.stages.size(), 2u);
   EXPECT_EQ(from_file.stages[1].residual_mps2, m.stages[1].residual_mps2);
 }

@@ -63,7 +63,7 @@ TEST(SimSourceTest, PlacementTurnsGravityInTheSamples) {
   SamplesBetween(source, 0.0, 2.0);
   ASSERT_NE(source.bench(), nullptr);
   const double placed_s = source.now_s();
-  source.bench()->PlaceStatic(Eigen::Vector3d(-1.0, 0.0, 0.0));
+  source.bench()->PlaceStatic(Eigen::Vector3d(-1.0, 0.0, 0.0), 0.0);
   // Moving while it settles...
   const std::vector<Sample> settling = SamplesBetween(source, placed_s, placed_s + 1.5);
   // ...then still with -x up, gravity where the pose says (placement error ~0.5 deg).
@@ -101,7 +101,7 @@ TEST(SimSourceTest, BumpsDisturbTheStillPeriod) {
   SimSource source(sim::DefaultScenario(), options);
   SamplesBetween(source, 0.0, 1.0);
   const double placed_s = source.now_s();
-  source.PlaceStatic(Eigen::Vector3d(0.0, 1.0, 0.0));
+  source.PlaceStatic(Eigen::Vector3d(0.0, 1.0, 0.0), 0.0);
   EXPECT_EQ(source.bumps_scheduled(), 1);
   const std::vector<Sample> after = SamplesBetween(source, placed_s + options.settle_s, placed_s + 10.0);
   double worst = 0.0;
@@ -123,7 +123,7 @@ TEST(SimSourceTest, RealTimeMultipliedBySpeedDeliversInOrder) {
 
 TEST(SimSourceTest, BadPlacementsAreRefused) {
   SimSource source(sim::DefaultScenario(), Fast());
-  EXPECT_THROW(source.PlaceStatic(Eigen::Vector3d::Zero()), Error);
+  EXPECT_THROW(source.PlaceStatic(Eigen::Vector3d::Zero(), 0.0), Error);
   EXPECT_THROW(source.PlaceTurntable(0.1, 120.0, sim::SensorAxis::kPlusX, sim::SensorAxis::kMinusX),
                Error);
   EXPECT_THROW(source.PlaceTurntable(-0.1, 120.0, sim::SensorAxis::kPlusX, sim::SensorAxis::kPlusZ),

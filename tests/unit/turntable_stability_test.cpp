@@ -89,8 +89,71 @@ TEST(TurntableStability, StrongTiltIsRefused) {
                                                Entered(0.10, 120), TurntableStabilityOptions{});
   EXPECT_FALSE(v.level);
   EXPECT_TRUE(v.steady);
-  EXPECT_TRUE(Contains(v.reason, "table tilted 3.")) << v.reason;
-  EXPECT_TRUE(Contains(v.reason, "limit 2 deg: level the turntable")) << v.reason;
+  EXPECT_TRUE(Contains(v.reason, "the turntable is tilted 3.")) << v.reason;
+  EXPECT_TRUE(Contains(v.reason, "tolerance 2 deg: level the turntable")) << v.reason;
+}
+
+// Issue 12, problem 2: at "+x radial, +z up" a sensor mounted +y radial was accepted.
+TEST(TurntableStability, AWrongMountingIsRefusedNamingTheRadialAxis) {
+  sim::Scenario s = OneRun();
+  s.captures[0].radial_axis = sim::SensorAxis::kPlusY;  // the truth: +y outward
+  const TurntableVerdict v =
+      EvaluateTurntable(RunSamples(s), kModel, Entered(0.10, 120), TurntableStabilityOptions{});
+  EXPECT_FALSE(v.ok);
+  EXPECT_FALSE(v.mounted_as_asked);
+  EXPECT_TRUE(v.steady);  // steady but wrong: the capture engine rejects it
+  EXPECT_EQ(v.mounting_found, "+y radial, +z up");
+  EXPECT_TRUE(Contains(v.reason, "wrong mounting: the samples show +y radial, +z up (the "
+                                 "centripetal 15.")) << v.reason;
+  EXPECT_TRUE(Contains(v.reason, "is on y), not +x radial, +z up: mount the sensor with +x "
+                                 "pointing away from the spin axis and +z up")) << v.reason;
+  // Upside down, and turned inward.
+  s.captures[0].radial_axis = sim::SensorAxis::kPlusX;
+  s.captures[0].up_axis = sim::SensorAxis::kMinusZ;
+  EXPECT_EQ(EvaluateTurntable(RunSamples(s), kModel, Entered(0.10, 120), {}).mounting_found, "+x radial, -z up");
+  s.captures[0].radial_axis = sim::SensorAxis::kMinusX;
+  s.captures[0].up_axis = sim::SensorAxis::kPlusZ;
+  EXPECT_EQ(EvaluateTurntable(RunSamples(s), kModel, Entered(0.10, 120), {}).mounting_found, "-x radial, +z up");
+}
+
+TEST(TurntableStability, ARightMountingPassesWhateverTheEnteredRadius) {
+  // The mounting check fits the centripetal load itself: a radius typo is the radius check's.
+  const TurntableVerdict v =
+      EvaluateTurntable(RunSamples(OneRun()), kModel, Entered(0.05, 120), TurntableStabilityOptions{});
+  EXPECT_TRUE(v.mounted_as_asked);
+  EXPECT_FALSE(v.consistent);
+  EXPECT_TRUE(Contains(v.reason, "m at 120 rpm)")) << v.reason;
+}
+
+// Issue 13, item 3: the once-per-revolution swing of a tilted table is fitted, its tilt
+// reported, and removed from the samples: what is left is the sensor's own noise.
+TEST(TurntableStability, TheSwingIsFittedAndRemovedLeavingTheSensorsNoise) {
+  const double tilt_rad = 2.0 * M_PI / 180.0;
+  std::vector<Sample> samples = RunSamples(OneRun(tilt_rad));
+  TurntableStabilityOptions o;
+  o.max_tilt_deg = 3.0;
+  const TurntableVerdict v = EvaluateTurntable(samples, kModel, Entered(0.10, 120), o);
+  ASSERT_TRUE(v.ok) << v.reason;
+  EXPECT_NEAR(v.tilt_deg, 2.0, 0.1);
+  const Eigen::Vector3d before = ComputeStats(samples).StdCounts();
+  const Eigen::Vector3d mean_before = ComputeStats(samples).mean_counts;
+  RemoveOncePerRevolution(&samples, v.swing);
+  const Eigen::Vector3d after = ComputeStats(samples).StdCounts();
+  const Eigen::Vector3d noise = sim::DefaultScenario().sensor.noise_counts;
+  // Gravity's horizontal part (0.34 m/s^2, ~12 counts) swings on x and y; z does not move.
+  EXPECT_GT(before.x(), 4.0 * noise.x());
+  EXPECT_NEAR(after.x(), noise.x(), 0.15 * noise.x());
+  EXPECT_NEAR(after.y(), noise.y(), 0.15 * noise.y());
+  EXPECT_NEAR(after.z(), noise.z(), 0.15 * noise.z());
+  // Whole revolutions: the mean stays.
+  EXPECT_NEAR((ComputeStats(samples).mean_counts - mean_before).norm(), 0.0, 0.1);
+  // Tolerance exceeded: refused with the tilt and what to do.
+  o.max_tilt_deg = 0.5;
+  const TurntableVerdict refused = EvaluateTurntable(RunSamples(OneRun(tilt_rad)), kModel, Entered(0.10, 120), o);
+  EXPECT_FALSE(refused.level);
+  EXPECT_TRUE(Contains(refused.reason, "the turntable is tilted 2 deg")) << refused.reason;
+  EXPECT_TRUE(Contains(refused.reason, "tolerance 0.5 deg: level the turntable (a spirit level on "
+                                       "its plate, turn its feet)")) << refused.reason;
 }
 
 TEST(TurntableStability, UnsteadySpeedIsCaught) {

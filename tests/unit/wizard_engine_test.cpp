@@ -70,6 +70,15 @@ void AcceptUntil(WizardEngine& e, const std::function<bool(const WizardView&)>& 
 }
 
 bool Never(const WizardView&) { return false; }
+
+// At the first capture step the wizard asks to measure the noise floor: measure it (the sensor
+// rests on the sim), and stop at the step's own prompt.
+void PassNoiseFloor(WizardEngine& e) {
+  PollUntilQuestion(e);
+  if (e.View().prompt.rfind("Noise floor:", 0) != 0) return;
+  e.Handle({IntentKind::kAccept, ""});
+  PollUntilQuestion(e);
+}
 auto TitleIs(const std::string& title) {
   return [title](const WizardView& v) { return v.step_title == title; };
 }
@@ -114,6 +123,13 @@ TEST(WizardEngineTest, WelcomeTakesTypedAnswersAndGoesBack) {
   rig.engine.Handle({IntentKind::kSubmitText, "ada"});
   EXPECT_EQ(rig.engine.View().input->key, "place");
   rig.engine.Handle({IntentKind::kSubmitText, "Lab 2, bench B <east>"});
+  EXPECT_EQ(rig.engine.View().input->key, "gravity");
+  EXPECT_EQ(rig.engine.View().input->default_text, "standard");  // said explicitly
+  rig.engine.Handle({IntentKind::kSubmitText, "9.80 m/s"});
+  EXPECT_NE(rig.engine.View().input->error.find("unexpected 'm/s'"), std::string::npos)
+      << rig.engine.View().input->error;
+  rig.engine.Handle({IntentKind::kSubmitText, "9.79731 +- 0.00003"});
+  EXPECT_EQ(rig.journal->Inputs().at("welcome").at("gravity"), "9.79731 +- 3e-05");
   EXPECT_EQ(rig.journal->Inputs().at("welcome").at("device"), "SN43");
   EXPECT_EQ(rig.journal->Inputs().at("welcome").at("operator"), "ada");
   EXPECT_EQ(rig.journal->Inputs().at("welcome").at("place"), "Lab 2, bench B <east>");
@@ -123,6 +139,7 @@ TEST(WizardEngineTest, WelcomeTakesTypedAnswersAndGoesBack) {
 TEST(WizardEngineTest, LevelingByReversalPassesOnTheLevelSimTable) {
   Rig rig(SeedProcedure());
   AcceptUntil(rig.engine, TitleIs("Level the table"));
+  PassNoiseFloor(rig.engine);
   EXPECT_TRUE(std::isfinite(rig.engine.View().tilt_deg.x()));  // live, before the reversal
   AcceptUntil(rig.engine, [](const WizardView& v) { return v.prompt.rfind("Tilt", 0) == 0; });
   const WizardView v = rig.engine.View();
@@ -139,6 +156,8 @@ TEST(WizardEngineTest, SkipRecordsTheStepAndBackReturnsToIt) {
   AcceptUntil(rig.engine, TitleIs("+z up"));
   PollUntilQuestion(rig.engine);
   rig.engine.Handle({IntentKind::kSkip, ""});
+  EXPECT_EQ(rig.journal->DoneSteps().count("pose_pz"), 0u);  // s asks first ...
+  rig.engine.Handle({IntentKind::kSkip, ""});                // ... s again skips
   EXPECT_EQ(rig.journal->DoneSteps().at("pose_pz"), "skipped");
   EXPECT_EQ(rig.engine.View().step_title, "-z up");
   rig.engine.Handle({IntentKind::kBack, ""});
@@ -210,9 +229,9 @@ TEST(WizardEngineTest, TurntableInputsAreRefusedWithTheReasonThenAccepted) {
 TEST(WizardEngineTest, WrongFaceIsShownAndTheRetryTakesTheRightOne) {
   Rig rig(ShortStaticProcedure(9));
   AcceptUntil(rig.engine, TitleIs("+z up"));
-  PollUntilQuestion(rig.engine);
+  PassNoiseFloor(rig.engine);
   rig.engine.Handle({IntentKind::kAccept, ""});  // the sim places +z up ...
-  rig.sim.PlaceStatic(-Eigen::Vector3d::UnitY());  // ... and the operator puts it on -y
+  rig.sim.PlaceStatic(-Eigen::Vector3d::UnitY(), 0.0);  // ... and the operator puts it on -y
   PollUntilQuestion(rig.engine);
   const WizardView v = rig.engine.View();
   EXPECT_EQ(v.screen, WizardScreen::kError);
@@ -229,7 +248,7 @@ TEST(WizardEngineTest, DuplicatePoseIsRefused) {
   AcceptUntil(rig.engine, TitleIs("-z up"));
   PollUntilQuestion(rig.engine);
   rig.engine.Handle({IntentKind::kAccept, ""});
-  rig.sim.PlaceStatic(Eigen::Vector3d::UnitZ());  // +z again: already captured
+  rig.sim.PlaceStatic(Eigen::Vector3d::UnitZ(), 0.0);  // +z again: already captured
   PollUntilQuestion(rig.engine);
   EXPECT_NE(rig.engine.View().problem.find("already captured"), std::string::npos)
       << rig.engine.View().problem;
@@ -238,7 +257,7 @@ TEST(WizardEngineTest, DuplicatePoseIsRefused) {
 TEST(WizardEngineTest, ABumpIsRetriedByItself) {
   Rig rig(ShortStaticProcedure(9), Fast(1.0));
   AcceptUntil(rig.engine, TitleIs("+z up"));
-  PollUntilQuestion(rig.engine);
+  PassNoiseFloor(rig.engine);
   std::vector<std::string> problems;
   for (int pose = 0; pose < 3; ++pose) {
     rig.engine.Handle({IntentKind::kAccept, ""});

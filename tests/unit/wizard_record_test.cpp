@@ -155,7 +155,10 @@ TEST(WizardRecordTest, AKilledRecordResumesWithTheGapRecorded) {
   Rig second(RecordProcedure(120.0, 10.0), journal, 1042.0);
   WizardView v = second.engine.View();
   EXPECT_TRUE(v.resumed);
-  RunUntil(second.engine, [](const WizardView& w) { return w.screen == WizardScreen::kPlacePose; });
+  // The noise floor is measured again first (the operator says when the sensor rests).
+  RunUntil(second.engine, [](const WizardView& w) {
+    return w.screen == WizardScreen::kPlacePose && w.prompt.rfind("Noise floor", 0) != 0;
+  });
   EXPECT_EQ(second.engine.View().prompt.rfind("Resuming the drift record: 40 s recorded", 0), 0u)
       << second.engine.View().prompt;
   RunUntil(second.engine, [](const WizardView& w) { return w.record && w.record->gaps == 1; });

@@ -10,6 +10,7 @@
 #include "accelcal/io/capture_set_reader.h"
 #include "accelcal/io/recording_reader.h"
 #include "accelcal/acquire/static_detector.h"
+#include "accelcal/report/report_model.h"
 #include "cli/commands.h"
 #include "accelcal/report/fit_text.h"
 #include "cli/gravity_options.h"
@@ -88,6 +89,9 @@ void RunFit(const FitCommandOptions& o) {
   const Calibration cal = outcome.MakeCalibration(true);
   if (!o.quiet) {
     if (!o.no_diagnose) std::cout << "\n" << FormatDiagnosis(outcome.diagnosis);
+    if (const std::string note = GravityAmbiguityNote(gravity, outcome.diagnosis.adopted_names());
+        !note.empty())
+      std::cout << "\ngravity: " << note << "\n";
     std::cout << FormatFitReport(cal, summary);
   }
   if (!o.output_path.empty()) {

@@ -1,12 +1,15 @@
 #include "cli/gravity_options.h"
 
+#include "accelcal/app/wizard/gravity_input.h"
 #include "accelcal/base/error.h"
 
 namespace accelcal::cli {
 
 void GravityFlags::Bind(CLI::App& app) {
-  gravity = app.add_option("--gravity", gravity_mps2,
-                           "Local gravity in m/s^2 (measured). Default: standard gravity 9.80665");
+  gravity = app.add_option("--gravity", gravity_text,
+                           "Local gravity in m/s^2, measured: G or G+-U (U its standard "
+                           "uncertainty; without it, the resolution typed), or 'standard' for "
+                           "9.80665. Default: standard gravity");
   latitude = app.add_option("--latitude", latitude_deg,
                             "Geodetic latitude in degrees (-90..90): use WGS84 normal gravity");
   altitude = app.add_option("--altitude", altitude_m,
@@ -18,7 +21,11 @@ void GravityFlags::Bind(CLI::App& app) {
 
 GravitySpec GravityFlags::Resolve() const {
   GravitySpec spec = GravitySpec::Standard();
-  if (gravity != nullptr && gravity->count() > 0) spec = GravitySpec::Given(gravity_mps2);
+  if (gravity != nullptr && gravity->count() > 0) {
+    const GravityAnswer answer = ParseGravityAnswer(gravity_text);
+    if (!answer.ok()) throw Error("--gravity: " + answer.error);
+    spec = answer.gravity;
+  }
   if (latitude != nullptr && latitude->count() > 0)
     spec = GravitySpec::FromLocation(latitude_deg, altitude_m);
   if (std::string e = spec.Validate(); !e.empty()) throw Error("gravity: " + e);

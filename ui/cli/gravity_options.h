@@ -1,5 +1,7 @@
 // The gravity flags shared by the subcommands that need local gravity:
-// --gravity G | --latitude DEG [--altitude M]; default standard gravity.
+// --gravity G (a measured value, "9.78030", "9.78030+-0.00002", or "standard") |
+// --latitude DEG [--altitude M]; default standard gravity (the wizard asks at its welcome, with
+// these as the default answer).
 #pragma once
 
 #include <CLI/CLI.hpp>
@@ -9,7 +11,7 @@
 namespace accelcal::cli {
 
 struct GravityFlags {
-  double gravity_mps2 = 0.0;
+  std::string gravity_text;  // as app/wizard/gravity_input.h reads it
   double latitude_deg = 0.0;
   double altitude_m = 0.0;
   CLI::Option* gravity = nullptr;   // borrowed from the App, which outlives the flags

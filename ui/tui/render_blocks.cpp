@@ -104,6 +104,9 @@ std::vector<Line> ReadingBlock(const WizardView& view) {
   if (!view.stability_text.empty()) {
     rows.push_back(Labelled("", Asciify(view.stability_text), Role::kDim));
   }
+  if (!view.noise_floor_text.empty()) {
+    rows.push_back(Labelled("noise", Asciify(view.noise_floor_text), Role::kDim));
+  }
   if (view.screen == WizardScreen::kCapturing || !std::isnan(view.progress)) {
     const double p = view.progress;
     rows.push_back(Labelled("capture", "       " + Bar(std::min(p, 0.999), kBarCells) + " " +

@@ -19,6 +19,13 @@ constexpr double kGeodeticM = 0.00344978650684;       // omega^2 a^2 b / GM
 // 9.76..9.84 m/s^2); outside it the value is almost surely a unit mistake.
 constexpr double kMinPlausibleMps2 = 9.7;
 constexpr double kMaxPlausibleMps2 = 9.9;
+constexpr double kMaxPlausibleSigmaMps2 = 0.1;
+
+// " +- 0.00050" (5 decimals, as the value), or nothing when the uncertainty is not stated.
+std::string PlusMinus(double sigma_mps2) {
+  if (std::isnan(sigma_mps2)) return "";
+  return fmt::format(" +- {:.5f}", sigma_mps2);
+}
 
 }  // namespace
 
@@ -37,10 +44,11 @@ double NormalGravityWgs84Mps2(double latitude_deg, double height_m) {
 
 GravitySpec GravitySpec::Standard() { return GravitySpec{}; }
 
-GravitySpec GravitySpec::Given(double gravity_mps2) {
+GravitySpec GravitySpec::Given(double gravity_mps2, double sigma_mps2) {
   GravitySpec g;
   g.source = Source::kGiven;
   g.gravity_mps2 = gravity_mps2;
+  g.sigma_mps2 = sigma_mps2;
   return g;
 }
 
@@ -50,6 +58,7 @@ GravitySpec GravitySpec::FromLocation(double latitude_deg, double altitude_m) {
   g.latitude_deg = latitude_deg;
   g.altitude_m = altitude_m;
   g.gravity_mps2 = NormalGravityWgs84Mps2(latitude_deg, altitude_m);
+  g.sigma_mps2 = std::hypot(kWgs84AnomalySigmaMps2, kWgs84ModelSigmaMps2);
   return g;
 }
 
@@ -64,6 +73,10 @@ std::string GravitySpec::Validate() const {
       gravity_mps2 > kMaxPlausibleMps2)
     return fmt::format("gravity {} m/s^2 is outside the plausible {}..{} m/s^2 (is it in m/s^2?)",
                        gravity_mps2, kMinPlausibleMps2, kMaxPlausibleMps2);
+  // NaN: not stated. Above 0.1 m/s^2 the value says nothing (the whole Earth spans 0.08).
+  if (!std::isnan(sigma_mps2) && !(sigma_mps2 >= 0.0 && sigma_mps2 <= kMaxPlausibleSigmaMps2))
+    return fmt::format("gravity uncertainty {} m/s^2 is outside 0..{} m/s^2", sigma_mps2,
+                       kMaxPlausibleSigmaMps2);
   return {};
 }
 
@@ -79,12 +92,13 @@ std::string GravitySpec::SourceName() const {
 std::string GravitySpec::Describe() const {
   switch (source) {
     case Source::kStandard:
-      return fmt::format("{:.5f} m/s^2 (standard gravity)", gravity_mps2);
+      return fmt::format("{:.5f}{} m/s^2 (standard gravity, not the local value)", gravity_mps2,
+                         PlusMinus(sigma_mps2));
     case Source::kGiven:
-      return fmt::format("{:.5f} m/s^2 (given)", gravity_mps2);
+      return fmt::format("{:.5f}{} m/s^2 (measured)", gravity_mps2, PlusMinus(sigma_mps2));
     case Source::kWgs84:
-      return fmt::format("{:.5f} m/s^2 (WGS84 normal gravity at latitude {:.4f} deg, altitude {:.1f} m)",
-                         gravity_mps2, latitude_deg, altitude_m);
+      return fmt::format("{:.5f}{} m/s^2 (WGS84 normal gravity at latitude {:.4f} deg, altitude "
+                         "{:.1f} m)", gravity_mps2, PlusMinus(sigma_mps2), latitude_deg, altitude_m);
   }
   return "?";
 }

@@ -237,6 +237,8 @@ void ReadAnalysesFromResult(const json& result, const std::string& source, Repor
     inputs->allan = ParseAllanJson(result["allan"], source + " (result key allan)");
   if (result.contains("noise") && !result["noise"].is_null())
     inputs->noise = ParseNoiseJson(result["noise"], source + " (result key noise)");
+  if (result.contains("session_gaps") && !result["session_gaps"].is_null())
+    inputs->gaps = SessionGapsFromJson(result["session_gaps"], source);
 }
 
 std::string AllanFileText(const RecordAnalysis& analysis, const std::string& source,

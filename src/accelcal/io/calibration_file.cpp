@@ -19,7 +19,8 @@ json Misalignment(const SensorModel& m) {
 }
 
 json GravityJson(const GravitySpec& g) {
-  json j = {{"source", g.SourceName()}, {"description", g.Describe()}};
+  json j = {{"source", g.SourceName()}, {"description", g.Describe()},
+            {"sigma_mps2", JsonNumber(g.sigma_mps2)}};
   if (g.source == GravitySpec::Source::kWgs84) {
     j["latitude_deg"] = g.latitude_deg;
     j["altitude_m"] = g.altitude_m;
@@ -144,13 +145,18 @@ GravitySpec ReadGravity(const json& j, const std::string& source) {
   const std::string kind = OptionalString(gs, "source", "gravity_source.", source, "given");
   if (kind == "standard") {
     spec.source = GravitySpec::Source::kStandard;
+    spec.sigma_mps2 = kStandardGravitySigmaMps2;
   } else if (kind == "wgs84") {
-    spec.source = GravitySpec::Source::kWgs84;
-    spec.latitude_deg = OptionalFinite(gs, "latitude_deg", "gravity_source.", source);
-    spec.altitude_m = OptionalFinite(gs, "altitude_m", "gravity_source.", source);
+    spec = GravitySpec::FromLocation(OptionalFinite(gs, "latitude_deg", "gravity_source.", source),
+                                     OptionalFinite(gs, "altitude_m", "gravity_source.", source));
+    spec.gravity_mps2 = g;  // as written (the formula may have changed since)
   } else if (kind != "given") {
     FailField(source, "gravity_source.source", "must be \"standard\", \"given\" or \"wgs84\"");
   }
+  // Files written before the uncertainty was recorded lack it: the source's own then (a
+  // measured value's stays "not stated").
+  const double sigma = OptionalFinite(gs, "sigma_mps2", "gravity_source.", source);
+  if (std::isfinite(sigma)) spec.sigma_mps2 = sigma;
   return spec;
 }
 
@@ -326,6 +332,12 @@ json CalibrationToJson(const Calibration& cal) {
 }
 
 std::string CalibrationToJsonText(const Calibration& cal) { return CalibrationToJson(cal).dump(2); }
+
+std::string SessionResultJsonText(const Calibration& cal, const SessionGaps& gaps) {
+  json j = CalibrationToJson(cal);
+  j["session_gaps"] = SessionGapsToJson(gaps);
+  return j.dump(2);
+}
 
 Calibration CalibrationFromJsonText(const std::string& text, const std::string& source_name) {
   return CalibrationFromJson(ParseJsonText(text, source_name), source_name);

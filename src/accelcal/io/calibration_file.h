@@ -21,9 +21,15 @@ std::string CalibrationToJsonText(const Calibration& cal);
 // `text` read strictly; `source_name` names it in errors.
 Calibration CalibrationFromJsonText(const std::string& text, const std::string& source_name);
 
+// A wizard session's result: the calibration file's JSON with, beside it, the session's gaps
+// (key "session_gaps": the steps skipped or missing and the identification missing), so that a
+// report made later gives the verdict the wizard gave. `accelcal apply` reads it as it reads a
+// calibration file.
+std::string SessionResultJsonText(const Calibration& cal, const SessionGaps& gaps);
+
 // The analyses a calibration file or a session's result may carry beside the calibration (keys
-// "allan" and "noise", README "Reports"), into `inputs` (strictly read; absent keys leave
-// `inputs` as it is).
+// "allan" and "noise", README "Reports") and a session's gaps ("session_gaps"), into `inputs`
+// (strictly read; absent keys leave `inputs` as it is).
 void ReadAnalysesFromResultText(const std::string& text, const std::string& source_name,
                                 ReportInputs* inputs);
 

@@ -45,6 +45,18 @@ CaptureDefaults ReadChecks(TomlTableReader& r, Procedure& p) {
   p.std_multiplier = r.Number("std_multiplier", 1.5, NumberRange::kPositive);
   p.trend_multiplier = r.Number("trend_multiplier", 2.0, NumberRange::kPositive);
   p.turntable_tolerance = r.Number("turntable_tolerance", 0.10, NumberRange::kPositive);
+  p.turntable_tilt_tolerance_deg = r.Number("turntable_tilt_tolerance_deg",
+                                            p.turntable_tilt_tolerance_deg, NumberRange::kPositive);
+  if (const toml::node* node = r.Get("expected_noise_counts")) {
+    // One number for every axis, or [x, y, z].
+    p.expected_noise_counts = node->is_array()
+                                  ? r.Vector3("expected_noise_counts", std::nullopt, NumberRange::kPositive)
+                                  : Eigen::Vector3d::Constant(r.Number("expected_noise_counts", std::nullopt,
+                                                                       NumberRange::kPositive));
+  }
+  p.noise_floor_max_ratio = r.Number("noise_floor_max_ratio", p.noise_floor_max_ratio, NumberRange::kPositive);
+  if (!(p.noise_floor_max_ratio > 1.0))
+    r.Fail(*r.Get("noise_floor_max_ratio"), "noise_floor_max_ratio", "must be above 1");
   return d;
 }
 
@@ -59,6 +71,14 @@ ProcedureLimits ReadLimits(TomlTableReader& r) {
   if (n < 0 || n > 100000) r.Fail(*r.Get("min_captures"), "min_captures", "must be 0..100000");
   l.min_captures = static_cast<int>(n);
   return l;
+}
+
+ProcedureRequirements ReadRequirements(TomlTableReader& r) {
+  ProcedureRequirements q;
+  q.device_serial = r.Bool("device_serial", false);
+  q.operator_name = r.Bool("operator", false);
+  q.local_gravity = r.Bool("local_gravity", false);
+  return q;
 }
 
 SensorAxis ReadAxis(TomlTableReader& r, std::string_view key, SensorAxis fallback) {
@@ -140,6 +160,7 @@ ProcedureStep ReadStep(TomlTableReader& r, const CaptureDefaults& d) {
   }
   s.title = r.String("title", s.pose_name.empty() ? std::string(StepKindToString(s.kind))
                                                   : s.pose_name);
+  s.required = r.Bool("required", true);
   if (s.kind == StepKind::kLevel) s.pose_name = "+z up";  // the reversal's pose
   return s;
 }
@@ -194,6 +215,8 @@ Procedure ParseProcedure(std::string_view toml_text, const std::string& source_n
   WithTable(root, "checks", source_name,
             [&](TomlTableReader& r) { defaults = ReadChecks(r, p); });
   WithTable(root, "limits", source_name, [&](TomlTableReader& r) { p.limits = ReadLimits(r); });
+  WithTable(root, "requirements", source_name,
+            [&](TomlTableReader& r) { p.requirements = ReadRequirements(r); });
   ReadSteps(root, defaults, source_name, p);
   root.Finish();
   return p;

@@ -111,6 +111,8 @@ json ReportToJson(const ReportModel& m) {
           {"noise", m.noise ? NoiseToJson(*m.noise) : json(nullptr)},
           {"allan", m.allan ? AllanToJson(*m.allan) : json(nullptr)},
           {"limits", Checks(m)},
+          {"session_gaps", m.gaps ? SessionGapsToJson(*m.gaps) : json(nullptr)},
+          {"incomplete", m.incomplete},
           {"verdict", std::string(VerdictToString(m.verdict))}};
 }
 

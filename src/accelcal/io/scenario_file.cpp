@@ -72,6 +72,7 @@ BenchSpec ReadBench(TomlTableReader& r) {
   b.recording_quiet_start_s =
       r.Number("recording_quiet_start_s", b.recording_quiet_start_s, NumberRange::kNonNegative);
   b.move_s = r.Number("move_s", b.move_s, NumberRange::kPositive);
+  b.table_tilt_deg = r.Vector2("table_tilt_deg", b.table_tilt_deg);
   return b;
 }
 
@@ -116,6 +117,64 @@ SensorAxis ReadAxis(TomlTableReader& r, std::string_view key) {
   const std::optional<SensorAxis> axis = StringToSensorAxis(text);
   if (!axis) r.Fail(*r.Get(key), key, "expected one of +x -x +y -y +z -z, got '" + text + "'");
   return *axis;
+}
+
+std::optional<SensorAxis> OptionalAxis(TomlTableReader& r, std::string_view key) {
+  if (!r.Has(key)) return std::nullopt;
+  return ReadAxis(r, key);
+}
+
+std::optional<Eigen::Vector3d> OptionalDirection(TomlTableReader& r, std::string_view key) {
+  if (!r.Has(key)) return std::nullopt;
+  const Eigen::Vector3d v = r.Vector3(key, std::nullopt);
+  if (!(v.norm() > 0.0)) r.Fail(*r.Get(key), key, "must not be the zero vector");
+  return v.normalized();
+}
+
+Mistake ReadMistake(TomlTableReader& r) {
+  Mistake m;
+  m.asked_up = OptionalDirection(r, "asked_up");
+  m.asked_radial = OptionalAxis(r, "asked_radial");
+  m.asked_up_axis = OptionalAxis(r, "asked_up_axis");
+  m.asked_radius_m = r.Number("asked_radius_m", kNaN, NumberRange::kPositive);
+  const std::int64_t after = r.Integer("after", 0);
+  const std::int64_t times = r.Integer("times", 1);
+  if (after < 0 || after > 1000) r.Fail(*r.Get("after"), "after", "must be 0..1000");
+  if (times < 1 || times > 1000) r.Fail(*r.Get("times"), "times", "must be 1..1000");
+  m.after = static_cast<int>(after);
+  m.times = static_cast<int>(times);
+  m.up = OptionalDirection(r, "up");
+  m.radial = OptionalAxis(r, "radial");
+  m.up_axis = OptionalAxis(r, "up_axis");
+  m.radius_m = r.Number("radius_m", kNaN, NumberRange::kPositive);
+  m.bump_at_s = r.Number("bump_at_s", kNaN, NumberRange::kNonNegative);
+  m.bump_peak_mps2 = r.Number("bump_peak_mps2", m.bump_peak_mps2, NumberRange::kPositive);
+  m.bump_duration_s = r.Number("bump_duration_s", m.bump_duration_s, NumberRange::kPositive);
+  return m;
+}
+
+Technician ReadTechnician(TomlTableReader& r, const std::string& source) {
+  Technician t;
+  t.leveling_gain = r.Number("leveling_gain", t.leveling_gain, NumberRange::kPositive);
+  if (const toml::array* shakes = r.ArrayOfTables("shake")) {
+    for (std::size_t i = 0; i < shakes->size(); ++i) {
+      TomlTableReader sr(*shakes->get(i)->as_table(), fmt::format("technician.shake {}", i), source);
+      Shake s;
+      s.from_s = sr.Number("from_s", 0.0, NumberRange::kNonNegative);
+      s.to_s = sr.Number("to_s", std::nullopt, NumberRange::kPositive);
+      s.rms_mps2 = sr.Number("rms_mps2", std::nullopt, NumberRange::kNonNegative);
+      sr.Finish();
+      t.shakes.push_back(s);
+    }
+  }
+  if (const toml::array* mistakes = r.ArrayOfTables("mistake")) {
+    for (std::size_t i = 0; i < mistakes->size(); ++i) {
+      TomlTableReader mr(*mistakes->get(i)->as_table(), fmt::format("technician.mistake {}", i), source);
+      t.mistakes.push_back(ReadMistake(mr));
+      mr.Finish();
+    }
+  }
+  return t;
 }
 
 void ReadTurntable(TomlTableReader& r, CapturePlan& c) {
@@ -194,6 +253,8 @@ Scenario ParseScenario(std::string_view toml_text, const std::string& source_nam
   WithTable(root, "effects", false, source_name, [&](TomlTableReader& r) {
     s.effects = ReadEffects(r, source_name, s.bench.temperature_c);
   });
+  WithTable(root, "technician", false, source_name,
+            [&](TomlTableReader& r) { s.technician = ReadTechnician(r, source_name); });
   const toml::array* plan = root.ArrayOfTables("capture");
   if (plan == nullptr) throw InputError(source_name, 0, 0, "the plan has no [[capture]]");
   for (std::size_t i = 0; i < plan->size(); ++i) {

@@ -92,7 +92,9 @@ std::string Row(const std::string& name, const std::string& value_html) {
 }
 
 std::string Header(const ReportModel& m) {
-  const char* cls = m.verdict == Verdict::kPass ? "pass" : m.verdict == Verdict::kFail ? "fail" : "none";
+  const char* cls = m.verdict == Verdict::kPass ? "pass"
+                    : m.verdict == Verdict::kFail || m.verdict == Verdict::kIncomplete ? "fail"
+                                                                                      : "none";
   std::string out = "<header class=\"cert\"><div><h1>Accelerometer calibration report</h1>"
                     "<div class=\"sub\">Three-axis MEMS accelerometer &middot; nine-parameter model "
                     "(bias, scale, misalignment) with 1&sigma; uncertainties</div></div>\n";
@@ -116,8 +118,26 @@ std::string Header(const ReportModel& m) {
   return out;
 }
 
+// The session's missing steps and identification, and why the verdict is INCOMPLETE.
+std::string Completeness(const ReportModel& m) {
+  if (!m.gaps && m.incomplete.empty()) return "";
+  std::string out;
+  for (const std::string& why : m.incomplete)
+    out += fmt::format("<p class=\"fail\"><b>INCOMPLETE:</b> {}</p>\n", E(why));
+  if (m.gaps && m.gaps->steps.empty()) out += "<p class=\"note\">Every step of the procedure was done.</p>\n";
+  if (m.gaps && !m.gaps->steps.empty()) {
+    out += "<table><tr><th>Step skipped or missing</th><th>Required</th><th>Why</th></tr>\n";
+    for (const SessionGaps::Step& s : m.gaps->steps)
+      out += fmt::format("<tr><td>{} <span class=\"note\">({})</span></td><td>{}</td><td>{}</td></tr>\n",
+                         E(s.title), E(s.id), s.required ? "yes" : "no", E(s.why));
+    out += "</table>\n";
+  }
+  return out;
+}
+
 std::string Limits(const ReportModel& m) {
   std::string out = "<section><h2>1. Result against the procedure&rsquo;s limits</h2>\n";
+  out += Completeness(m);
   if (m.checks.empty()) return out + "<p class=\"absent\">The procedure states no pass/fail limits.</p></section>\n";
   out += "<table><tr><th>Check</th><th class=\"n\">Measured</th><th class=\"n\">Limit</th><th>Result</th></tr>\n";
   for (const LimitCheck& c : m.checks)

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include <fmt/core.h>
+#include <fmt/format.h>
 
 #include "accelcal/base/error.h"
 #include "accelcal/base/version.h"
@@ -103,6 +104,25 @@ void CheckLimits(const ProcedureLimits& l, const Calibration& cal, ReportModel* 
   AddCheck(m, "largest misalignment 1-sigma", "rad", mis, l.max_misalignment_sigma_rad, false);
 }
 
+std::vector<std::string> IncompleteReasons(const std::optional<SessionGaps>& gaps, const Calibration& cal) {
+  std::vector<std::string> out;
+  if (gaps) {
+    for (const SessionGaps::Step& s : gaps->steps)
+      if (s.required) out.push_back(fmt::format("required step '{}' {}", s.title, s.why));
+    for (const std::string& what : gaps->identification)
+      out.push_back(fmt::format("no {} recorded (the procedure requires it)", what));
+  }
+  std::vector<std::string> names;
+  for (const CalibrationEffect& e : cal.effects) names.push_back(e.name);
+  bool turntable = false;
+  for (const CalibrationCapture& c : cal.captures) turntable = turntable || (c.used && c.kind == CaptureKind::kTurntable);
+  const bool found = gaps && !gaps->gravity_ambiguity.empty();
+  if (found || (turntable && !GravityAmbiguityNote(cal.gravity, names).empty()))
+    out.push_back("gravity not established: the diagnosis found a turntable speed or radius scale "
+                  "while gravity is the standard value (a gravity error looks the same)");
+  return out;
+}
+
 }  // namespace
 
 std::string_view VerdictToString(Verdict v) {
@@ -110,8 +130,28 @@ std::string_view VerdictToString(Verdict v) {
     case Verdict::kPass: return "PASS";
     case Verdict::kFail: return "FAIL";
     case Verdict::kNoLimits: return "NO LIMITS STATED";
+    case Verdict::kIncomplete: return "INCOMPLETE";
   }
   return "?";
+}
+
+bool TakesGravityErrorForItsOwn(const std::string& effect_name) {
+  return effect_name == "rpm_scale" || effect_name == "radius_offset";
+}
+
+std::string GravityAmbiguityNote(const GravitySpec& gravity, const std::vector<std::string>& effect_names) {
+  if (!gravity.is_standard()) return "";
+  std::vector<std::string> found;
+  for (const std::string& n : effect_names)
+    if (TakesGravityErrorForItsOwn(n)) found.push_back(n);
+  if (found.empty()) return "";
+  return fmt::format(
+      "{} found while gravity is the standard value, not this place's: a local gravity other "
+      "than 9.80665 m/s^2 gives the same signature (static and turntable captures see only "
+      "w^2 r / g), so the data cannot tell a gravity error from a speed or radius error. Check "
+      "both: the local gravity (a measured value, or the place's latitude and altitude) and the "
+      "turntable (its speed with a tachometer, its radius with a ruler).",
+      fmt::join(found, " and "));
 }
 
 ReportModel BuildReportModel(const ReportInputs& in) {
@@ -152,11 +192,15 @@ ReportModel BuildReportModel(const ReportInputs& in) {
 
   m.noise = in.noise;
   m.allan = in.allan;
+  bool all_pass = true;
   if (in.limits && in.limits->Any()) {
     CheckLimits(*in.limits, cal, &m);
-    const bool all = std::all_of(m.checks.begin(), m.checks.end(), [](const LimitCheck& c) { return c.pass; });
-    m.verdict = all ? Verdict::kPass : Verdict::kFail;
+    all_pass = std::all_of(m.checks.begin(), m.checks.end(), [](const LimitCheck& c) { return c.pass; });
+    m.verdict = all_pass ? Verdict::kPass : Verdict::kFail;
   }
+  m.gaps = in.gaps;
+  m.incomplete = IncompleteReasons(in.gaps, cal);
+  if (all_pass && !m.incomplete.empty()) m.verdict = Verdict::kIncomplete;
   return m;
 }
 

@@ -108,8 +108,35 @@ struct LimitCheck {
   bool pass = false;
 };
 
-enum class Verdict { kPass, kFail, kNoLimits };
-std::string_view VerdictToString(Verdict v);  // "PASS", "FAIL", "NO LIMITS STATED"
+// What a wizard session lacks that its procedure asked for (a calibration file alone knows
+// nothing of it). The report lists every entry; a required one keeps the verdict from PASS.
+struct SessionGaps {
+  struct Step {
+    std::string id;       // the procedure's step id
+    std::string title;    // as shown to the operator
+    std::string why;      // "skipped", "its capture was left out: not still: ..."
+    bool required = true;
+  };
+  std::vector<Step> steps;                  // in procedure order
+  std::vector<std::string> identification;  // required and empty: "device serial", "operator"
+  // The diagnosis found a turntable speed or radius scale while gravity was the standard value
+  // (adopted or declined: the base model then carries the same error): its note, else empty.
+  std::string gravity_ambiguity;
+};
+
+// PASS: every limit met and nothing required missing. FAIL: a limit not met. INCOMPLETE: the
+// limits met (or none stated), but a required step, a required identification or the local
+// gravity (a turntable speed or radius scale found while gravity is the standard value: the
+// data cannot tell the two apart) is missing. NO LIMITS STATED: complete, but nothing to judge.
+enum class Verdict { kPass, kFail, kNoLimits, kIncomplete };
+std::string_view VerdictToString(Verdict v);  // "PASS", "FAIL", "NO LIMITS STATED", "INCOMPLETE"
+
+// The effects whose size a gravity error would take for its own (only w^2 r / g is seen).
+bool TakesGravityErrorForItsOwn(const std::string& effect_name);
+// Empty, or (when `gravity` is the standard value and `effect_names` hold a speed or radius
+// effect) what the operator must know: a gravity error gives the same signature, and both
+// checks to make.
+std::string GravityAmbiguityNote(const GravitySpec& gravity, const std::vector<std::string>& effect_names);
 
 struct ReportModel {
   ReportMeta meta;
@@ -137,6 +164,10 @@ struct ReportModel {
   std::optional<NoiseSection> noise;
   std::optional<AllanSection> allan;
   std::vector<LimitCheck> checks;
+  std::optional<SessionGaps> gaps;   // a session's; absent for a calibration file alone
+  // Why the verdict is INCOMPLETE (required steps and identification missing, the gravity
+  // ambiguity), in words; empty when nothing is missing.
+  std::vector<std::string> incomplete;
   Verdict verdict = Verdict::kNoLimits;
 };
 
@@ -148,6 +179,7 @@ struct ReportInputs {
   std::optional<ProcedureLimits> limits;
   std::optional<AllanSection> allan;
   std::optional<NoiseSection> noise;
+  std::optional<SessionGaps> gaps;  // a wizard session's (its result carries them)
 };
 
 // Gathers everything; derives nothing the calibration already states.

@@ -40,7 +40,9 @@ std::string Wrap(const std::string& first, const std::string& text, size_t inden
     std::string word = text.substr(i, j - i);
     i = j;
     while (!word.empty()) {
-      const size_t room = kWidth - line.size() - (line_has_word ? 1 : 0);
+      // (A full line leaves no room: never a negative one, which size_t would make huge.)
+      const size_t used = line.size() + (line_has_word ? 1 : 0);
+      const size_t room = used < kWidth ? kWidth - used : 0;
       if (word.size() <= room) {
         line += (line_has_word ? " " : "") + word;
         line_has_word = true;
@@ -210,6 +212,21 @@ std::string Limits(const ReportModel& m) {
   return out;
 }
 
+// The session's missing steps and identification, and why the verdict is INCOMPLETE.
+std::string Completeness(const ReportModel& m) {
+  std::string out;
+  if (m.gaps) {
+    if (m.gaps->steps.empty()) out += "  Every step of the procedure was done.\n";
+    for (const SessionGaps::Step& s : m.gaps->steps)
+      out += Wrap("  ", fmt::format("{} ({}{}): {}", Clean(s.title), s.id, s.required ? ", required" : "",
+                                    Clean(s.why)), 4);
+    for (const std::string& what : m.gaps->identification)
+      out += Wrap("  ", fmt::format("{}: not recorded, and the procedure requires it", what), 4);
+  }
+  for (const std::string& why : m.incomplete) out += Wrap("  INCOMPLETE: ", why, 14);
+  return out;
+}
+
 }  // namespace
 
 std::string RenderReportText(const ReportModel& m) {
@@ -228,6 +245,10 @@ std::string RenderReportText(const ReportModel& m) {
   out += NoiseAndDrift(m);
   out += Heading(6, "Limits of the procedure");
   out += Limits(m);
+  if (m.gaps || !m.incomplete.empty()) {
+    out += Heading(7, "Steps skipped or missing");
+    out += Completeness(m);
+  }
   out += "\n" + std::string(kWidth, '-') + "\n";
   out += Wrap("  ", "Report made by " + m.tool + ".", 2);
   out += "\n  Calibrated by: ____________________     Checked by: ____________________\n";

@@ -56,6 +56,9 @@ struct ProcedureStep {
   // (standard deviation, Welch noise density, normality: analysis/noise_analysis.h).
   std::string record_step;
   std::string method;
+  // The calibration needs this step: skipping it (or having its capture left out) makes the
+  // report's verdict INCOMPLETE. TOML `required`, default true.
+  bool required = true;
 
   static constexpr double kDefaultRecordChunkS = 10.0;
 };
@@ -73,6 +76,15 @@ struct ProcedureLimits {
   bool Any() const;  // at least one limit stated
 };
 
+// What the session must know before it calibrates ([requirements] in the procedure file).
+struct ProcedureRequirements {
+  bool device_serial = false;  // the welcome refuses an empty device serial
+  bool operator_name = false;  // ... an empty operator
+  // The standard gravity is refused at the welcome: a measured value or a location is needed
+  // (a turntable calibration's scales are only as good as the local gravity).
+  bool local_gravity = false;
+};
+
 struct Procedure {
   std::string title;
   std::string source_name;  // the file it came from
@@ -83,6 +95,16 @@ struct Procedure {
   double std_multiplier = 1.5;        // static stability: std limit in noise-floor sigmas
   double trend_multiplier = 2.0;      // static stability: trend limit in noise-floor sigmas
   double turntable_tolerance = 0.10;  // relative centripetal mismatch accepted
+  // Largest spin-axis tilt of the turntable accepted, deg: beyond it the capture is refused with
+  // leveling advice (within it the once-per-revolution swing is removed from the samples).
+  double turntable_tilt_tolerance_deg = 0.5;
+  // The sensor's noise on a still bench, counts per axis (std): the noise floor is checked
+  // against it. NaN: not stated (the floor is then checked only against the static captures).
+  Eigen::Vector3d expected_noise_counts = Eigen::Vector3d::Constant(kNaN);
+  // A noise floor above this many times the expected noise on any axis is refused (the sensor
+  // was not still while it was measured); > 1.
+  double noise_floor_max_ratio = 2.0;
+  ProcedureRequirements requirements;  // [requirements]; nothing required when absent
   ProcedureLimits limits;             // [limits]; all absent when the table is
   std::vector<ProcedureStep> steps;
 

@@ -186,13 +186,18 @@ void CaptureEngine::CheckSettledTurntable(double t_s) {
   const bool covered = t_s - t_start_s_ >= options_.turntable_settle_window_s;
   TrimTurntableWindow(t_s);
   if (!covered || turntable_window_.size() < 3) return;
+  // The tilt is judged on the whole capture, not here: the window may still hold the hand's
+  // shake of the mounting, whose tones near the table's speed would read as a swing.
+  TurntableStabilityOptions settling = options_.turntable;
+  settling.judge_tilt = false;
   turntable_verdict_ = EvaluateTurntable(turntable_window_, context_.rough_model,
-                                         request_.turntable, options_.turntable);
-  if (turntable_verdict_.ok) {
+                                         request_.turntable, settling);
+  const TurntableVerdict& v = turntable_verdict_;
+  if (v.ok) {
     BeginCapture();
-  } else if (turntable_verdict_.steady) {
-    // Steady but wrong: waiting will not fix the entered rpm and radius, or the tilt.
-    Reject(turntable_verdict_.reason);
+  } else if (v.steady) {
+    // Steady but wrong: waiting will not fix the mounting or the entered rpm and radius.
+    Reject(v.reason);
   }
 }
 
@@ -251,6 +256,11 @@ void CaptureEngine::FinishTurntable() {
   turntable_verdict_ = EvaluateTurntable(capture_.samples, context_.rough_model,
                                          request_.turntable, options_.turntable);
   if (turntable_verdict_.ok) {
+    // The tilt's once-per-revolution swing is not the sensor's noise: out of the samples, so
+    // that the statistics (and the fit's weight of this capture) are the sensor's.
+    RemoveOncePerRevolution(&capture_.samples, turntable_verdict_.swing);
+    stats_ = ComputeStats(capture_.samples);
+    capture_.set_stats(stats_);
     state_ = CaptureState::kAccepted;
     reason_.clear();
   } else if (!turntable_verdict_.steady) {

@@ -8,21 +8,27 @@
 //
 //   kSettling   waiting for the sensor to be still (static: a sliding window of
 //               settle_window_s passes the static stability check) or the table to turn
-//               steadily (turntable: the last turntable_settle_window_s pass the turntable check).
+//               steadily (turntable: the last turntable_settle_window_s pass the turntable
+//               checks, the tilt aside: it is judged on the whole capture, which the hand's
+//               shake of the mounting no longer reaches).
 //               Then the pose is checked (static: orientation_check.h) and capturing begins.
 //   kCapturing  collecting duration_s of samples; the stability check runs on the growing
 //               capture every check_interval_s, so a bump restarts at once.
 //   kRetrying   a check failed (reason in words); like kSettling, and capturing restarts by
 //               itself when the sensor is still again. The failed samples are dropped.
 //   kAccepted   the capture passed screening (capture_screening.h: NaN, clipping, out of
-//               range), stability and orientation. Final.
+//               range), stability and orientation (static) or the turntable checks, whose
+//               once-per-revolution swing is then removed from the samples (the statistics
+//               are of the swing-free samples; Snapshot().turntable.swing says what was
+//               removed). Final.
 //   kTimedOut   no capture accepted within timeout_s of the first sample (a capture already
 //               running when the time is up may finish):
 //               "no stable capture within 60 s: last problem: moving: x std 4.1 counts, limit 2.5"
 //               Final (Restart() tries again).
 //   kRejected   a problem waiting cannot fix: a NaN or clipped reading, the wrong face, a pose
-//               already captured, a turntable run that does not match the entered rpm and
-//               radius, a tilted table, a plan beyond the sensor's range. Final (Restart()).
+//               already captured, a turntable mounted on the wrong axes or running other than
+//               the entered rpm and radius, a tilted table, a plan beyond the sensor's range.
+//               Final (Restart()).
 //
 // Memory: running sums and the settle window's samples (window x rate) while settling; the
 // capture's own samples (duration x rate) while capturing.

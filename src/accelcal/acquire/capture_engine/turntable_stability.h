@@ -7,6 +7,13 @@
 //   measured centripetal   c_m = |mean f - (mean f . up) up|   (the horizontal part of the mean;
 //                          the mean over whole revolutions cancels the tilt wobble)
 //
+// 0. Mounted as asked: the mean force is -c radial + g up for some pair of sensor axes (the
+//    radial one carries the centripetal load, the up one gravity). Every perpendicular pair of
+//    signed axes is tried, c fitted for each; the mounting asked for must explain the mean
+//    within max(min_mounting_residual_mps2, 10 % of |mean f|) when another does better:
+//      "wrong mounting: the samples show +y radial, +z up (the centripetal 15.8 m/s^2 is on y),
+//       not +x radial, +z up: mount the sensor with +x pointing away from the spin axis and +z
+//       up"
 // 1. Consistent: |c_m / c - 1| <= centripetal_tolerance. A mismatch says what is likely:
 //      "radius looks 100x too large: 10 m entered; did you mean 0.1 m?"   (ratio near 10^-k or
 //      10^k, k = 1..3: a unit slip), else
@@ -18,9 +25,21 @@
 //      "speed not steady: centripetal went from 14.2 to 15.9 m/s^2 across the window (11 %),
 //       limit 3 %"
 // 3. Tilt: a spin axis tilted by theta turns gravity's horizontal part g sin(theta) once per
-//    revolution in the table frame; the sine's amplitude A gives theta = asin(A / g). Reported,
-//    and tolerated up to max_tilt_deg:
-//      "table tilted 3.1 deg (wobble 0.53 m/s^2 once per revolution), limit 2 deg: level it"
+//    revolution in the table frame. A sine at the stated speed is fitted to each axis's counts
+//    (OncePerRevolution: amplitude and phase, least squares); the swing's amplitude A (in
+//    m/s^2 through the rough scale: the rotating vector shows on the axes of the table's plane,
+//    so A^2 = sum of the axes' squared amplitudes / 2) gives theta = asin(A / g). Reported, and
+//    tolerated up to max_tilt_deg:
+//      "the turntable is tilted 3.1 deg (gravity swings 0.53 m/s^2 once per revolution),
+//       tolerance 2 deg: level the turntable (a spirit level on its plate, turn its feet)"
+//    An accepted capture has the swing removed from its samples (RemoveOncePerRevolution), so
+//    that its noise, and the weight the fit gives it, are the sensor's, not the tilt's.
+//    With judge_tilt false (a window that may still hold the hand's shake) the tilt is
+//    measured but not judged.
+// 4. Still: no reading further than spike_sigmas robust sigmas (1.4826 x the median absolute
+//    deviation) from the run's model, its mean plus the swing, on any axis: a knock on the
+//    bench (which would also read as a swing) makes the run unsteady, retried.
+//      "knocked: y jumped 41 counts (12 sigma) from the run at t = 12.34 s"
 // Before a run, CheckTurntablePlan compares the planned specific force with the sensor's range.
 //
 // Units: m, rpm (as entered), m/s^2, deg for the tilt shown to the operator.
@@ -51,6 +70,13 @@ struct TurntableStabilityOptions {
   int sub_windows = 4;
   // Largest tolerated tilt of the spin axis, deg; > 0.
   double max_tilt_deg = 2.0;
+  // Check 0: a mounting explaining the mean this much better than the one asked for is a
+  // wrong mounting (at least 10 % of |mean f|), m/s^2; > 0.
+  double min_mounting_residual_mps2 = 1.0;
+  // Check 3 decides (false: the tilt is measured and reported, never a failure).
+  bool judge_tilt = true;
+  // Check 4: a reading this many robust sigmas from the run's model is a knock; > 0.
+  double spike_sigmas = 8.0;
   // CheckTurntablePlan: the planned force must stay this fraction inside the range; [0, 1).
   double range_margin = 0.05;
 
@@ -69,11 +95,25 @@ struct TurntableSetup {
   double ExpectedCentripetalMps2() const;  // w^2 r
 };
 
+// The once-per-revolution term of a run, per axis: raw_j(t) ~ c_j + cos_j cos(w (t - t0)) +
+// sin_j sin(w (t - t0)), counts. All zero when the run spans less than one revolution.
+struct OncePerRevolution {
+  double t0_s = 0.0;
+  double w_rad_per_s = 0.0;
+  Eigen::Vector3d cos_counts = Eigen::Vector3d::Zero();
+  Eigen::Vector3d sin_counts = Eigen::Vector3d::Zero();
+
+  Eigen::Vector3d At(double t_s) const;  // the term at t_s, counts
+};
+
 struct TurntableVerdict {
   bool ok = false;
+  bool mounted_as_asked = false;  // check 0
+  std::string mounting_found;     // "+y radial, +z up": the best explaining mounting
   bool consistent = false;  // check 1
   bool steady = false;      // check 2
   bool level = false;       // check 3
+  bool still = false;       // check 4 (counted in `steady`: a knocked run is retried)
   // Empty when ok; else every failed check in words, joined by "; ".
   std::string reason;
 
@@ -86,7 +126,11 @@ struct TurntableVerdict {
   double speed_spread_fraction = kNaN;      // (max - min) of those / (w^2 r)
   double wobble_amplitude_mps2 = kNaN;      // A
   double tilt_deg = kNaN;                   // asin(A / g)
+  OncePerRevolution swing;                  // check 3's fit
 };
+
+// `samples` less the swing (the finite ones; t unchanged).
+void RemoveOncePerRevolution(std::vector<Sample>* samples, const OncePerRevolution& swing);
 
 // The checks of the header comment over `samples` (finite ones; at least 3 and spanning some
 // time). Throws accelcal::Error when options or setup are not valid.

@@ -52,6 +52,39 @@ std::string ValidateCapture(const CapturePlan& c, int i) {
   return {};
 }
 
+std::string ValidateMistake(const Mistake& m, int i) {
+  const std::string where = fmt::format("technician.mistake {}", i);
+  const bool turntable = m.asked_radial.has_value() || m.asked_up_axis.has_value();
+  if (m.static_request() == turntable)
+    return where + ": ask either asked_up (a static pose) or asked_radial and asked_up_axis "
+                   "(a turntable mounting)";
+  if (turntable && !(m.asked_radial && m.asked_up_axis))
+    return where + ": a turntable request needs both asked_radial and asked_up_axis";
+  if (m.times < 1 || m.after < 0) return where + ": times must be >= 1 and after >= 0";
+  if (m.static_request() && (m.radial || m.up_axis || !std::isnan(m.radius_m)))
+    return where + ": a static pose can only be replaced by another `up`";
+  if (turntable && m.up) return where + ": a turntable mounting is replaced by radial/up_axis/radius_m";
+  if (m.radial.has_value() != m.up_axis.has_value())
+    return where + ": a wrong mounting gives both radial and up_axis";
+  if (m.radial && std::abs(SensorAxisVector(*m.radial).dot(SensorAxisVector(*m.up_axis))) > 0.5)
+    return where + ": radial and up_axis must be perpendicular";
+  if (!std::isnan(m.radius_m) && !(m.radius_m > 0.0)) return where + ": radius_m must be positive";
+  if (!std::isnan(m.bump_at_s) && !(m.bump_at_s >= 0.0 && m.bump_duration_s > 0.0))
+    return where + ": bump_at_s must not be negative and bump_duration_s must be positive";
+  return {};
+}
+
+std::string ValidateTechnician(const Technician& t) {
+  if (!(t.leveling_gain > 0.0 && t.leveling_gain <= 1.0))
+    return "technician.leveling_gain must be in (0, 1]";
+  for (const Shake& s : t.shakes)
+    if (!(s.to_s > s.from_s) || !(s.rms_mps2 >= 0.0) || !std::isfinite(s.rms_mps2))
+      return "technician.shake: to_s must exceed from_s and rms_mps2 must not be negative";
+  for (int i = 0; i < static_cast<int>(t.mistakes.size()); ++i)
+    if (std::string why = ValidateMistake(t.mistakes[static_cast<size_t>(i)], i); !why.empty()) return why;
+  return {};
+}
+
 }  // namespace
 
 
@@ -92,7 +125,9 @@ std::string Scenario::Validate() const {
     }
   }
   if (!(effects.rpm_scale > -1.0)) return "effects.rpm_scale must be greater than -1";
-  return {};
+  if (!bench.table_tilt_deg.allFinite() || (bench.table_tilt_deg.array().abs() > 30.0).any())
+    return "bench.table_tilt_deg must be within +-30 deg";
+  return ValidateTechnician(technician);
 }
 
 }  // namespace accelcal::sim

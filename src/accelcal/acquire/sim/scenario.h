@@ -62,6 +62,11 @@ struct BenchSpec {
   double temperature_c = 25.0;       // ambient; also the reference of temperature effects, degC
   double recording_quiet_start_s = 30.0;  // continuous recording: first pose held this long, s
   double move_s = 4.0;                    // continuous recording: time to turn between poses, s
+  // The table the prism stands on, as its feet leave it: [about x, about y], deg, in the
+  // leveling convention (app/wizard/leveling.h): about x positive = the +y side low; about y
+  // positive = the +x side low. Static poses stand on it; the technician adjusts the feet
+  // when the wizard's leveling says so (Technician::leveling_gain).
+  Eigen::Vector2d table_tilt_deg = Eigen::Vector2d::Zero();
 };
 
 // Temperature of the sensor over the session, degC: from start_c at t = 0 towards end_c.
@@ -122,6 +127,51 @@ struct CapturePlan {
   SensorAxis up_axis = SensorAxis::kPlusZ;
   // Capture length, s; NaN => the bench's capture_duration_s.
   double duration_s = kNaN;
+  // Static: turned this much about the vertical on the table (the leveling reversal), rad.
+  // Not read from files.
+  double yaw_rad = 0.0;
+};
+
+// [[technician.shake]]: the bench shakes (a machine nearby, a hand resting on the table) over a
+// stretch of the live bench's clock: white acceleration of rms_mps2 on each world axis.
+struct Shake {
+  double from_s = 0.0;    // sim clock, s
+  double to_s = 0.0;      // s; > from_s
+  double rms_mps2 = 0.0;  // per axis, m/s^2
+};
+
+// [[technician.mistake]]: when the wizard asks for a pose or a mounting, the technician does
+// something else, `times` times after `after` correct placements of that request. A request is
+// a static pose (asked_up) or a turntable mounting (asked_radial and asked_up_axis, and
+// asked_radius_m when only one radius is meant). The deed: another face (up), another mounting
+// (radial, up_axis), another radius (radius_m), and/or a knock on the bench bump_at_s after
+// the sensor settles. What is absent is done as asked.
+struct Mistake {
+  std::optional<Eigen::Vector3d> asked_up;  // static request (normalized)
+  std::optional<SensorAxis> asked_radial;   // turntable request
+  std::optional<SensorAxis> asked_up_axis;
+  double asked_radius_m = kNaN;             // NaN: any radius
+  int after = 0;  // matching placements done right first
+  int times = 1;  // placements that go wrong, then the technician gets it right
+  std::optional<Eigen::Vector3d> up;        // static: the face put up instead (normalized)
+  std::optional<SensorAxis> radial;         // turntable: mounted with this axis outward ...
+  std::optional<SensorAxis> up_axis;        // ... and this one up
+  double radius_m = kNaN;                   // turntable: mounted at this radius, m
+  double bump_at_s = kNaN;                  // a knock this long after settling, s; NaN: none
+  double bump_peak_mps2 = 3.0;              // its peak, m/s^2 (horizontal)
+  double bump_duration_s = 0.1;             // its length, s
+
+  bool static_request() const { return asked_up.has_value(); }
+};
+
+// [technician]: the person at the live virtual bench the wizard drives (SimSource). Only the
+// live bench plays it; SimulateCaptureSet and SimulateRecording do not.
+struct Technician {
+  // Share of the advised correction made each time the feet are adjusted (the table after the
+  // wizard's leveling advice, the turntable after a refusal for its tilt); (0, 1].
+  double leveling_gain = 0.8;
+  std::vector<Shake> shakes;
+  std::vector<Mistake> mistakes;
 };
 
 struct Scenario {
@@ -130,6 +180,7 @@ struct Scenario {
   AdcSpec adc;
   BenchSpec bench;
   EffectsSpec effects;
+  Technician technician;
   std::vector<CapturePlan> captures;
 
   // Length of capture `index` of the plan, s.

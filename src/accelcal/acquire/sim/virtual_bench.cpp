@@ -26,6 +26,16 @@ Eigen::Matrix3d MountingRotation(SensorAxis radial, SensorAxis up) {
   return table_axes * sensor_axes.transpose();
 }
 
+// Table -> world rotation of a table whose +x side dips by tilt_deg.y() and whose +y side dips
+// by tilt_deg.x() (the leveling convention): turning about world y by +a lowers +x; turning
+// about world x by +b raises +y.
+Eigen::Matrix3d TableRotation(const Eigen::Vector2d& tilt_deg) {
+  if (tilt_deg.isZero()) return Eigen::Matrix3d::Identity();
+  return (Eigen::AngleAxisd(tilt_deg.y() * kDegToRad, Eigen::Vector3d::UnitY()) *
+          Eigen::AngleAxisd(-tilt_deg.x() * kDegToRad, Eigen::Vector3d::UnitX()))
+      .toRotationMatrix();
+}
+
 // The scenario, or accelcal::Error when scenario.Validate() finds a problem (before any member
 // is built from it).
 Scenario ValidScenario(Scenario scenario) {
@@ -54,9 +64,17 @@ Eigen::Vector3d ActivePulse::AccelerationWorld(double t_s) const {
 VirtualBench::VirtualBench(Scenario scenario)
     : scenario_(ValidScenario(std::move(scenario))),
       rng_(scenario_.bench.seed),
-      bias_noise_(scenario_.sensor.bias_noise, scenario_.bench.seed ^ kBiasNoiseSeedMix) {
+      bias_noise_(scenario_.sensor.bias_noise, scenario_.bench.seed ^ kBiasNoiseSeedMix),
+      table_tilt_deg_(scenario_.bench.table_tilt_deg),
+      turntable_tilt_rad_(scenario_.effects.turntable_tilt_rad) {
   session_duration_s_ = scenario_.SessionDurationS();
 }
+
+void VirtualBench::AdjustTableFeet(const Eigen::Vector2d& correction_deg) {
+  table_tilt_deg_ -= correction_deg;
+}
+
+void VirtualBench::LevelTurntable(double keep) { turntable_tilt_rad_ *= keep; }
 
 void VirtualBench::Reseed(std::uint64_t seed) {
   rng_.seed(seed);
@@ -79,9 +97,12 @@ Mounting VirtualBench::BeginCapture(const CapturePlan& plan, double start_s) {
   m.kind = plan.kind;
   m.start_s = start_s;
   if (plan.kind == CaptureKind::kStatic) {
-    // R * up = world z: world-up seen from the platform is `up`.
-    m.platform_rotation =
-        RotationBetween(plan.up, Eigen::Vector3d::UnitZ()) * RandomPlacementRotation();
+    // R * up = table z: world-up seen from the platform is `up` on a level table; turned about
+    // the table's normal by the yaw, tilted with the table.
+    m.platform_rotation = RotationBetween(plan.up, Eigen::Vector3d::UnitZ()) * RandomPlacementRotation();
+    if (plan.yaw_rad != 0.0)
+      m.platform_rotation = Eigen::AngleAxisd(plan.yaw_rad, Eigen::Vector3d::UnitZ()) * m.platform_rotation;
+    m.platform_rotation = TableRotation(table_tilt_deg_) * m.platform_rotation;
     return m;
   }
   m.platform_rotation =
@@ -89,6 +110,7 @@ Mounting VirtualBench::BeginCapture(const CapturePlan& plan, double start_s) {
   m.true_radius_m = plan.radius_m + scenario_.effects.radius_offset_m;
   m.omega_rad_per_s = RpmToRadPerS(plan.rpm) * (1.0 + scenario_.effects.rpm_scale);
   m.phase_rad = std::uniform_real_distribution<double>(0.0, 2.0 * M_PI)(rng_);
+  m.turntable_tilt_rad = turntable_tilt_rad_;
   return m;
 }
 
@@ -123,7 +145,7 @@ Eigen::Vector3d VirtualBench::SpecificForceAt(const Mounting& mounting, double t
   }
   const double angle = mounting.phase_rad + mounting.omega_rad_per_s * (t_s - mounting.start_s);
   const Eigen::Matrix3d table_to_world =
-      Eigen::AngleAxisd(scenario_.effects.turntable_tilt_rad, Eigen::Vector3d::UnitX()) *
+      Eigen::AngleAxisd(mounting.turntable_tilt_rad, Eigen::Vector3d::UnitX()) *
       Eigen::AngleAxisd(angle, Eigen::Vector3d::UnitZ()).toRotationMatrix();
   // Position of the point in the table frame; constant rate, so the only kinematic
   // acceleration is centripetal, towards the spin axis: -w^2 times the in-plane position.

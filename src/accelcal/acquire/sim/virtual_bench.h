@@ -4,9 +4,11 @@
 //   specific force  f = a - gravity, gravity = [0, 0, -g] in the world frame (z up), so at rest
 //                   f = [0, 0, +g] in the world frame.
 //   static pose     the platform frame is turned so that world-up, expressed in platform
-//                   coordinates, is the plan's `up`; then a small random placement rotation.
-//   turntable       the table turns about its spin axis (world z, tilted by turntable_tilt_rad
-//                   about world x) at w = rpm 2pi/60 (1 + rpm_scale). The sensing point is at
+//                   coordinates, is the plan's `up`; then a small random placement rotation;
+//                   then turned by the plan's yaw about the table's normal, and tilted with
+//                   the table (bench.table_tilt_deg, as its feet leave it: AdjustTableFeet).
+//   turntable       the table turns about its spin axis (world z, tilted by the turntable's
+//                   tilt about world x: effects.turntable_tilt_rad until LevelTurntable) at w = rpm 2pi/60 (1 + rpm_scale). The sensing point is at
 //                   (r + radius_offset) x_table; in the table frame
 //                       f = -w^2 r_perp + R_world_to_table g z_world,
 //                   so |f| = sqrt(g^2 + (w^2 r)^2) on a level table. radial_axis -> x_table,
@@ -54,6 +56,7 @@ struct Mounting {
   double true_radius_m = 0.0;       // turntable: distance of the sensing point from the axis, m
   double omega_rad_per_s = 0.0;     // turntable: true table speed, rad/s
   double phase_rad = 0.0;           // turntable: table angle at start_s, rad
+  double turntable_tilt_rad = 0.0;  // turntable: spin axis from vertical, about world x, rad
   std::vector<ActivePulse> pulses;  // bumps that fall in this capture
 };
 
@@ -94,6 +97,15 @@ class VirtualBench {
   // counts.
   Eigen::Vector3d IdealRaw(const Eigen::Matrix3d& f_per_axis_mps2, double t_s) const;
 
+  // The technician turns the table's feet: its tilt (bench.table_tilt_deg's convention) less
+  // `correction_deg`. Placements from now on stand on the new table.
+  void AdjustTableFeet(const Eigen::Vector2d& correction_deg);
+  Eigen::Vector2d table_tilt_deg() const { return table_tilt_deg_; }
+  // The turntable's spin-axis tilt times `keep` (a leveling that removes 1 - keep of it); the
+  // next turntable mounting turns on the new axis.
+  void LevelTurntable(double keep);
+  double turntable_tilt_rad() const { return turntable_tilt_rad_; }
+
   // Sensor temperature at session time t_s, degC.
   double TemperatureC(double t_s) const;
   // Session length the temperature ramp spans, s (the plan's, or the recording's while one runs).
@@ -115,6 +127,8 @@ class VirtualBench {
   std::mt19937_64 rng_;
   BiasNoise bias_noise_;
   double session_duration_s_ = 0.0;
+  Eigen::Vector2d table_tilt_deg_;  // as the feet are now
+  double turntable_tilt_rad_;       // as the turntable stands now
 };
 
 // Time of sample k of a stream starting at start_s, s, on a 1 us grid (exact multiples print

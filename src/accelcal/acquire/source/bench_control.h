@@ -17,9 +17,10 @@ class BenchControl {
  public:
   virtual ~BenchControl() = default;
 
-  // Sets the sensor down in a static pose with `up_platform` pointing up. Throws
-  // accelcal::Error when up_platform is zero or not finite.
-  virtual void PlaceStatic(const Eigen::Vector3d& up_platform) = 0;
+  // Sets the sensor down in a static pose with `up_platform` pointing up, turned `yaw_rad` about
+  // the vertical from its usual heading (pi: the second reading of the leveling reversal).
+  // Throws accelcal::Error when up_platform is zero or not finite.
+  virtual void PlaceStatic(const Eigen::Vector3d& up_platform, double yaw_rad) = 0;
   // Mounts the sensor on the turntable at radius_m from the axis, `radial` pointing outward and
   // `up` along the spin axis, and runs the table at rpm. Throws accelcal::Error when radial is
   // parallel to up, or radius or rpm is not positive.
@@ -27,6 +28,12 @@ class BenchControl {
                               sim::SensorAxis up) = 0;
   // Stops the table; the sensor stays mounted, resting with its `up` axis up.
   virtual void StopTurntable() = 0;
+  // The person follows the wizard's leveling advice for the measured tilt of the table
+  // (`tilt_deg`: about x, about y, leveling.h's convention) by turning its feet.
+  virtual void AdjustTableFeet(const Eigen::Vector2d& tilt_deg) = 0;
+  // The person levels the turntable (a spirit level on its plate, its feet turned) after the
+  // wizard refused a run for the table's tilt.
+  virtual void LevelTurntable() = 0;
   // The simulated clock: t of the next sample, s.
   virtual double now_s() const = 0;
 };

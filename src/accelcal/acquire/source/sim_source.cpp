@@ -39,6 +39,8 @@ SimSource::SimSource(sim::Scenario scenario, const SimOptions& options, double d
       tracker_(gap_factor, dead_after_s, WallNowS()),
       // A stream apart from the bench's, so that settling and bumps do not shift its noise.
       rng_(bench_.scenario().bench.seed ^ 0x9e3779b97f4a7c15ULL),
+      shake_rng_(bench_.scenario().bench.seed ^ 0x3c6ef372fe94f82bULL),
+      technician_(bench_.scenario().technician),
       wall_origin_s_(WallNowS()) {
   sim::CapturePlan level;
   level.kind = CaptureKind::kStatic;
@@ -83,13 +85,14 @@ long SimSource::SamplesDue(double wall_now_s) const {
   return std::clamp(due, 0L, kMaxSamplesPerRead);
 }
 
-void SimSource::PlaceStatic(const Eigen::Vector3d& up_platform) {
-  if (!up_platform.allFinite() || up_platform.norm() == 0.0)
+void SimSource::PlaceStatic(const Eigen::Vector3d& up_platform, double yaw_rad) {
+  if (!up_platform.allFinite() || up_platform.norm() == 0.0 || !std::isfinite(yaw_rad))
     throw Error("sim: a static pose needs a non-zero, finite up direction");
   sim::CapturePlan plan;
   plan.kind = CaptureKind::kStatic;
   plan.up = up_platform.normalized();
-  Place(plan, true);
+  plan.yaw_rad = yaw_rad;
+  PlaceAsked(plan);
 }
 
 void SimSource::PlaceTurntable(double radius_m, double rpm, sim::SensorAxis radial,
@@ -104,14 +107,32 @@ void SimSource::PlaceTurntable(double radius_m, double rpm, sim::SensorAxis radi
   plan.rpm = rpm;
   plan.radial_axis = radial;
   plan.up_axis = up;
-  turntable_up_ = up;
-  Place(plan, true);
+  PlaceAsked(plan);
+}
+
+void SimSource::PlaceAsked(const sim::CapturePlan& asked) {
+  const sim::Deed deed = technician_.Place(asked);
+  if (deed.placed.kind == CaptureKind::kTurntable) turntable_up_ = deed.placed.up_axis;
+  Place(deed.placed, true);
+  if (std::isfinite(deed.bump_at_s))
+    ScheduleBump(settle_end_s_ + deed.bump_at_s, deed.bump_peak_mps2, deed.bump_duration_s);
 }
 
 void SimSource::StopTurntable() {
   if (mounting_.kind != CaptureKind::kTurntable) return;
-  PlaceStatic(sim::SensorAxisVector(turntable_up_));
+  // The table stops with the sensor on it: not a request to the technician.
+  sim::CapturePlan rest;
+  rest.kind = CaptureKind::kStatic;
+  rest.up = sim::SensorAxisVector(turntable_up_);
+  Place(rest, true);
 }
+
+void SimSource::AdjustTableFeet(const Eigen::Vector2d& tilt_deg) {
+  if (!tilt_deg.allFinite()) return;
+  bench_.AdjustTableFeet(technician_.spec().leveling_gain * tilt_deg);
+}
+
+void SimSource::LevelTurntable() { bench_.LevelTurntable(1.0 - technician_.spec().leveling_gain); }
 
 void SimSource::Place(const sim::CapturePlan& plan, bool settle) {
   const double t_s = now_s();
@@ -149,6 +170,18 @@ void SimSource::MaybeScheduleBump() {
   ++bumps_scheduled_;
 }
 
+// A knock the scenario asks for: its heading from the shaking stream (the operator's stream
+// stays as it would be without it).
+void SimSource::ScheduleBump(double at_s, double peak_mps2, double duration_s) {
+  const double heading_rad = std::uniform_real_distribution<double>(0.0, 2.0 * M_PI)(shake_rng_);
+  sim::ActivePulse pulse;
+  pulse.start_s = at_s;
+  pulse.duration_s = duration_s;
+  pulse.peak_world_mps2 = peak_mps2 * Eigen::Vector3d(std::cos(heading_rad), std::sin(heading_rad), 0.0);
+  mounting_.pulses.push_back(pulse);
+  ++bumps_scheduled_;
+}
+
 Eigen::Vector3d SimSource::JitterWorld(double t_s) const {
   if (t_s < settle_start_s_ || t_s >= settle_end_s_) return Eigen::Vector3d::Zero();
   const double tau = (t_s - settle_start_s_) / (settle_end_s_ - settle_start_s_);
@@ -170,17 +203,25 @@ Eigen::Matrix3d SimSource::PlatformToWorld(double t_s) const {
   return turn_from_.slerp(SmoothStep(tau), to).toRotationMatrix();
 }
 
+Eigen::Vector3d SimSource::ShakeWorld(double t_s) {
+  const double rms = technician_.ShakeRmsAt(t_s);
+  if (!(rms > 0.0)) return Eigen::Vector3d::Zero();
+  std::normal_distribution<double> unit;
+  return rms * Eigen::Vector3d(unit(shake_rng_), unit(shake_rng_), unit(shake_rng_));
+}
+
 Sample SimSource::Generate(long k) {
   const double t_s = sim::SampleTimeS(0.0, k, bench_.scenario().sensor.rate_hz);
   if (mounting_.kind == CaptureKind::kTurntable) {
     // The table's own kinematics (and bumps) come from the bench; the hand's shake while the
-    // mounting settles is added on top, roughly (its frame matters little).
+    // mounting settles and the bench's shaking are added on top, roughly (their frame matters
+    // little).
     Eigen::Matrix3d f_mps2 = bench_.SpecificForcePerAxis(mounting_, t_s);
-    f_mps2.colwise() += JitterWorld(t_s);
+    f_mps2.colwise() += JitterWorld(t_s) + ShakeWorld(t_s);
     return bench_.MeasurePerAxis(f_mps2, t_s);
   }
   Eigen::Vector3d f_world = bench_.scenario().bench.gravity_mps2 * Eigen::Vector3d::UnitZ() +
-                            JitterWorld(t_s);
+                            JitterWorld(t_s) + ShakeWorld(t_s);
   for (const sim::ActivePulse& pulse : mounting_.pulses) f_world += pulse.AccelerationWorld(t_s);
   return bench_.Measure(PlatformToWorld(t_s).transpose() * f_world, t_s);
 }

@@ -11,9 +11,31 @@
 #include "accelcal/report/allan_text.h"
 #include "accelcal/report/fit_text.h"
 #include "accelcal/report/noise_text.h"
+#include "accelcal/report/report_model.h"
 
 namespace accelcal {
 namespace {
+
+// `text` in lines of at most `width` columns, broken at blanks; its leading blanks kept, the
+// lines after the first indented two more.
+std::vector<std::string> WrapWords(const std::string& text, size_t width) {
+  const size_t indent = std::min(text.find_first_not_of(' '), text.size());
+  std::vector<std::string> out;
+  std::string line(indent, ' ');
+  bool has_word = false;
+  std::istringstream words(text);
+  for (std::string w; words >> w;) {
+    if (has_word && line.size() + 1 + w.size() > width) {
+      out.push_back(line);
+      line = std::string(indent + 2, ' ');
+      has_word = false;
+    }
+    line += (has_word ? " " : "") + w;
+    has_word = true;
+  }
+  if (has_word) out.push_back(line);
+  return out;
+}
 
 std::vector<std::string> SplitLines(const std::string& text) {
   std::vector<std::string> out;
@@ -55,6 +77,18 @@ CalibrationSteps::CalibrationSteps(const Procedure& procedure, SessionModel& mod
     : procedure_(procedure), model_(model), gravity_(gravity),
       session_name_(std::move(session_name)), outputs_(outputs) {}
 
+void CalibrationSteps::set_gravity(const GravitySpec& gravity) {
+  if (gravity.gravity_mps2 != gravity_.gravity_mps2 || gravity.source != gravity_.source) outcome_.reset();
+  gravity_ = gravity;
+}
+
+void CalibrationSteps::set_noise_floor(const std::optional<NoiseFloor>& lowered) {
+  const bool changed = lowered.has_value() != lowered_floor_.has_value() ||
+                       (lowered && lowered->std_counts != lowered_floor_->std_counts);
+  if (changed) outcome_.reset();
+  lowered_floor_ = lowered;
+}
+
 const CalibrationOutcome& CalibrationSteps::Run() {
   if (outcome_ && outcome_captures_ == model_.captures().size()) return *outcome_;
   CalibrationRequest request;
@@ -62,6 +96,15 @@ const CalibrationOutcome& CalibrationSteps::Run() {
   request.source_name = session_name_;
   request.gravity = gravity_;
   request.screening.adc_range = procedure_.adc_range;
+  if (lowered_floor_) {
+    // The captures judged with the floor before it was lowered are judged again: the ones the
+    // wizard left out (and captured again) are left out of the fit with the reason.
+    OfflineStabilityOptions stability;
+    stability.stability.std_multiplier = procedure_.std_multiplier;
+    stability.stability.trend_multiplier = procedure_.trend_multiplier;
+    stability.noise_floor_counts = lowered_floor_->std_counts;
+    request.stability = stability;
+  }
   outcome_ = CalibrateCaptures(std::move(request));
   outcome_captures_ = model_.captures().size();
   return *outcome_;
@@ -78,6 +121,8 @@ StepOutcome CalibrationSteps::Fit() {
     return out;
   }
   out.lines = SplitLines(FormatFitReport(o.MakeCalibration(false), fit));
+  const std::vector<std::string> gravity = WrapWords("Gravity: " + gravity_.Describe(), 78);
+  out.lines.insert(out.lines.begin(), gravity.begin(), gravity.end());
   return out;
 }
 
@@ -85,6 +130,10 @@ StepOutcome CalibrationSteps::Diagnosis() {
   const CalibrationOutcome& o = Run();
   StepOutcome out;
   out.lines = SplitLines(FormatDiagnosis(o.diagnosis));
+  if (const std::string note = GravityAmbiguityNote(gravity_, o.diagnosis.adopted_names()); !note.empty()) {
+    out.lines.push_back("");
+    for (const std::string& line : WrapWords("Gravity: " + note, 78)) out.lines.push_back(line);
+  }
   if (!o.usable()) {
     out.problem = "the fit is not usable: " + o.diagnosis.base.message;
     out.hint = "s skips the diagnosis (the report needs a usable fit)";
@@ -92,7 +141,8 @@ StepOutcome CalibrationSteps::Diagnosis() {
   return out;
 }
 
-StepOutcome CalibrationSteps::Report(bool adopt_effects, const ReportMeta& meta) {
+StepOutcome CalibrationSteps::Report(bool adopt_effects, const ReportMeta& meta,
+                                     const SessionGaps& session_gaps) {
   const CalibrationOutcome& o = Run();
   StepOutcome out;
   const bool adopt = adopt_effects && !o.diagnosis.adopted.empty();
@@ -103,17 +153,30 @@ StepOutcome CalibrationSteps::Report(bool adopt_effects, const ReportMeta& meta)
     return out;
   }
   const Calibration cal = o.MakeCalibration(adopt);
-  model_.RecordResult(CalibrationToJsonText(cal));
+  SessionGaps gaps = session_gaps;
+  gaps.gravity_ambiguity = GravityAmbiguityNote(gravity_, o.diagnosis.adopted_names());
+  model_.RecordResult(SessionResultJsonText(cal, gaps));
   out.lines = SplitLines(FormatFitReport(cal, summary));
+  const std::vector<std::string> gravity = WrapWords("Gravity: " + gravity_.Describe(), 78);
+  out.lines.insert(out.lines.begin(), gravity.begin(), gravity.end());
   out.lines.push_back(adopt ? fmt::format("Effects adopted: {}", fmt::join(o.diagnosis.adopted_names(), ", "))
                             : "Model: the nine-parameter base model");
-  if (outputs_ == nullptr) return out;
   ReportInputs in;
   in.calibration = cal;
   in.meta = meta;
   FillMetaFromInputs(model_.inputs(), &in.meta);  // what was typed wins over the defaults
   for (const JournalCapture& c : model_.captures()) in.captures.push_back(c.capture);
   in.limits = procedure_.limits;
+  in.gaps = gaps;
+  const ReportModel verdict = BuildReportModel(in);
+  out.lines.push_back(fmt::format("Verdict: {}", VerdictToString(verdict.verdict)));
+  for (const SessionGaps::Step& s : gaps.steps)
+    for (const std::string& line : WrapWords(fmt::format("  missing: {} ({}{}): {}", s.title, s.id,
+                                                         s.required ? ", required" : "", s.why), 78))
+      out.lines.push_back(line);
+  for (const std::string& why : verdict.incomplete)
+    for (const std::string& line : WrapWords("  INCOMPLETE: " + why, 78)) out.lines.push_back(line);
+  if (outputs_ == nullptr) return out;
   try {
     for (const std::string& path : outputs_->WriteReports(in)) out.lines.push_back("Report written to " + path);
   } catch (const Error& e) {

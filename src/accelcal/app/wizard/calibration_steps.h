@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "accelcal/acquire/capture_engine/noise_floor.h"
 #include "accelcal/app/calibration_pipeline.h"
 #include "accelcal/app/wizard/session_model.h"
 #include "accelcal/app/wizard/wizard_outputs.h"
@@ -35,14 +36,21 @@ class CalibrationSteps {
   StepOutcome Fit();
   // The diagnosis step: the pipeline's diagnosis (run again when the captures changed).
   StepOutcome Diagnosis();
-  // The report step: the calibration of the chosen model recorded as the session's result, and
-  // the report files written (through the outputs) with `meta`.
-  StepOutcome Report(bool adopt_effects, const ReportMeta& meta);
+  // The report step: the calibration of the chosen model recorded as the session's result with
+  // the session's `gaps` beside it, the verdict said, and the report files written (through
+  // the outputs) with `meta`.
+  StepOutcome Report(bool adopt_effects, const ReportMeta& meta, const SessionGaps& gaps);
   // The analysis step `step` of an earlier record; `outcome` gets its figures in one line.
   StepOutcome Analysis(const ProcedureStep& step, std::string* outcome);
 
   // The current pipeline outcome (after Fit or Diagnosis); nullptr before.
   const CalibrationOutcome* outcome() const { return outcome_ ? &*outcome_ : nullptr; }
+
+  // The session's gravity (the welcome's answer), for the runs from now on.
+  void set_gravity(const GravitySpec& gravity);
+  // A noise floor lowered during the session: the static captures are judged again against it
+  // (those that fail are left out with the reason); nullopt: as they were judged live.
+  void set_noise_floor(const std::optional<NoiseFloor>& lowered);
 
  private:
   const CalibrationOutcome& Run();
@@ -54,6 +62,7 @@ class CalibrationSteps {
   WizardOutputs* outputs_;      // borrowed, nullable
   std::optional<CalibrationOutcome> outcome_;
   size_t outcome_captures_ = 0;  // the number of accepted captures outcome_ was computed from
+  std::optional<NoiseFloor> lowered_floor_;
 };
 
 }  // namespace accelcal

@@ -27,7 +27,7 @@ void SessionModel::RecordInput(const std::string& step_id, const std::string& ke
 }
 
 void SessionModel::RecordCapture(const std::string& step_id, const Capture& capture) {
-  if (CaptureOf(step_id) != nullptr)
+  if (ExactCapture(step_id) != nullptr)
     throw Error(fmt::format("step '{}' already has an accepted capture", step_id));
   journal_.RecordCapture(step_id, capture);
   captures_.push_back({step_id, capture});
@@ -61,10 +61,40 @@ void SessionModel::VisitRecordChunks(const std::string& step_id,
   journal_.VisitRecordChunks(step_id, visit);
 }
 
-const JournalCapture* SessionModel::CaptureOf(const std::string& step_id) const {
+const JournalCapture* SessionModel::ExactCapture(const std::string& journal_step_id) const {
   const auto c = std::find_if(captures_.begin(), captures_.end(),
-                              [&](const JournalCapture& j) { return j.step_id == step_id; });
+                              [&](const JournalCapture& j) { return j.step_id == journal_step_id; });
   return c == captures_.end() ? nullptr : &*c;
+}
+
+std::string SessionModel::ProcedureStepOf(const std::string& journal_step_id) {
+  return journal_step_id.substr(0, journal_step_id.find('#'));
+}
+
+std::string SessionModel::LeftOutReason(const JournalCapture& c) const {
+  const auto step = inputs_.find(ProcedureStepOf(c.step_id));
+  if (step == inputs_.end()) return "";
+  const auto mark = step->second.find(fmt::format("left_out {}", c.capture.id));
+  return mark == step->second.end() ? "" : mark->second;
+}
+
+void SessionModel::MarkLeftOut(const JournalCapture& c, const std::string& reason) {
+  RecordInput(ProcedureStepOf(c.step_id), fmt::format("left_out {}", c.capture.id), reason);
+}
+
+const JournalCapture* SessionModel::CaptureOf(const std::string& step_id) const {
+  const JournalCapture* found = nullptr;
+  for (const JournalCapture& c : captures_)
+    if (ProcedureStepOf(c.step_id) == step_id && LeftOutReason(c).empty()) found = &c;
+  return found;
+}
+
+std::string SessionModel::NextCaptureStepId(const std::string& step_id) const {
+  if (ExactCapture(step_id) == nullptr) return step_id;
+  for (int attempt = 2;; ++attempt) {
+    const std::string id = fmt::format("{}#{}", step_id, attempt);
+    if (ExactCapture(id) == nullptr) return id;
+  }
 }
 
 bool SessionModel::StepRecorded(const std::string& step_id) const {

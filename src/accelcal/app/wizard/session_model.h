@@ -3,6 +3,13 @@
 // it returns, as the journal's contract says) and then to the model, so the wizard reads its own
 // state from memory and never back from the store. The one exception is a record's samples
 // (hours of them, too many to hold): VisitRecordChunks reads them back from the journal.
+//
+// Retakes: a capture found wanting after it was accepted (the noise floor it was judged with
+// proved too high: noise_floor_guard.h) is marked left out (input "left_out ID" of its step,
+// the reason as value) and its step is captured again, recorded under the journal step id
+// "STEP#2", "STEP#3", ... (the journal keeps one capture per step id, and never replaces one).
+// StepRecorded and CaptureOf look through the marks: a step is recorded when it has a capture
+// that is not left out.
 #pragma once
 
 #include <map>
@@ -40,10 +47,19 @@ class SessionModel final : public SessionJournal {
   const std::vector<JournalCapture>& captures() const { return captures_; }
   const std::map<std::string, std::map<std::string, std::string>>& inputs() const { return inputs_; }
   const std::map<std::string, std::string>& done_steps() const { return done_; }
-  // The accepted capture of `step_id`; nullptr when it has none.
+  // The accepted capture of procedure step `step_id` that is not left out (the latest retake);
+  // nullptr when it has none.
   const JournalCapture* CaptureOf(const std::string& step_id) const;
-  // True when the step has a capture or is done.
+  // True when the step has such a capture or is done.
   bool StepRecorded(const std::string& step_id) const;
+  // The journal step id the next capture of procedure step `step_id` is recorded under.
+  std::string NextCaptureStepId(const std::string& step_id) const;
+  // The procedure step a journal step id belongs to ("pose_mx#2" -> "pose_mx").
+  static std::string ProcedureStepOf(const std::string& journal_step_id);
+  // Why `c` is left out of the calibration (empty: it is not).
+  std::string LeftOutReason(const JournalCapture& c) const;
+  // Marks `c` left out with `reason` (durable); its step is to be captured again.
+  void MarkLeftOut(const JournalCapture& c, const std::string& reason);
 
  private:
   SessionJournal& journal_;  // borrowed: outlives the model
@@ -51,6 +67,7 @@ class SessionModel final : public SessionJournal {
   std::map<std::string, std::map<std::string, std::string>> inputs_;
   std::map<std::string, std::string> done_;
   std::optional<std::string> result_;
+  const JournalCapture* ExactCapture(const std::string& journal_step_id) const;
   std::map<std::string, RecordSummary> records_;
   std::vector<std::string> record_steps_;
 };

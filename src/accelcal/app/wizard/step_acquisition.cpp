@@ -9,7 +9,7 @@ StepAcquisition::StepAcquisition(double quiet_period_s) : quiet_period_s_(quiet_
 
 void StepAcquisition::MeasureNoiseFloor() {
   Stop();
-  noise_floor_.reset();
+  quiet_samples_.clear();
   quiet_ = CaptureStats();
 }
 
@@ -57,10 +57,13 @@ AcquisitionEvent StepAcquisition::Feed(const std::vector<Sample>& chunk) {
 }
 
 AcquisitionEvent StepAcquisition::FeedQuiet(const std::vector<Sample>& chunk) {
-  for (const Sample& s : chunk) quiet_->Add(s);
+  for (const Sample& s : chunk) {
+    quiet_->Add(s);
+    quiet_samples_.push_back(s);
+    if (quiet_->n >= 3 && quiet_->t_last_s - quiet_->t_first_s >= quiet_period_s_) break;
+  }
   if (quiet_->n < 3 || !(quiet_->t_last_s - quiet_->t_first_s >= quiet_period_s_))
     return AcquisitionEvent::kNone;
-  noise_floor_ = NoiseFloor::FromQuietPeriod(*quiet_);
   quiet_.reset();
   return AcquisitionEvent::kNoiseFloorMeasured;
 }
@@ -68,6 +71,7 @@ AcquisitionEvent StepAcquisition::FeedQuiet(const std::vector<Sample>& chunk) {
 AcquisitionEvent StepAcquisition::FeedCapture(const std::vector<Sample>& chunk) {
   capture_->Feed(chunk);
   const CaptureSnapshot snap = capture_->Snapshot();
+  if (capture_->finished()) last_turntable_ = snap.turntable;
   switch (snap.state) {
     case CaptureState::kAccepted:
       accepted_ = capture_->capture();

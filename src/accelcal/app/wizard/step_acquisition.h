@@ -17,7 +17,7 @@ namespace accelcal {
 
 enum class AcquisitionEvent {
   kNone,                // nothing to report (idle, or still filling)
-  kNoiseFloorMeasured,  // the quiet period is over: noise_floor() is set
+  kNoiseFloorMeasured,  // the quiet period is over: quiet_samples() holds it
   kCapturing,           // the capture engine is capturing (the sensor is still)
   kCaptureRetrying,     // a capture was interrupted (a bump, settling); it retries by itself
   kCaptureRejected,     // rejected or timed out: reason() says why; the capture is over
@@ -30,9 +30,10 @@ class StepAcquisition {
   // `quiet_period_s`: how long the sensor rests for the noise floor, s (> 0).
   explicit StepAcquisition(double quiet_period_s);
 
-  // Starts measuring the noise floor (forgetting any earlier one).
+  // Starts a quiet period for the noise floor (its samples: quiet_samples(), judged by the
+  // wizard's NoiseFloorGuard).
   void MeasureNoiseFloor();
-  // Starts a capture judged against the measured noise floor (which must exist).
+  // Starts a capture (judged against the context's noise floor).
   void StartCapture(const CaptureRequest& request, const CaptureEngineOptions& options,
                     const CaptureContext& context);
   // Starts streaming `record`; with `settle`, its first kRecordSettleS of samples are dropped
@@ -48,13 +49,16 @@ class StepAcquisition {
   bool recording() const { return record_ != nullptr; }
   bool record_settling() const { return record_ != nullptr && settling_; }
 
-  const std::optional<NoiseFloor>& noise_floor() const { return noise_floor_; }
+  // The last quiet period's samples (after kNoiseFloorMeasured).
+  const std::vector<Sample>& quiet_samples() const { return quiet_samples_; }
   // Of the quiet period, 0..1.
   double quiet_progress() const;
   // The running capture's snapshot (capturing() must be true).
   CaptureSnapshot capture_snapshot() const { return capture_->Snapshot(); }
   // Why the last capture was rejected or is retrying.
   const std::string& reason() const { return reason_; }
+  // The turntable checks' verdict of the last capture that ended (accepted or rejected).
+  const TurntableVerdict& last_turntable() const { return last_turntable_; }
   // The accepted capture (after kCaptureAccepted); the capture is over.
   Capture TakeCapture();
   // The running record (recording() must be true).
@@ -71,7 +75,8 @@ class StepAcquisition {
 
   double quiet_period_s_;
   std::optional<CaptureStats> quiet_;  // while measuring the noise floor
-  std::optional<NoiseFloor> noise_floor_;
+  std::vector<Sample> quiet_samples_;
+  TurntableVerdict last_turntable_;
   std::unique_ptr<CaptureEngine> capture_;
   std::optional<Capture> accepted_;
   std::unique_ptr<RecordStepWriter> record_;

@@ -2,10 +2,30 @@
 // sample source, recording everything accepted in a session journal. No terminal code: front
 // ends (ui/) drive it through WizardDriver (Poll / Handle / View).
 //
-// Steps: welcome (device serial, operator), then the procedure's steps in order: level (reversal
-// method), static poses and long records (capture engine: settling, retry after a bump, wrong
-// face refused), turntable runs (radius and rpm asked, checked against the range), fit,
-// diagnosis (asks before adopting), report (the calibration JSON is the journal's result).
+// Steps: welcome (device serial, operator, place, local gravity), then the procedure's steps
+// in order: level (reversal method; on the virtual bench the technician turns the feet as
+// advised), static poses and long records (capture engine: settling, retry after a bump, wrong
+// face refused), turntable runs (radius and rpm asked, checked against the range; a wrong
+// mounting or a tilted turntable refused with what to do), fit, diagnosis (asks before
+// adopting; names the gravity ambiguity when gravity is the standard value), report (the
+// calibration JSON and the session's gaps are the journal's result; the verdict says
+// INCOMPLETE when a required step is missing).
+//
+// The local gravity is asked at the welcome: a measured value with its uncertainty, the place's
+// latitude and altitude (WGS84), or "standard" said explicitly (gravity_input.h); the default
+// answer is the command line's gravity, else "standard". A procedure may refuse the standard
+// value, and may require the device serial and the operator.
+//
+// The noise floor (noise_floor_guard.h) is measured when the operator says the sensor rests
+// (Enter), refused when far above the procedure's expected noise or not still, shown, and
+// re-checked against each static capture: a floor that proves too high is lowered and the
+// captures judged with it judged again; those that fail are left out and captured again.
+//
+// Skipping a step asks first (s again skips, Enter keeps the step): a skipped required step
+// makes the report INCOMPLETE.
+//
+// Time: every sample is put on one session clock (session_clock.h): a resumed run continues
+// after the last recorded sample, with the gap stated.
 //
 // Records (kind "record": the noise and drift records) are streamed to the journal in chunks
 // by RecordStepWriter (record_step_writer.h): never refused for drift, a movement is shown and the
@@ -33,6 +53,8 @@
 #include "accelcal/session/procedure.h"
 #include "accelcal/app/wizard/calibration_steps.h"
 #include "accelcal/app/wizard/record_step_writer.h"
+#include "accelcal/app/wizard/noise_floor_guard.h"
+#include "accelcal/app/wizard/session_clock.h"
 #include "accelcal/app/wizard/session_model.h"
 #include "accelcal/app/wizard/step_acquisition.h"
 #include "accelcal/app/wizard/wizard_outputs.h"
@@ -45,7 +67,10 @@ struct WizardOptions {
   std::string session_name = "session";  // shown in the view and in the calibration's source
   std::string default_operator;          // offered at the welcome (may be empty)
   std::string default_device;            // device serial offered at the welcome (may be empty)
-  GravitySpec gravity;                   // local gravity for the fit and the checks
+  // The welcome's default gravity answer (the command line's --gravity / --latitude); the
+  // standard value when none was given. What the operator answers is used for the fit and
+  // the checks, and recorded in the session.
+  GravitySpec gravity;
   // Before the first capture of a run the sensor rests this long to measure the noise floor,
   // s; > 0.
   double quiet_period_s = 2.0;
@@ -77,8 +102,10 @@ class WizardEngine final : public WizardDriver {
 
  private:
   enum class Phase {
-    kWelcome,      // an input of the welcome (device, operator)
+    kWelcome,      // an input of the welcome (device, operator, place, gravity)
+    kQuietReady,   // asking the operator to leave the sensor at rest for the noise floor
     kQuiet,        // measuring the noise floor
+    kConfirmSkip,  // s was pressed: asking before the step is skipped
     kPlace,        // asking to place the prism / mount the turntable
     kCapture,      // the capture engine runs
     kRecord,       // a record step streams to the journal
@@ -110,16 +137,29 @@ class WizardEngine final : public WizardDriver {
   void OnLevelCapture(const Eigen::Vector3d& mean_counts);
   void FinishStep(const std::string& outcome);
   void SkipStep();
+  void AskSkip();
+  void HandleConfirmSkip(const Intent& intent);
   void GoBack();
+  // Noise floor (wizard_engine_capture.cpp).
+  void OnQuietMeasured();
+  void RecheckNoiseFloor(const Capture& latest);
+  void RestoreNoiseFloor();
+  // The gravity of the session: the welcome's answer (recorded), else the options'.
+  void ReadGravity();
+  std::string CheckWelcomeAnswer(const std::string& key, const std::string& value);
   void Quit();
   void HandleWelcome(const Intent& intent);
   // The welcome's questions in order: {input key, label, default}.
   struct WelcomeField {
     const char* key;
     const char* label;
-    const std::string& default_value;
+    std::string default_value;
   };
+  static constexpr int kWelcomeFields = 4;  // device, operator, place, gravity
   WelcomeField Welcome(int field) const;
+  // The rough model's "up" of a capture (unit, platform frame).
+  Eigen::Vector3d MeasuredUp(const Capture& c) const;
+  void OnCaptureRejected();
   void HandleTurntableInput(const Intent& intent);
   void HandleResult(const Intent& intent);
   void HandleCaptureIntent(const Intent& intent);
@@ -134,6 +174,7 @@ class WizardEngine final : public WizardDriver {
   // The view of each phase (wizard_engine_view.cpp).
   void SetWelcomeView(WizardView& v) const;
   void SetQuietView(WizardView& v) const;
+  void SetConfirmSkipView(WizardView& v) const;
   void SetPlaceView(WizardView& v) const;
   void SetLevelView(WizardView& v) const;
   void SetInputView(WizardView& v) const;
@@ -161,6 +202,12 @@ class WizardEngine final : public WizardDriver {
   bool progressed_ = false;                // this run has recorded a step or capture
   bool quit_ = false;
 
+  GravitySpec gravity_;  // the session's (the welcome's answer)
+  SessionClock clock_;   // every sample on one clock across resumes
+  NoiseFloorGuard floor_guard_;
+  std::vector<std::string> floor_lines_;  // what the noise floor's checks said, shown
+  std::optional<NoiseFloor> lowered_floor_;  // a floor lowered by the captures (this run or before)
+  bool clock_noted_ = false;
   StepAcquisition acq_;  // the noise floor, the capture or the record being acquired
   std::vector<CapturedPose> captured_;
   int next_capture_id_ = 1;
@@ -173,6 +220,7 @@ class WizardEngine final : public WizardDriver {
   double rpm_ = kNaN;
 
   bool adopt_effects_ = true;
+  Phase skip_from_ = Phase::kPlace;  // the phase s was pressed in
   std::string analysis_outcome_;  // the analysis step's figures, for the journal
 
   Eigen::Vector3d live_counts_ = Eigen::Vector3d::Constant(kNaN);

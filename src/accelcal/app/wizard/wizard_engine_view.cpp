@@ -32,12 +32,16 @@ WizardView WizardEngine::View() const {
   v.step_index = std::min(current_ + 2, v.step_count);
   v.live_counts = live_counts_;
   if (live_counts_.allFinite())
-    v.live_g = procedure_.nominal.Calibrate(live_counts_).norm() / options_.gravity.gravity_mps2;
+    v.live_g = procedure_.nominal.Calibrate(live_counts_).norm() / gravity_.gravity_mps2;
   v.problem = problem_;
   v.hint = hint_;
   // The resume summary is shown until this run has recorded something of its own.
   if (resumed_ && !progressed_) v.lines = resume_lines_;
   v.lines.insert(v.lines.end(), lines_.begin(), lines_.end());
+  // What the noise floor's checks said, beside the steps that acquire.
+  if (phase_ != Phase::kResult && phase_ != Phase::kDone)
+    v.lines.insert(v.lines.end(), floor_lines_.begin(), floor_lines_.end());
+  v.noise_floor_text = floor_guard_.Describe();
   v.status = source_.Describe() + ": " + source_.status().BriefReport();
   SetStepView(v);
   SetPhaseView(v);
@@ -73,8 +77,11 @@ void WizardEngine::SetPhaseView(WizardView& v) const {
   switch (phase_) {
     case Phase::kWelcome:
       return SetWelcomeView(v);
+    case Phase::kQuietReady:
     case Phase::kQuiet:
       return SetQuietView(v);
+    case Phase::kConfirmSkip:
+      return SetConfirmSkipView(v);
     case Phase::kPlace:
       return SetPlaceView(v);
     case Phase::kLevelTurn:
@@ -99,17 +106,35 @@ void WizardEngine::SetWelcomeView(WizardView& v) const {
   const WelcomeField field = Welcome(welcome_field_);
   v.screen = WizardScreen::kWelcome;
   v.prompt = fmt::format("Welcome to {}.", procedure_.title);
-  v.input = InputRequest{field.key, field.label, field.default_value, ""};
+  v.input = InputRequest{field.key, field.label, field.default_value, input_error_};
   v.keys = {{"Enter", "accept"}, {"b", "back"}, {"q", "save and quit"}};
 }
 
 void WizardEngine::SetQuietView(WizardView& v) const {
+  if (phase_ == Phase::kQuietReady) {
+    v.screen = WizardScreen::kPlacePose;
+    v.prompt = fmt::format(
+        "Noise floor: leave the sensor resting on the table, hands off, nothing shaking the bench "
+        "(turntable stopped); press Enter to measure it ({:g} s).", options_.quiet_period_s);
+    v.keys = WithNavigation({{"Enter", "measure"}});
+    return;
+  }
   v.screen = WizardScreen::kCapturing;
   v.prompt =
       fmt::format("Leave the sensor resting on the table: measuring the noise floor ({:g} s).",
                   options_.quiet_period_s);
   v.progress = acq_.quiet_progress();
   v.keys = {{"q", "save and quit"}};
+}
+
+void WizardEngine::SetConfirmSkipView(WizardView& v) const {
+  v.screen = WizardScreen::kPlacePose;
+  v.prompt = step().required
+                 ? fmt::format("Skip '{}'? The procedure requires it: without it the report's verdict "
+                               "is INCOMPLETE. Press s again to skip it, Enter to do it.", step().title)
+                 : fmt::format("Skip '{}'? The report will list it as skipped. Press s again to skip "
+                               "it, Enter to do it.", step().title);
+  v.keys = {{"s", "skip it"}, {"Enter", "do it"}, {"q", "save and quit"}};
 }
 
 void WizardEngine::SetPlaceView(WizardView& v) const {
@@ -182,8 +207,12 @@ void WizardEngine::SetResultView(WizardView& v) const {
   }
   const CalibrationOutcome* outcome = steps_.outcome();
   if (kind == StepKind::kDiagnosis && outcome != nullptr && !outcome->diagnosis.adopted.empty()) {
-    v.prompt = fmt::format("Adopt {} into the calibration? Enter adopts, n keeps the base model.",
-                           fmt::join(outcome->diagnosis.adopted_names(), ", "));
+    const bool ambiguous = !GravityAmbiguityNote(gravity_, outcome->diagnosis.adopted_names()).empty();
+    v.prompt = fmt::format("Adopt {} into the calibration? {}Enter adopts, n keeps the base model.",
+                           fmt::join(outcome->diagnosis.adopted_names(), ", "),
+                           ambiguous ? "Gravity is the standard value here, so a gravity error looks "
+                                       "the same (see above): with it the report says INCOMPLETE. "
+                                     : "");
     v.keys = WithNavigation({{"Enter", "adopt"}, {"n", "keep the base model"}});
     return;
   }

@@ -104,6 +104,9 @@ struct WizardView {
   std::string stability_text;     // "still", "moving: x std 4.1 counts, limit 2.5"
   double progress = kNaN;         // 0..1 during a capture
   std::optional<RecordView> record;  // a record step is running (screen kRecording)
+  // The session's noise floor, per axis, and where it came from ("x 1.52  y 1.49  z 1.71
+  // counts (quiet period of 2.0 s, 200 samples)"); empty before it is measured.
+  std::string noise_floor_text;
 
   std::string problem;            // what failed, in words; empty when nothing did
   std::string hint;               // what to do about it

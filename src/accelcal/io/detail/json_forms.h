@@ -40,8 +40,11 @@ AllanNoiseFigures AllanNoiseForKalibr(const nlohmann::json& allan, const Calibra
                                       const std::string& source_name);
 // history_json.h's format.
 nlohmann::json DeviceHistoryToJson(const DeviceHistory& history);
-// The "allan" and "noise" keys of a session's result or a calibration file, when present
-// (strictly read).
+// A session's gaps (the result's key "session_gaps"; the report's too), and strictly back.
+nlohmann::json SessionGapsToJson(const SessionGaps& gaps);
+SessionGaps SessionGapsFromJson(const nlohmann::json& j, const std::string& source);
+// The "allan", "noise" and "session_gaps" keys of a session's result or a calibration file,
+// when present (strictly read).
 void ReadAnalysesFromResult(const nlohmann::json& result, const std::string& source,
                             ReportInputs* inputs);
 

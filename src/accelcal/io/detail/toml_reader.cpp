@@ -136,6 +136,27 @@ Eigen::Vector3d TomlTableReader::Vector3(std::string_view key,
   return v;
 }
 
+Eigen::Vector2d TomlTableReader::Vector2(std::string_view key,
+                                         std::optional<Eigen::Vector2d> fallback,
+                                         NumberRange range) {
+  const toml::node* node = Get(key);
+  if (node == nullptr) {
+    if (!fallback) Missing(key);
+    return *fallback;
+  }
+  const auto* array = node->as_array();
+  if (array == nullptr || array->size() != 2) Fail(*node, key, "expected an array of two numbers");
+  Eigen::Vector2d v;
+  for (int i = 0; i < 2; ++i) {
+    const toml::node& element = *array->get(static_cast<std::size_t>(i));
+    const std::optional<double> value = AsNumber(element);
+    if (!value) Fail(element, key, "expected a number, got " + std::string(TypeName(element)));
+    CheckRange(element, key, *value, range);
+    v(i) = *value;
+  }
+  return v;
+}
+
 const toml::table* TomlTableReader::Table(std::string_view key) {
   const toml::node* node = Get(key);
   if (node == nullptr) return nullptr;

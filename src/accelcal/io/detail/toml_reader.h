@@ -39,6 +39,9 @@ class TomlTableReader {
   // An array of exactly three numbers.
   Eigen::Vector3d Vector3(std::string_view key, std::optional<Eigen::Vector3d> fallback,
                           NumberRange range = NumberRange::kAny);
+  // An array of exactly two numbers.
+  Eigen::Vector2d Vector2(std::string_view key, std::optional<Eigen::Vector2d> fallback,
+                          NumberRange range = NumberRange::kAny);
   // A sub-table, or nullptr when absent.
   const toml::table* Table(std::string_view key);
   // An array of tables ([[key]]); nullptr when absent.

@@ -1,0 +1,50 @@
+#include "accelcal/app/wizard/session_gaps.h"
+
+#include <fmt/core.h>
+
+namespace accelcal {
+namespace {
+
+bool IsCaptureKind(StepKind kind) { return kind == StepKind::kStatic || kind == StepKind::kTurntable; }
+
+std::string Input(const SessionModel& model, const std::string& key) {
+  const auto welcome = model.inputs().find(kWelcomeStepId);
+  if (welcome == model.inputs().end()) return "";
+  const auto value = welcome->second.find(key);
+  return value == welcome->second.end() ? "" : value->second;
+}
+
+// Why a capture step has no usable capture: its captures' left-out reasons.
+std::string LeftOutWhy(const ProcedureStep& step, const SessionModel& model) {
+  std::string why;
+  for (const JournalCapture& c : model.captures()) {
+    if (SessionModel::ProcedureStepOf(c.step_id) != step.id) continue;
+    const std::string reason = model.LeftOutReason(c);
+    if (!reason.empty()) why = fmt::format("its capture {} was left out: {}", c.capture.id, reason);
+  }
+  return why;
+}
+
+}  // namespace
+
+SessionGaps CollectSessionGaps(const Procedure& procedure, const SessionModel& model) {
+  SessionGaps gaps;
+  const auto& done = model.done_steps();
+  for (const ProcedureStep& s : procedure.steps) {
+    const auto d = done.find(s.id);
+    if (d != done.end() && d->second == "skipped") {
+      gaps.steps.push_back({s.id, s.title, "skipped", s.required});
+      continue;
+    }
+    if (!IsCaptureKind(s.kind) || model.CaptureOf(s.id) != nullptr) continue;
+    const std::string left_out = LeftOutWhy(s, model);
+    if (!left_out.empty()) gaps.steps.push_back({s.id, s.title, left_out, s.required});
+  }
+  if (procedure.requirements.device_serial && Input(model, "device").empty())
+    gaps.identification.push_back("device serial");
+  if (procedure.requirements.operator_name && Input(model, "operator").empty())
+    gaps.identification.push_back("operator");
+  return gaps;
+}
+
+}  // namespace accelcal

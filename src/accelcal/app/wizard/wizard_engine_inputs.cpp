@@ -1,0 +1,115 @@
+// The wizard engine's typed answers: the welcome (identification and the local gravity) and
+// a turntable run's radius and speed.
+#include <fmt/core.h>
+
+#include "accelcal/app/wizard/gravity_input.h"
+#include "accelcal/app/wizard/quantity_input.h"
+#include "accelcal/app/wizard/session_gaps.h"
+#include "accelcal/app/wizard/wizard_engine.h"
+
+namespace accelcal {
+
+WizardEngine::WelcomeField WizardEngine::Welcome(int field) const {
+  switch (field) {
+    case 0: return {"device", "Device serial number", options_.default_device};
+    case 1: return {"operator", "Operator", options_.default_operator};
+    case 2: return {"place", "Place (lab, bench)", options_.default_place};
+    default:
+      return {"gravity",
+              "Local gravity: measured m/s^2 (9.78030 +- 0.00002), place (lat -34.9 alt 43), or "
+              "standard",
+              GravityAnswerText(options_.gravity)};
+  }
+}
+
+// The gravity the session recorded at its welcome; the options' when it has none (a session
+// begun before the question was asked).
+void WizardEngine::ReadGravity() {
+  const auto welcome = model_.inputs().find(kWelcomeStepId);
+  if (welcome == model_.inputs().end()) return;
+  const auto answer = welcome->second.find("gravity");
+  if (answer == welcome->second.end()) return;
+  const GravityAnswer g = ParseGravityAnswer(answer->second);
+  if (g.ok()) gravity_ = g.gravity;
+}
+
+// Empty when `value` answers `key`; else why not.
+std::string WizardEngine::CheckWelcomeAnswer(const std::string& key, const std::string& value) {
+  const ProcedureRequirements& need = procedure_.requirements;
+  if (key == "device" && value.empty() && need.device_serial)
+    return "this procedure needs the device's serial number (on its label): type it";
+  if (key == "operator" && value.empty() && need.operator_name)
+    return "this procedure needs the operator's name: type it";
+  if (key != "gravity") return "";
+  const GravityAnswer g = ParseGravityAnswer(value);
+  if (!g.ok()) return g.error;
+  if (g.gravity.is_standard() && need.local_gravity)
+    return "this procedure needs the local gravity, not the standard value: give a measured value "
+           "(9.78030 +- 0.00002) or the place (lat -34.9 alt 43)";
+  gravity_ = g.gravity;
+  return "";
+}
+
+void WizardEngine::HandleWelcome(const Intent& intent) {
+  if (intent.kind == IntentKind::kBack) {
+    welcome_field_ = std::max(0, welcome_field_ - 1);
+    input_error_.clear();
+    return;
+  }
+  if (intent.kind != IntentKind::kSubmitText && intent.kind != IntentKind::kAccept) return;
+  const WelcomeField field = Welcome(welcome_field_);
+  std::string value = intent.kind == IntentKind::kSubmitText ? intent.text : "";
+  if (value.empty()) value = field.default_value;
+  if (std::string why = CheckWelcomeAnswer(field.key, value); !why.empty()) {
+    input_error_ = why;
+    return;
+  }
+  input_error_.clear();
+  // The gravity as it reads back (a resume parses it again).
+  if (std::string(field.key) == "gravity") value = GravityAnswerText(gravity_);
+  model_.RecordInput(kWelcomeStepId, field.key, value);
+  if (welcome_field_ + 1 < kWelcomeFields) {
+    ++welcome_field_;
+    return;
+  }
+  model_.RecordStepDone(kWelcomeStepId, "ok");
+  AdvanceFrom(0);
+}
+
+void WizardEngine::HandleTurntableInput(const Intent& intent) {
+  if (intent.kind == IntentKind::kSkip) return AskSkip();
+  if (intent.kind == IntentKind::kBack) return GoBack();
+  if (intent.kind != IntentKind::kAccept && intent.kind != IntentKind::kSubmitText) return;
+  const bool radius = phase_ == Phase::kRadius;
+  const std::string text = intent.kind == IntentKind::kSubmitText ? intent.text : "";
+  const double fallback = radius ? radius_m_ : rpm_;
+  const QuantityResult q = text.empty() ? QuantityResult{fallback, ""}
+                                        : (radius ? ParseRadius(text) : ParseRpm(text));
+  if (!q.ok()) {
+    input_error_ = q.error;
+    return;
+  }
+  input_error_.clear();
+  (radius ? radius_m_ : rpm_) = q.value;
+  if (radius) {
+    phase_ = Phase::kRpm;
+    return;
+  }
+  TurntableSetup setup;
+  setup.radius_m = radius_m_;
+  setup.rpm = rpm_;
+  setup.radial_axis = SensorAxisVector(step().radial_axis);
+  setup.up_axis = SensorAxisVector(step().up_axis);
+  TurntableStabilityOptions o;
+  o.gravity_mps2 = gravity_.gravity_mps2;
+  const std::string why = CheckTurntableAgainstRange(setup, procedure_.range_g, procedure_.nominal,
+                                                     procedure_.adc_range, o);
+  if (!why.empty()) {
+    input_error_ = why;
+    phase_ = Phase::kRadius;
+    return;
+  }
+  EnterPlace();
+}
+
+}  // namespace accelcal

@@ -1,0 +1,17 @@
+#!/usr/bin/env bash
+# The clumsy bench (scenarios/clumsy_bump.toml): a knock on the bench during the capture of the
+# tilted pose +x+y+z. The capture is retried by itself (never taken with the knock in it).
+# Usage: bash clumsy_bump.sh ACCELCAL SOURCE_DIR SHARED_DATA_DIR
+set -euo pipefail
+accelcal=$1
+source_dir=$2
+. "$source_dir/tests/e2e/lib/common.bash"
+. "$source_dir/tests/e2e/lib/clumsy.bash"
+short_procedure
+wizard clumsy_bump.toml "$work/s.db" ''
+said "spike: "
+said "retrying by itself once the sensor is still again"
+said "Verdict: PASS"
+calibration "$work/s.db"
+within_truth 4
+echo "clumsy_bump: ok"

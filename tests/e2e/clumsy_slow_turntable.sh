@@ -1,0 +1,21 @@
+#!/usr/bin/env bash
+# The clumsy bench (scenarios/clumsy_slow_turntable.toml): the turntable turns 1 % slower than
+# stated. With the local gravity known, the diagnosis finds the speed scale and the calibration
+# is right; on the standard value it names the gravity ambiguity and the report cannot PASS.
+# Usage: bash clumsy_slow_turntable.sh ACCELCAL SOURCE_DIR SHARED_DATA_DIR
+set -euo pipefail
+accelcal=$1
+source_dir=$2
+. "$source_dir/tests/e2e/lib/common.bash"
+. "$source_dir/tests/e2e/lib/clumsy.bash"
+short_procedure
+wizard clumsy_slow_turntable.toml "$work/g.db" '\n\n\n9.80665 +- 0.00001\n'
+said "rpm_scale"
+said "Verdict: PASS"
+calibration "$work/g.db"
+within_truth 4
+jq -e '[.effects[] | select(.name == "rpm_scale") | .parameters.rpm_scale] | length == 1 and (.[0] + 0.01 | fabs) < 0.002'   "$work/cal.json" > /dev/null || fail "the speed scale was not found: $(jq -c .effects "$work/cal.json")"
+wizard clumsy_slow_turntable.toml "$work/std.db" ''
+said "Gravity: rpm_scale found while gravity is the standard value"
+said "Verdict: INCOMPLETE"
+echo "clumsy_slow_turntable: ok"

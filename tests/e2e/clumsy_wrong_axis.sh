@@ -1,0 +1,19 @@
+#!/usr/bin/env bash
+# The clumsy bench (scenarios/clumsy_wrong_axis.toml), issue 12 problem 2: at "+x radial, +z up"
+# the technician mounts the sensor with +y outward. Once it was accepted and stored as "+x
+# radial"; now it is refused naming the radial axis, and the retry is right.
+# Usage: bash clumsy_wrong_axis.sh ACCELCAL SOURCE_DIR SHARED_DATA_DIR
+set -euo pipefail
+accelcal=$1
+source_dir=$2
+. "$source_dir/tests/e2e/lib/common.bash"
+. "$source_dir/tests/e2e/lib/clumsy.bash"
+short_procedure
+wizard clumsy_wrong_axis.toml "$work/s.db" ''
+said "problem: wrong mounting: the samples show +y radial, +z up (the centripetal "
+said "is on y), not +x radial, +z up: mount the sensor with +x pointing away from the spin axis and +z up"
+said "hint: mount the sensor +x radial, +z up as asked; Enter tries again"
+said "Verdict: PASS"
+calibration "$work/s.db"
+within_truth 4
+echo "clumsy_wrong_axis: ok"

@@ -1,0 +1,64 @@
+# Shared by the clumsy-bench end-to-end scripts (sourced after common.bash, with `accelcal` and
+# `source_dir` set). Each script plays one fault of scenarios/clumsy_*.toml through the wizard
+# in line mode and checks what the technician is told and that no wrong calibration passes.
+#
+#   short_procedure            writes $work/short.toml: the seed procedure with 3 s captures
+#                              (the checks are the same; CI time is not)
+#   wizard SCENARIO DB ANSWERS  runs the wizard on the sim at speed 0 with the answers given
+#                              (one per line, printf-style) and then empty ones; output in
+#                              $work/out, status checked
+#   calibration DB             writes $work/cal.json, the session's calibration
+#   within_truth K             every parameter of $work/cal.json within K sigma of the default
+#                              bench's truth (scenarios/bench_default.toml); else prints them
+#   said TEXT                  $work/out holds TEXT (fixed string; runs of blanks and line
+#                              breaks read as one blank, so wrapped lines match)
+#   flat FILE TEXT             the same for any FILE (status only)
+
+short_procedure() {
+  sed -e 's/^capture_duration_s = 10 /capture_duration_s = 3 /' \
+    "$source_dir/procedures/seed_calibration.toml" > "$work/short.toml"
+  grep -q '^capture_duration_s = 3 ' "$work/short.toml" || fail "short procedure: no capture_duration_s"
+}
+
+wizard() {  # SCENARIO DB ANSWERS
+  local scenario=$1 db=$2 answers=$3
+  set +e
+  { printf "$answers"; yes ''; } | "$accelcal" wizard --source sim --speed 0 \
+    --scenario "$source_dir/scenarios/$scenario" --procedure "$work/short.toml" --session "$db" \
+    --plain > "$work/out" 2> "$work/err"
+  local code=${PIPESTATUS[1]}
+  set -e
+  [ "$code" -eq 0 ] || { tail -20 "$work/out" >&2; cat "$work/err" >&2; fail "wizard exited $code"; }
+}
+
+calibration() { "$accelcal" report "$1" --format calibration -o "$work/cal.json" > /dev/null; }
+
+within_truth() {  # K
+  jq -e --argjson k "$1" '
+    def z(v; s; t): ((v - t) / s) | fabs;
+    [z(.bias_counts[0]; .uncertainty.bias_counts[0]; 2051.3),
+     z(.bias_counts[1]; .uncertainty.bias_counts[1]; 2039.6),
+     z(.bias_counts[2]; .uncertainty.bias_counts[2]; 2062.8),
+     z(.scale_counts_per_mps2[0]; .uncertainty.scale_counts_per_mps2[0]; 34.62),
+     z(.scale_counts_per_mps2[1]; .uncertainty.scale_counts_per_mps2[1]; 35.07),
+     z(.scale_counts_per_mps2[2]; .uncertainty.scale_counts_per_mps2[2]; 34.41),
+     z(.misalignment_rad.yz; .uncertainty.misalignment_rad.yz; 0.0042),
+     z(.misalignment_rad.zy; .uncertainty.misalignment_rad.zy; -0.0031),
+     z(.misalignment_rad.zx; .uncertainty.misalignment_rad.zx; 0.0057)] | max < $k' \
+    "$work/cal.json" > /dev/null || {
+    jq -c '{bias_counts, scale_counts_per_mps2, misalignment_rad, uncertainty}' "$work/cal.json" >&2
+    fail "the calibration is more than $1 sigma from the truth"
+  }
+}
+
+said() {
+  flat "$work/out" "$1" || { tail -30 "$work/out" >&2; fail "never said: $1"; }
+}
+
+# flat FILE TEXT: FILE holds TEXT, blanks and line breaks read as one blank. Never `producer |
+# grep -q`: under pipefail, grep leaving at the first match can kill the producer with SIGPIPE
+# and fail a check that matched, depending on how the two processes are scheduled.
+flat() {
+  tr -s ' \n' '  ' < "$1" > "$1.flat"
+  grep -qF -- "$2" "$1.flat"
+}
