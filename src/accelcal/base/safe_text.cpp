@@ -112,4 +112,23 @@ std::string DisplayText(std::string_view text) {
   return out;
 }
 
+std::string ShortDisplayText(std::string_view text, size_t max_bytes) {
+  std::string out = DisplayText(text);
+  if (out.size() <= max_bytes || max_bytes == 0) return out;
+  size_t cut = max_bytes - 1;  // room for "~"
+  while (cut > 0 && IsContinuation(static_cast<unsigned char>(out[cut]))) --cut;
+  return out.substr(0, cut) + "~";
+}
+
+std::string DisplayLines(std::string_view text) {
+  std::string out;
+  for (size_t start = 0;;) {
+    const size_t end = text.find('\n', start);
+    out += DisplayText(text.substr(start, end == std::string_view::npos ? std::string_view::npos : end - start));
+    if (end == std::string_view::npos) return out;
+    out += '\n';
+    start = end + 1;
+  }
+}
+
 }  // namespace accelcal

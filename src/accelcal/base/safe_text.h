@@ -31,4 +31,12 @@ std::string ToValidUtf8(std::string_view text);
 // "\xHH" per byte of their UTF-8 form. A backslash is kept as it is (a path stays readable).
 std::string DisplayText(std::string_view text);
 
+// DisplayText(text) cut to at most `max_bytes` bytes (at a character's boundary) with "~" at
+// the end when it was cut: a label in a table column.
+std::string ShortDisplayText(std::string_view text, size_t max_bytes);
+
+// Each line of `text` through DisplayText, the line breaks (LF) kept: an error message of
+// several lines whose parts came from a file or a user.
+std::string DisplayLines(std::string_view text);
+
 }  // namespace accelcal

@@ -325,7 +325,7 @@ json CalibrationToJson(const Calibration& cal) {
           {"captures", captures}};
 }
 
-std::string CalibrationToJsonText(const Calibration& cal) { return CalibrationToJson(cal).dump(2); }
+std::string CalibrationToJsonText(const Calibration& cal) { return detail::JsonText(CalibrationToJson(cal)); }
 
 Calibration CalibrationFromJsonText(const std::string& text, const std::string& source_name) {
   return CalibrationFromJson(ParseJsonText(text, source_name), source_name);
