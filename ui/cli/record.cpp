@@ -118,37 +118,43 @@ void RunRecord(const RecordCommandOptions& o) {
   auto next_status = Clock::now() + status_every;
   constexpr double kReadTimeoutS = 0.1;
   std::string why_stopped = "interrupted";
-  while (!g_interrupted) {
-    chunk.clear();
-    const ReadResult r = source->Read(kReadTimeoutS, &chunk);
-    ReportEvents(*source, r, o.quiet);
-    if (!chunk.empty() && !writer) {
-      writer.emplace(out, std::isfinite(chunk.front().temp_c));
-      if (o.duration_s > 0.0) end_s = chunk.front().t_s + o.duration_s;
+  // The writer throws when the stream fails (a full disk): say why, and keep whole lines only.
+  try {
+    while (!g_interrupted) {
+      chunk.clear();
+      const ReadResult r = source->Read(kReadTimeoutS, &chunk);
+      ReportEvents(*source, r, o.quiet);
+      if (!chunk.empty() && !writer) {
+        writer.emplace(out, std::isfinite(chunk.front().temp_c));
+        if (o.duration_s > 0.0) end_s = chunk.front().t_s + o.duration_s;
+      }
+      const bool reached = TrimToEnd(&chunk, end_s);
+      if (writer) writer->Write(chunk);
+      if (!out) throw Error("cannot write the recording");
+      if (reached) {
+        why_stopped = "duration reached";
+        break;
+      }
+      if (source->status().link == LinkState::kEnded) {
+        why_stopped = "end of input";
+        break;
+      }
+      if (Clock::now() >= next_status) {
+        // Flushing once a second bounds what an interruption (or kill -9) can lose.
+        if (writer) writer->Flush();
+        if (!out) throw Error("cannot write the recording");
+        if (!o.quiet) fmt::print(stderr, "{}", StatusLine(*source));
+        next_status = Clock::now() + status_every;
+      }
     }
-    const bool reached = TrimToEnd(&chunk, end_s);
-    if (writer) writer->Write(chunk);
-    if (!out) FailWrite(o, &file, writer ? writer->written() : 0);
-    if (reached) {
-      why_stopped = "duration reached";
-      break;
-    }
-    if (source->status().link == LinkState::kEnded) {
-      why_stopped = "end of input";
-      break;
-    }
-    if (Clock::now() >= next_status) {
-      // Flushing once a second bounds what an interruption (or kill -9) can lose.
-      if (writer) writer->Flush();
-      if (!out) FailWrite(o, &file, writer ? writer->written() : 0);
-      if (!o.quiet) fmt::print(stderr, "{}", StatusLine(*source));
-      next_status = Clock::now() + status_every;
-    }
+    if (!writer) writer.emplace(out, false);
+    writer->Flush();
+    if (file.is_open()) file.close();
+    if (!out || (o.output_path != "-" && file.fail())) throw Error("cannot write the recording");
+  } catch (const Error&) {
+    if (!out || file.fail()) FailWrite(o, &file, writer ? writer->written() : 0);
+    throw;
   }
-  if (!writer) writer.emplace(out, false);
-  writer->Flush();
-  if (file.is_open()) file.close();
-  if (!out || (o.output_path != "-" && file.fail())) FailWrite(o, &file, writer->written());
   if (!o.quiet)
     fmt::print(stderr, "{}accelcal record: {}; {} samples written to {}\n", StatusLine(*source),
                why_stopped, writer->written(), o.output_path);
