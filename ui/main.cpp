@@ -7,6 +7,7 @@
 
 #include "accelcal/base/version.h"
 #include "accelcal/base/error.h"
+#include "accelcal/base/safe_text.h"
 #include "cli/commands.h"
 #include "cli/wizard.h"
 
@@ -46,7 +47,9 @@ int main(int argc, char** argv) {
     return code == 0 ? 0 : 2;
   } catch (const std::exception& e) {
     std::fflush(stdout);
-    fmt::print(stderr, "accelcal: error: {}\n", e.what());
+    // A message may quote a file's field or a typed answer: no control character reaches the
+    // terminal as it is.
+    fmt::print(stderr, "accelcal: error: {}\n", accelcal::DisplayLines(e.what()));
     return 1;
   }
   return 0;

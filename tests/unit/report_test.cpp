@@ -422,7 +422,7 @@ TEST(ReportText, EightyColumnsAsciiAndNotRecorded) {
     for (char c : line) EXPECT_TRUE(c >= 0x20 && c < 0x7f) << "line " << n << ": " << line;
   }
   EXPECT_TRUE(Contains(text, "\n  Operator:           not recorded\n"));
-  EXPECT_TRUE(Contains(text, "?[31m"));  // the escape character made visible, not sent
+  EXPECT_TRUE(Contains(text, "\\x1B[31m"));  // the escape character made visible, not sent
 }
 
 // ---- HTML ------------------------------------------------------------------------------

@@ -15,6 +15,7 @@
 #include "accelcal/io/allan_file.h"
 #include "accelcal/io/atomic_write.h"
 #include "accelcal/io/calibration_file.h"
+#include "accelcal/io/text_file.h"
 #include "accelcal/report/allan_text.h"
 #include "accelcal/session/session_store.h"
 #include "cli/commands.h"
@@ -85,7 +86,7 @@ void RunAllan(const AllanCommandOptions& o) {
   if (!o.kalibr_path.empty() && !cal)
     throw Error("--kalibr: Kalibr wants m/s^2; give the sensor's --calibration");
   RecordAnalysis analysis;
-  if (o.recording_path != "-" && IsSessionFile(o.recording_path)) {
+  if (o.recording_path != "-" && !IsReadOnceInput(o.recording_path) && IsSessionFile(o.recording_path)) {
     analysis = AnalyzeSessionRecord(o, options, cal, &source);
   } else {
     analysis = AnalyzeRecordingFile(o.recording_path, options, cal);

@@ -59,7 +59,7 @@ Calibration ReadInput(const ExportCalCommandOptions& o, ExportContext* context) 
   context->source = o.input;
   context->device = o.device;
   context->date_utc = o.date_utc;
-  if (!IsSqliteFile(o.input)) return ReadCalibrationFile(o.input);
+  if (IsReadOnceInput(o.input) || !IsSqliteFile(o.input)) return ReadCalibrationFile(o.input);
   SessionOpenOptions read_only;
   read_only.read_only = true;
   const std::unique_ptr<SessionStore> store = SessionStore::Open(o.input, read_only);

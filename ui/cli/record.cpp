@@ -1,9 +1,11 @@
 // `accelcal record`: samples from a live source (the simulated bench, a serial port, a TCP
 // sample server, standard input, a recording replayed) into a continuous recording file, with
 // the source's status on stderr once a second.
+#include <cerrno>
 #include <chrono>
 #include <cmath>
 #include <csignal>
+#include <cstring>
 #include <fstream>
 #include <iostream>
 #include <memory>
@@ -13,6 +15,7 @@
 
 #include "accelcal/base/error.h"
 #include "accelcal/io/capture_set_writer.h"
+#include "accelcal/io/text_file.h"
 #include "accelcal/acquire/source/source_spec.h"
 #include "cli/commands.h"
 #include "accelcal/io/scenario_file.h"
@@ -87,6 +90,18 @@ std::ostream& OpenOutput(const std::string& path, std::ofstream* file) {
   return *file;
 }
 
+// The file could not take what was written (a full disk): cut it back to its last whole line
+// and stop with the reason, saying how much the file keeps.
+[[noreturn]] void FailWrite(const RecordCommandOptions& o, std::ofstream* file, long received) {
+  const int err = errno;
+  if (o.output_path == "-") throw Error(fmt::format("cannot write the samples to standard output: {}", std::strerror(err)));
+  file->close();
+  TruncateToLastWholeLine(o.output_path);
+  throw Error(fmt::format("cannot write '{}': {}; recording stopped after {} samples received (the file "
+                          "keeps its whole lines only)",
+                          o.output_path, std::strerror(err), received));
+}
+
 void RunRecord(const RecordCommandOptions& o) {
   SourceOptions source_options = o.source;
   if (!o.scenario_path.empty()) source_options.scenario = sim::LoadScenario(o.scenario_path);
@@ -103,33 +118,43 @@ void RunRecord(const RecordCommandOptions& o) {
   auto next_status = Clock::now() + status_every;
   constexpr double kReadTimeoutS = 0.1;
   std::string why_stopped = "interrupted";
-  while (!g_interrupted) {
-    chunk.clear();
-    const ReadResult r = source->Read(kReadTimeoutS, &chunk);
-    ReportEvents(*source, r, o.quiet);
-    if (!chunk.empty() && !writer) {
-      writer.emplace(out, std::isfinite(chunk.front().temp_c));
-      if (o.duration_s > 0.0) end_s = chunk.front().t_s + o.duration_s;
+  // The writer throws when the stream fails (a full disk): say why, and keep whole lines only.
+  try {
+    while (!g_interrupted) {
+      chunk.clear();
+      const ReadResult r = source->Read(kReadTimeoutS, &chunk);
+      ReportEvents(*source, r, o.quiet);
+      if (!chunk.empty() && !writer) {
+        writer.emplace(out, std::isfinite(chunk.front().temp_c));
+        if (o.duration_s > 0.0) end_s = chunk.front().t_s + o.duration_s;
+      }
+      const bool reached = TrimToEnd(&chunk, end_s);
+      if (writer) writer->Write(chunk);
+      if (!out) throw Error("cannot write the recording");
+      if (reached) {
+        why_stopped = "duration reached";
+        break;
+      }
+      if (source->status().link == LinkState::kEnded) {
+        why_stopped = "end of input";
+        break;
+      }
+      if (Clock::now() >= next_status) {
+        // Flushing once a second bounds what an interruption (or kill -9) can lose.
+        if (writer) writer->Flush();
+        if (!out) throw Error("cannot write the recording");
+        if (!o.quiet) fmt::print(stderr, "{}", StatusLine(*source));
+        next_status = Clock::now() + status_every;
+      }
     }
-    const bool reached = TrimToEnd(&chunk, end_s);
-    if (writer) writer->Write(chunk);
-    if (reached) {
-      why_stopped = "duration reached";
-      break;
-    }
-    if (source->status().link == LinkState::kEnded) {
-      why_stopped = "end of input";
-      break;
-    }
-    if (Clock::now() >= next_status) {
-      // Flushing once a second bounds what an interruption (or kill -9) can lose.
-      if (writer) writer->Flush();
-      if (!o.quiet) fmt::print(stderr, "{}", StatusLine(*source));
-      next_status = Clock::now() + status_every;
-    }
+    if (!writer) writer.emplace(out, false);
+    writer->Flush();
+    if (file.is_open()) file.close();
+    if (!out || (o.output_path != "-" && file.fail())) throw Error("cannot write the recording");
+  } catch (const Error&) {
+    if (!out || file.fail()) FailWrite(o, &file, writer ? writer->written() : 0);
+    throw;
   }
-  if (!writer) writer.emplace(out, false);
-  writer->Flush();
   if (!o.quiet)
     fmt::print(stderr, "{}accelcal record: {}; {} samples written to {}\n", StatusLine(*source),
                why_stopped, writer->written(), o.output_path);

@@ -89,7 +89,7 @@ void AddLimits(const ReportCommandOptions& o, ReportInputs* in) {
 
 void RunReport(const ReportCommandOptions& o) {
   ReportInputs in;
-  if (LooksLikeJson(o.input)) {
+  if (IsReadOnceInput(o.input) || LooksLikeJson(o.input)) {
     const std::string text = ReadTextFile(o.input);
     in.calibration = CalibrationFromJsonText(text, o.input);
     ReadAnalysesFromResultText(text, o.input, &in);

@@ -1,6 +1,7 @@
 #include "cli/simulate.h"
 
 #include <fstream>
+#include <sstream>
 #include <iostream>
 #include <memory>
 
@@ -27,15 +28,15 @@ void WriteOutput(const std::string& path, std::ostream& stdout_stream, WriteFn&&
     stdout_stream.flush();
     return;
   }
-  std::ofstream out(path, std::ios::binary | std::ios::trunc);
-  if (!out) throw Error("cannot open '" + path + "' for writing");
+  // Made in memory, then written at once (atomic_write.h): a full disk leaves no empty or
+  // half-written file behind, and says so.
+  std::ostringstream out;
   try {
     write(out);
   } catch (const Error& e) {
     throw Error("'" + path + "': " + e.what());
   }
-  out.close();
-  if (!out) throw Error("cannot write '" + path + "'");
+  WriteFileAtomically(path, out.str());
 }
 
 }  // namespace

@@ -1,5 +1,6 @@
 #include "accelcal/analysis/normality.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <fmt/core.h>
@@ -30,12 +31,20 @@ NormalityTest JarqueBera(const std::vector<double>& x, double std_counts, double
                          double quantization_limit_counts) {
   const long n = static_cast<long>(x.size());
   if (n < 8) throw Error(fmt::format("normality test: {} values are too few (at least 8)", n));
-  double mean = 0.0;
-  for (double v : x) mean += v;
-  mean /= static_cast<double>(n);
-  double m2 = 0.0, m3 = 0.0, m4 = 0.0;  // central moments (1/n)
+  // Skewness and kurtosis do not depend on the unit: the values are divided by the largest
+  // magnitude first, so readings near 1e308 give moments, not inf and then nan.
+  double largest = 0.0;
   for (double v : x) {
-    const double d = v - mean;
+    if (!std::isfinite(v)) throw Error("normality test: a value is not a finite number");
+    largest = std::max(largest, std::fabs(v));
+  }
+  const double unit = largest > 0.0 ? largest : 1.0;
+  double mean = 0.0;
+  for (double v : x) mean += v / unit;
+  mean /= static_cast<double>(n);
+  double m2 = 0.0, m3 = 0.0, m4 = 0.0;  // central moments (1/n), in units of `unit`
+  for (double v : x) {
+    const double d = v / unit - mean;
     const double d2 = d * d;
     m2 += d2;
     m3 += d2 * d;

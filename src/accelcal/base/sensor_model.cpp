@@ -63,6 +63,17 @@ std::string SensorModel::Validate() const {
   for (int i = kScaleX; i <= kScaleZ; ++i) {
     if (v(i) <= 0.0) return std::string(ParameterName(i)) + " must be positive (counts per m/s^2)";
   }
+  // Every reading a 32-bit ADC can give must calibrate to a finite number (scale 1e-320 would
+  // give inf, then nan through T): the map is linear, so its extremes are at the corners.
+  constexpr double kLargestRawCounts = 2147483648.0;  // 2^31
+  for (int corner = 0; corner < 8; ++corner) {
+    const Eigen::Vector3d raw(corner & 1 ? kLargestRawCounts : -kLargestRawCounts,
+                              corner & 2 ? kLargestRawCounts : -kLargestRawCounts,
+                              corner & 4 ? kLargestRawCounts : -kLargestRawCounts);
+    if (!Calibrate(raw).allFinite())
+      return "a reading of 2^31 counts would calibrate to an infinite value: a scale is too small "
+             "or a misalignment too large for any sensor";
+  }
   return {};
 }
 

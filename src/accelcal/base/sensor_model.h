@@ -54,7 +54,8 @@ struct SensorModel {
   Eigen::Matrix<double, kNumBaseParameters, 1> ToVector() const;
   static SensorModel FromVector(const Eigen::Ref<const Eigen::VectorXd>& p);
 
-  // Empty when usable; otherwise why not (non-finite value, scale not positive).
+  // Empty when usable; otherwise why not (non-finite value, scale not positive, or a reading
+  // within +-2^31 counts that would calibrate to an infinite or undefined value).
   std::string Validate() const;
 };
 

@@ -89,6 +89,8 @@ ApplyStreamResult ApplyStream(std::istream& in, std::ostream& out, const Calibra
       }
       try {
         a = applier.Apply(sample);
+        // Never print inf or nan as a result (an effect's term may overflow for a wild reading).
+        if (!a.allFinite()) throw Error("the calibrated value is not a finite number (the reading is out of the sensor's range)");
       } catch (const Error& e) {
         throw InputError(source_name, result.lines, 0, e.what());
       }

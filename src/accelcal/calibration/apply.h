@@ -54,7 +54,8 @@ struct ApplyStreamResult {
 // Reads lines `t ax ay az [temp_c]` (the sample protocol: blanks or commas, '#' comments) from
 // `in` and writes `t ax ay az [temp_c]` with ax ay az in m/s^2 to `out`; comments are passed
 // through. A malformed line (or one without the temperature the calibration needs) goes to
-// `on_error` and is skipped; the stream goes on.
+// `on_error` and is skipped; the stream goes on. So is a line whose calibrated value is not
+// finite: no inf or nan is ever written.
 ApplyStreamResult ApplyStream(std::istream& in, std::ostream& out, const CalibrationApplier& applier,
                               const std::string& source_name,
                               const std::function<void(const InputError&)>& on_error);

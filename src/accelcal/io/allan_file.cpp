@@ -243,7 +243,7 @@ void ReadAnalysesFromResult(const json& result, const std::string& source, Repor
 
 std::string AllanFileText(const RecordAnalysis& analysis, const std::string& source,
                           double drift_window_s) {
-  return RecordAnalysisToJson(analysis, source, drift_window_s).dump(2) + "\n";
+  return detail::JsonText(RecordAnalysisToJson(analysis, source, drift_window_s)) + "\n";
 }
 
 void WriteAllanFile(const std::string& path, const std::string& text) { WriteFileAtomically(path, text); }

@@ -3,7 +3,10 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
-#include <fstream>
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include <fmt/core.h>
 
@@ -11,17 +14,50 @@
 
 namespace accelcal {
 
-void WriteFileAtomically(const std::string& path, std::string_view bytes) {
-  const std::string tmp = path + ".tmp";
-  {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    if (!out) throw Error(fmt::format("cannot write '{}': {}", tmp, std::strerror(errno)));
-    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-    out.flush();
-    if (!out) throw Error(fmt::format("cannot write '{}': {}", tmp, std::strerror(errno)));
+namespace {
+
+// Writes all of `bytes` to `path` (created or truncated) and closes it; false with errno set on
+// any failure (a full disk shows at the write or at the close).
+bool WriteAll(const std::string& path, std::string_view bytes, int flags) {
+  const int fd = ::open(path.c_str(), flags | O_CLOEXEC, 0644);
+  if (fd < 0) return false;
+  size_t done = 0;
+  while (done < bytes.size()) {
+    const ssize_t n = ::write(fd, bytes.data() + done, bytes.size() - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) {
+      const int err = n < 0 ? errno : ENOSPC;
+      ::close(fd);
+      errno = err;
+      return false;
+    }
+    done += static_cast<size_t>(n);
   }
-  if (std::rename(tmp.c_str(), path.c_str()) != 0)
-    throw Error(fmt::format("cannot write '{}': {}", path, std::strerror(errno)));
+  return ::close(fd) == 0;
+}
+
+}  // namespace
+
+void WriteFileAtomically(const std::string& path, std::string_view bytes) {
+  // A device or a pipe (/dev/stdout, <(...) >, /dev/full) is written in place: renaming a file
+  // over it would replace the device node.
+  struct stat info {};
+  if (::stat(path.c_str(), &info) == 0 && !S_ISREG(info.st_mode)) {
+    if (!WriteAll(path, bytes, O_WRONLY | O_TRUNC))
+      throw Error(fmt::format("cannot write '{}': {}", path, std::strerror(errno)));
+    return;
+  }
+  const std::string tmp = path + ".tmp";
+  if (!WriteAll(tmp, bytes, O_WRONLY | O_CREAT | O_TRUNC)) {
+    const int err = errno;
+    std::remove(tmp.c_str());  // nothing half written is left behind
+    throw Error(fmt::format("cannot write '{}': {}", path, std::strerror(err)));
+  }
+  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
+    const int err = errno;
+    std::remove(tmp.c_str());
+    throw Error(fmt::format("cannot write '{}': {}", path, std::strerror(err)));
+  }
 }
 
 }  // namespace accelcal

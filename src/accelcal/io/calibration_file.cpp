@@ -331,7 +331,7 @@ json CalibrationToJson(const Calibration& cal) {
           {"captures", captures}};
 }
 
-std::string CalibrationToJsonText(const Calibration& cal) { return CalibrationToJson(cal).dump(2); }
+std::string CalibrationToJsonText(const Calibration& cal) { return detail::JsonText(CalibrationToJson(cal)); }
 
 std::string SessionResultJsonText(const Calibration& cal, const SessionGaps& gaps) {
   json j = CalibrationToJson(cal);

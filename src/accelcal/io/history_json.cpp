@@ -31,7 +31,7 @@ nlohmann::json DeviceHistoryToJson(const DeviceHistory& h) {
 }
 
 std::string DeviceHistoryJsonText(const DeviceHistory& history) {
-  return DeviceHistoryToJson(history).dump(2) + "\n";
+  return detail::JsonText(DeviceHistoryToJson(history)) + "\n";
 }
 
 }  // namespace accelcal

@@ -80,7 +80,7 @@ nlohmann::json NoiseReportToJson(const NoiseReport& report) {
           {"warnings", report.warnings}};
 }
 
-std::string NoiseFileText(const NoiseReport& report) { return NoiseReportToJson(report).dump(2) + "\n"; }
+std::string NoiseFileText(const NoiseReport& report) { return detail::JsonText(NoiseReportToJson(report)) + "\n"; }
 
 NoiseSection ParseNoiseText(const std::string& text, const std::string& source) {
   return ParseNoiseJson(ParseJsonText(text, source), source);

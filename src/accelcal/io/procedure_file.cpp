@@ -89,9 +89,8 @@ SensorAxis ReadAxis(TomlTableReader& r, std::string_view key, SensorAxis fallbac
 }
 
 void ReadPose(TomlTableReader& r, ProcedureStep& s) {
-  const toml::node* node = r.Get("up");
   s.up = r.Vector3("up", Eigen::Vector3d::UnitZ());
-  if (!(s.up.norm() > 0.0)) r.Fail(*node, "up", "must not be zero");
+  if (!(s.up.norm() > 0.0)) r.FailKey("up", "must not be zero");
   s.up.normalize();
   s.pose_name = r.String("pose", DescribeUp(s.up) + " up");
 }
@@ -102,7 +101,7 @@ void ReadTurntable(TomlTableReader& r, ProcedureStep& s) {
   s.radial_axis = ReadAxis(r, "radial", SensorAxis::kPlusX);
   s.up_axis = ReadAxis(r, "up_axis", SensorAxis::kPlusZ);
   if (SensorAxisVector(s.radial_axis).cross(SensorAxisVector(s.up_axis)).norm() < 0.5)
-    r.Fail(*r.Get("radial"), "radial", "must be perpendicular to up_axis");
+    r.FailKey("radial", "must be perpendicular to up_axis");  // "radial" may be the default
   s.pose_name = fmt::format("{} radial, {} up", SensorAxisToString(s.radial_axis),
                             SensorAxisToString(s.up_axis));
 }

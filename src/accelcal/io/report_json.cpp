@@ -116,6 +116,6 @@ json ReportToJson(const ReportModel& m) {
           {"verdict", std::string(VerdictToString(m.verdict))}};
 }
 
-std::string ReportJsonText(const ReportModel& model) { return ReportToJson(model).dump(2) + "\n"; }
+std::string ReportJsonText(const ReportModel& model) { return detail::JsonText(ReportToJson(model)) + "\n"; }
 
 }  // namespace accelcal

@@ -7,6 +7,7 @@
 #include <fmt/core.h>
 #include <nlohmann/json.hpp>
 
+#include "accelcal/io/detail/json_values.h"
 #include "accelcal/io/detail/toml_reader.h"
 #include "accelcal/base/error.h"
 #include "accelcal/acquire/sim/scenario.h"
@@ -287,7 +288,7 @@ std::string ScenarioTruthJsonText(const Scenario& scenario) {
                                 m.scale_counts_per_mps2.z()};
   j["misalignment_rad"] = {{"yz", m.a_yz_rad}, {"zy", m.a_zy_rad}, {"zx", m.a_zx_rad}};
   j["gravity_mps2"] = scenario.bench.gravity_mps2;
-  return j.dump(2) + "\n";
+  return detail::JsonText(j) + "\n";
 }
 
 }  // namespace accelcal::sim

@@ -4,6 +4,7 @@
 
 #include <fmt/core.h>
 
+#include "accelcal/base/safe_text.h"
 
 namespace accelcal {
 namespace {
@@ -22,7 +23,7 @@ std::string Row(const CalibrationCapture& c) {
     status = fmt::format("{:+.5f} m/s^2 ({:+.1f} sigma)", c.residual_mps2,
                          c.sigma_mps2 > 0 ? c.residual_mps2 / c.sigma_mps2 : 0.0);
   }
-  std::string label = c.label.size() > 14 ? c.label.substr(0, 13) + "~" : c.label;
+  const std::string label = ShortDisplayText(c.label, 14);  // a label may hold anything
   return fmt::format("{:>4} {:<9} {:<14} {:>6} {:<22} {}\n", c.id, CaptureKindToString(c.kind),
                      label, c.n_samples, Conditions(c), status);
 }

@@ -168,7 +168,9 @@ ReportModel BuildReportModel(const ReportInputs& in) {
   m.optimizer = cal.fit.optimizer;
   m.captures_used = cal.fit.captures_used;
   m.dof = cal.fit.dof;
-  m.chi2_per_dof = cal.fit.chi2_per_dof;
+  // chi2/dof is undefined with no degrees of freedom (the fit writes -1 or 0/0 there): NaN,
+  // which the reports show as "-", never "-1.000".
+  m.chi2_per_dof = cal.fit.dof > 0 && cal.fit.chi2_per_dof >= 0.0 ? cal.fit.chi2_per_dof : kNaN;
   m.condition_number = cal.fit.condition_number;
   m.warnings = cal.fit.warnings;
   m.residual_rms_mps2 = cal.residual_rms_mps2;

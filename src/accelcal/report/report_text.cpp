@@ -4,6 +4,7 @@
 
 #include <fmt/core.h>
 
+#include "accelcal/base/safe_text.h"
 namespace accelcal {
 namespace {
 
@@ -11,12 +12,8 @@ constexpr size_t kWidth = 80;
 const char* const kAxisNames[3] = {"x", "y", "z"};
 
 // User-typed text on paper: control characters (and DEL) become '?'.
-std::string Clean(const std::string& s) {
-  std::string out = s;
-  for (char& c : out)
-    if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) c = '?';
-  return out;
-}
+// Text from a user or a file, safe on a terminal (base/safe_text.h).
+std::string Clean(const std::string& s) { return DisplayText(s); }
 
 std::string OrNot(const std::string& s) { return s.empty() ? kNotRecorded : Clean(s); }
 
@@ -97,8 +94,7 @@ std::string CaptureTable(const ReportModel& m) {
   out += "                                                     (cnt)   (m/s^2)\n";
   for (const ReportCapture& c : m.captures) {
     const CalibrationCapture& r = c.record;
-    std::string label = Clean(r.label);
-    if (label.size() > 20) label = label.substr(0, 19) + "~";
+    const std::string label = ShortDisplayText(r.label, 20);
     out += fmt::format("{:>3} {:<20} {:<9} {:>5} {:>4} {:>7} {:>6} {:>9} {}\n", r.id, label,
                        CaptureKindToString(r.kind), Num(r.radius_m, "{:.3f}"), Num(r.rpm, "{:.0f}"),
                        r.n_samples, Num(c.noise_counts, "{:.2f}"), Num(r.residual_mps2, "{:+.5f}"),

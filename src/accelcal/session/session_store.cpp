@@ -72,12 +72,15 @@ std::unique_ptr<SessionStore> SessionStore::Open(const std::string& path,
   // The lock comes first, so that two processes never create or check the schema at once.
   std::unique_ptr<detail::SessionLock> lock;
   if (!options.read_only) lock = std::make_unique<detail::SessionLock>(path);
+  const bool wal_missing = exists && detail::WalFileMissing(path);
   auto db = std::make_unique<detail::SqliteDb>(path, options.read_only);
-  if (!options.read_only && detail::IsEmptyDatabase(*db)) {
+  // An empty database whose -wal is missing is a copy made while its writer ran, not a new
+  // session: never create a schema over it (CheckSessionSchema says what is missing).
+  if (!options.read_only && !wal_missing && detail::IsEmptyDatabase(*db)) {
     ConfigureWriter(*db);
     detail::CreateSessionSchema(*db, StemOf(path), options.procedure, options.source);
   } else {
-    detail::CheckSessionSchema(*db);
+    detail::CheckSessionSchema(*db, wal_missing);
     if (!options.read_only) {
       ConfigureWriter(*db);
       detail::MigrateSessionSchema(*db);
@@ -126,6 +129,10 @@ void SessionStore::RecordCapture(const std::string& step_id, const Capture& capt
   detail::InsertCaptureRow(*db_, step_id, capture, now);
   TouchSession(*db_, now);
   transaction.Commit();
+  // Move the committed pages from the -wal file into the session file itself, so a copy of the
+  // file alone (made after a kill -9, without its -wal) still holds every accepted capture.
+  // PASSIVE: never waits for a reader; what a reader blocks goes in at the next capture.
+  db_->Exec("PRAGMA wal_checkpoint(PASSIVE)");
 }
 
 void SessionStore::RecordStepDone(const std::string& step_id, const std::string& outcome) {

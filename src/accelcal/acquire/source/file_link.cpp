@@ -1,6 +1,7 @@
 #include "accelcal/acquire/source/file_link.h"
 
 #include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -41,6 +42,13 @@ class FdLink final : public ByteLink {
 std::unique_ptr<ByteLink> OpenFileLink(const std::string& path) {
   const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
   if (fd < 0) throw Error("cannot open '" + path + "': " + std::strerror(errno));
+  // A folder opens for reading but every read fails (EISDIR), which a stream takes for its
+  // end: "ended, 0 samples". Refuse it here, with the reason.
+  struct stat info {};
+  if (::fstat(fd, &info) == 0 && S_ISDIR(info.st_mode)) {
+    ::close(fd);
+    throw Error("cannot read '" + path + "': it is a folder, not a file of samples");
+  }
   return std::make_unique<FdLink>("file:" + path, fd, true);
 }
 

@@ -1,6 +1,8 @@
 #include "accelcal/io/detail/json_values.h"
 
+#include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include <fmt/core.h>
 
@@ -26,22 +28,50 @@ json JsonNumbers(const std::vector<double>& values) {
   return out;
 }
 
+std::string JsonText(const json& j) { return j.dump(2, ' ', false, json::error_handler_t::replace); }
+
+namespace {
+
+// Line and column (from 1) of the byte at `at`.
+std::pair<long, long> LineColumn(const std::string& text, size_t at) {
+  at = std::min(at, text.size());
+  long line = 1, col = 1;
+  for (size_t i = 0; i < at; ++i) {
+    if (text[i] == '\n') {
+      ++line;
+      col = 1;
+    } else {
+      ++col;
+    }
+  }
+  return {line, col};
+}
+
+// nlohmann's overflow message quotes the literal ("number overflow parsing '1e999'"): find it
+// in the text to name its place.
+[[noreturn]] void FailNumberOverflow(const std::string& text, const std::string& source, const std::string& what) {
+  const size_t open = what.find('\'');
+  const size_t close = open == std::string::npos ? open : what.find('\'', open + 1);
+  const std::string literal = close == std::string::npos ? std::string() : what.substr(open + 1, close - open - 1);
+  const size_t at = literal.empty() ? std::string::npos : text.find(literal);
+  const auto [line, col] = at == std::string::npos ? std::pair<long, long>{0, 0} : LineColumn(text, at);
+  throw InputError(source, line, col,
+                   fmt::format("the number {} is beyond a double's range", literal.substr(0, 40)));
+}
+
+}  // namespace
+
 json ParseJsonText(const std::string& text, const std::string& source) {
   try {
     return json::parse(text);
   } catch (const json::parse_error& e) {
     // nlohmann reports a byte offset; turn it into line and column.
-    const size_t at = std::min<size_t>(e.byte == 0 ? 0 : e.byte - 1, text.size());
-    long line = 1, col = 1;
-    for (size_t i = 0; i < at; ++i) {
-      if (text[i] == '\n') {
-        ++line;
-        col = 1;
-      } else {
-        ++col;
-      }
-    }
+    const auto [line, col] = LineColumn(text, e.byte == 0 ? 0 : e.byte - 1);
     throw InputError(source, line, col, "not valid JSON");
+  } catch (const json::out_of_range& e) {
+    FailNumberOverflow(text, source, e.what());
+  } catch (const json::exception&) {
+    throw InputError(source, 0, 0, "not valid JSON");
   }
 }
 

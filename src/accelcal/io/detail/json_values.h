@@ -23,7 +23,14 @@ json JsonTriadOrNull(const Eigen::Vector3d& v);
 // Each value, null where not finite.
 json JsonNumbers(const std::vector<double>& values);
 
-// Parses `text` as JSON; InputError(source, line, column, "not valid JSON") otherwise.
+// `j` as text (2-space indent). A string that is not well-formed UTF-8 (a device name typed
+// on a Latin-1 terminal) has each ill-formed byte written as U+FFFD instead of making the
+// library throw: text is replaced at input (base/safe_text.h), this is the last guard.
+std::string JsonText(const json& j);
+
+// Parses `text` as JSON; InputError(source, line, column, "not valid JSON") otherwise, and
+// InputError(source, line, column, "the number N is beyond a double's range") for a literal
+// such as 1e999 (never a library's exception text).
 json ParseJsonText(const std::string& text, const std::string& source);
 // Reads the file `path` (once: a pipe works) and parses it.
 json ReadJsonFile(const std::string& path);

@@ -48,6 +48,11 @@ void TomlTableReader::Fail(const toml::node& node, std::string_view key,
   throw InputError(source_name_, at.line, at.column, Name(key) + ": " + message);
 }
 
+void TomlTableReader::FailKey(std::string_view key, const std::string& message) const {
+  const toml::node* node = table_.get(key);
+  Fail(node != nullptr ? *node : static_cast<const toml::node&>(table_), key, message);
+}
+
 void TomlTableReader::Missing(std::string_view key) const {
   Fail(table_, key, "required key is missing");
 }

@@ -51,6 +51,9 @@ class TomlTableReader {
   void Finish() const;
 
   // Throws InputError at `node` with "PATH.KEY: message" (or "PATH: message" for an empty key).
+  // Fail at `key`'s node, or at the table when the key is absent (a default value that
+  // conflicts with another key: the file has no node of its own to point at).
+  [[noreturn]] void FailKey(std::string_view key, const std::string& message) const;
   [[noreturn]] void Fail(const toml::node& node, std::string_view key,
                          const std::string& message) const;
   // The node of `key`, or nullptr; marks the key as read.

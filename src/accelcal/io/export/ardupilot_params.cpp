@@ -30,9 +30,9 @@ ExportResult ExportArduPilotParams(const Calibration& cal, const DriverScaleOpti
   t += "# ArduPilot applies (accel - INS_ACCOFFS) * INS_ACCSCAL per sensor axis\n"
        "# (AP_InertialSensor_Backend::_rotate_and_correct_accel). Misalignment not held.\n";
   for (int j = 0; j < 3; ++j)
-    t += fmt::format("INS_ACCOFFS_{},{:.9g}\n", kAxes[j], c.offset_mps2(j));
+    t += fmt::format("INS_ACCOFFS_{},{}\n", kAxes[j], ExportNumber9(c.offset_mps2(j)));
   for (int j = 0; j < 3; ++j)
-    t += fmt::format("INS_ACCSCAL_{},{:.9g}\n", kAxes[j], c.scale(j));
+    t += fmt::format("INS_ACCSCAL_{},{}\n", kAxes[j], ExportNumber9(c.scale(j)));
   AddDiagonalLimits(cal, c, "ArduPilot", &result);
   for (int j = 0; j < 3; ++j) {
     if (std::fabs(c.offset_mps2(j)) > kOffsetRangeMps2)

@@ -24,6 +24,19 @@ Eigen::Vector3d EffectTriple(const Calibration& cal, const std::string& name, co
   return v;
 }
 
+// `text` (one line already: DescribeOrigin) safe inside a C block comment: "*/" would end the
+// comment and let the rest compile as code, "/*" inside a comment is a warning (-Wcomment, an
+// error under -Werror), and "??" could start a trigraph (C99 translation phase 1).
+std::string InsideCComment(std::string_view text) {
+  std::string out;
+  for (char c : text) {
+    const char before = out.empty() ? ' ' : out.back();
+    if ((before == '*' && c == '/') || (before == '/' && c == '*') || (before == '?' && c == '?')) out += ' ';
+    out += c;
+  }
+  return out;
+}
+
 bool Has(const std::vector<std::string>& names, const char* name) {
   return std::find(names.begin(), names.end(), name) != names.end();
 }
@@ -72,7 +85,7 @@ ExportResult ExportCHeader(const Calibration& cal, const ExportContext& context)
       " * Gravity used by the fit: {} m/s^2. Define ACCELCAL_REAL as double before including\n"
       " * this file for double arithmetic (default float).\n"
       " */\n",
-      DescribeOrigin(cal, context), effects.empty() ? std::string("none") : fmt::format("{}", fmt::join(effects, ", ")),
+      InsideCComment(DescribeOrigin(cal, context)), effects.empty() ? std::string("none") : fmt::format("{}", fmt::join(effects, ", ")),
       ExportNumber(cal.gravity.gravity_mps2)));
   put("#ifndef ACCELCAL_CALIBRATION_H\n#define ACCELCAL_CALIBRATION_H\n\n");
   if (quadratic) put("#include <math.h>\n\n");

@@ -9,9 +9,13 @@
 namespace accelcal {
 namespace {
 
+// An empty field for a value that is not known (a residual RMS an older file lacks): never
+// "nan" or "inf".
+std::string OptionalNumber(double value) { return std::isfinite(value) ? ExportNumber(value) : std::string(); }
+
 std::string Row(const std::string& name, double value, double sigma, const std::string& unit) {
-  return fmt::format("{},{},{},{}\r\n", CsvQuote(name), ExportNumber(value),
-                     std::isfinite(sigma) ? ExportNumber(sigma) : std::string(), CsvQuote(unit));
+  return fmt::format("{},{},{},{}\r\n", CsvQuote(name), OptionalNumber(value), OptionalNumber(sigma),
+                     CsvQuote(unit));
 }
 
 }  // namespace

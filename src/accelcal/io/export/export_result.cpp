@@ -5,8 +5,9 @@
 
 #include <fmt/format.h>
 
-#include "accelcal/calibration/diagnosis/effect.h"
 #include "accelcal/base/error.h"
+#include "accelcal/base/safe_text.h"
+#include "accelcal/calibration/diagnosis/effect.h"
 
 namespace accelcal {
 namespace {
@@ -63,10 +64,32 @@ double EffectReferenceTempC(const Calibration& cal) {
   return cal.reference.temp_c;
 }
 
-std::string ExportNumber(double value) { return fmt::format("{}", value); }
+namespace {
+
+// The last guard before a number reaches a file another program reads: "inf" and "nan" are
+// never exported (a calibration read from a file is finite; a derived value may overflow).
+void RequireFinite(double value) {
+  if (!std::isfinite(value))
+    throw Error(fmt::format("a value to export is not a finite number ({}): the calibration's "
+                            "numbers are out of any sensor's range",
+                            value));
+}
+
+}  // namespace
+
+std::string ExportNumber(double value) {
+  RequireFinite(value);
+  return fmt::format("{}", value);
+}
+
+std::string ExportNumber9(double value) {
+  RequireFinite(value);
+  return fmt::format("{:.9g}", value);
+}
 
 std::string DescribeOrigin(const Calibration& cal, const ExportContext& context) {
-  auto or_unknown = [](const std::string& s) { return s.empty() ? std::string("unknown") : s; };
+  // Typed by someone, or a file's name: one line of printable text, whatever it holds.
+  auto or_unknown = [](const std::string& s) { return s.empty() ? std::string("unknown") : DisplayText(s); };
   return fmt::format("device {}, calibrated {}, from {}", or_unknown(context.device),
                      or_unknown(context.date_utc),
                      or_unknown(context.source.empty() ? cal.source : context.source));

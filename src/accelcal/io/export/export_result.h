@@ -47,8 +47,13 @@ double EffectParameterValue(const Calibration& cal, const std::string& name, con
 double EffectReferenceTempC(const Calibration& cal);
 
 // A number as the shortest text that reads back to the same double ("0.1", "2048.25", "1e-05").
+// Throws accelcal::Error for a value that is not finite: no export ever holds inf or nan.
 std::string ExportNumber(double value);
-// "device D, calibrated DATE, from SOURCE" with "unknown" for empty fields.
+// The same with 9 significant digits (a float's round trip: the flight stacks store REAL32).
+std::string ExportNumber9(double value);
+// "device D, calibrated DATE, from SOURCE" with "unknown" for empty fields, on one line whatever
+// the fields hold (base/safe_text.h, DisplayText: a line break or a control character in a
+// typed device name becomes an escape), so it can go into any exported file's comment.
 std::string DescribeOrigin(const Calibration& cal, const ExportContext& context);
 
 }  // namespace accelcal

@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "accelcal/base/error.h"
+#include "accelcal/base/safe_text.h"
 #include "accelcal/io/detail/json_forms.h"
 #include "accelcal/io/detail/json_values.h"
 
@@ -57,7 +58,8 @@ ExportResult WriteKalibrImuYaml(const KalibrImuYamlOptions& o) {
   ExportResult result;
   std::string& t = result.text;
   std::istringstream comment(o.comment);
-  for (std::string line; std::getline(comment, line);) t += line.empty() ? "#\n" : "# " + line + "\n";
+  // Each line through DisplayText: a CR, NEL or U+2028 in it would end a YAML comment too.
+  for (std::string line; std::getline(comment, line);) t += line.empty() ? "#\n" : "# " + DisplayText(line) + "\n";
   t += "#Accelerometers\n";
   t += fmt::format("accelerometer_noise_density: {}  # m/s^2/sqrt(Hz), white noise (continuous time)\n",
                    YamlFloat(o.accelerometer_noise_density));

@@ -35,9 +35,9 @@ ExportResult ExportPx4Params(const Calibration& cal, const Px4ExportOptions& opt
   if (options.device_id)
     t += fmt::format("1\t1\tCAL_ACC0_ID\t{}\t{}\n", *options.device_id, kMavParamTypeInt32);
   for (int j = 0; j < 3; ++j)
-    t += fmt::format("1\t1\tCAL_ACC0_{}OFF\t{:.9g}\t{}\n", kAxes[j], c.offset_mps2(j), kMavParamTypeReal32);
+    t += fmt::format("1\t1\tCAL_ACC0_{}OFF\t{}\t{}\n", kAxes[j], ExportNumber9(c.offset_mps2(j)), kMavParamTypeReal32);
   for (int j = 0; j < 3; ++j)
-    t += fmt::format("1\t1\tCAL_ACC0_{}SCALE\t{:.9g}\t{}\n", kAxes[j], c.scale(j), kMavParamTypeReal32);
+    t += fmt::format("1\t1\tCAL_ACC0_{}SCALE\t{}\t{}\n", kAxes[j], ExportNumber9(c.scale(j)), kMavParamTypeReal32);
   AddDiagonalLimits(cal, c, "PX4", &result);
   if (!options.device_id)
     result.cannot_hold.push_back(

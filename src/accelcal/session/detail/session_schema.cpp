@@ -1,5 +1,8 @@
 #include "accelcal/session/detail/session_schema.h"
 
+#include <filesystem>
+#include <fstream>
+
 #include <fmt/core.h>
 
 #include "accelcal/base/error.h"
@@ -84,10 +87,34 @@ void CreateSessionSchema(SqliteDb& db, const std::string& name, const std::strin
   transaction.Commit();
 }
 
-void CheckSessionSchema(SqliteDb& db) {
+namespace {
+
+// A session file in WAL mode (bytes 18 and 19 of its header are 2, sqlite.org/fileformat.html
+// section 1.3.3) whose "-wal" file is not beside it: it was copied without it, or its writer
+// was killed and the -wal lost. Its latest changes (all of it, for a new session) are there.
+void ThrowIfWalMissing(const std::string& path, bool wal_missing) {
+  if (wal_missing)
+    throw Error(fmt::format("session {} is incomplete: its latest changes are in {}-wal, which is not "
+                            "beside it (copied without it, or lost after its program was killed); "
+                            "copy {}-wal next to it",
+                            path, path, std::filesystem::path(path).filename().string()));
+}
+
+}  // namespace
+
+bool WalFileMissing(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  char header[20] = {};
+  in.read(header, sizeof header);
+  const bool wal_mode = in.gcount() == sizeof header && header[18] == 2 && header[19] == 2;
+  return wal_mode && !std::filesystem::exists(path + "-wal");
+}
+
+void CheckSessionSchema(SqliteDb& db, bool wal_missing) {
   IsEmptyDatabase(db);  // throws for a file that is not SQLite
   const std::int64_t application_id = db.QueryInt("PRAGMA application_id");
   const std::int64_t version = db.QueryInt("PRAGMA user_version");
+  if (application_id != kSessionApplicationId) ThrowIfWalMissing(db.path(), wal_missing);
   if (application_id != kSessionApplicationId)
     throw Error(fmt::format("{} is not an accelcal session (a SQLite file of another program)",
                             db.path()));

@@ -40,8 +40,13 @@ void CreateSessionSchema(SqliteDb& db, const std::string& name, const std::strin
 // True when the database has no tables yet (a file just created).
 bool IsEmptyDatabase(SqliteDb& db);
 // Throws accelcal::Error when the file is not an accelcal session or has a schema version this
-// build does not know ("written by a newer accelcal").
-void CheckSessionSchema(SqliteDb& db);
+// build does not know ("written by a newer accelcal"). `wal_missing` (WalFileMissing, taken
+// before the database was opened: SQLite may create an empty -wal) turns "not an accelcal
+// session" into what is wrong: the -wal file holding its latest changes is not beside it.
+void CheckSessionSchema(SqliteDb& db, bool wal_missing);
+
+// True when the file at `path` is in WAL mode (its header says so) and has no "-wal" beside it.
+bool WalFileMissing(const std::string& path);
 // Brings a session of an older known version up to kSessionSchemaVersion (read-write opens;
 // one transaction; nothing to do when it is current).
 void MigrateSessionSchema(SqliteDb& db);
