@@ -31,9 +31,13 @@ TEST(SampleReader, ProtocolColumnsWithBlanks) {
 }
 
 TEST(SampleReader, BomCrlfSemicolonsTabsAndComments) {
-  const auto s = ReadAll("\xEF\xBB\xBF# a comment\r\n0;1;2;3\r\n\r\n0.01\t4\t5\t6\r\n# end\r\n0.02,7,8,9\r\n");
-  ASSERT_EQ(s.size(), 3u);
-  EXPECT_EQ(s[2].raw_counts, Eigen::Vector3d(7, 8, 9));
+  // One separator per file, whichever it is; comments and blank lines anywhere.
+  for (const std::string sep : {";", "\t", ",", " "}) {
+    const auto s = ReadAll("\xEF\xBB\xBF# a comment\r\n0" + sep + "1" + sep + "2" + sep + "3\r\n\r\n# c\r\n0.01" +
+                           sep + "7" + sep + "8" + sep + "9\r\n");
+    ASSERT_EQ(s.size(), 2u) << "separator '" << sep << "'";
+    EXPECT_EQ(s[1].raw_counts, Eigen::Vector3d(7, 8, 9)) << "separator '" << sep << "'";
+  }
 }
 
 TEST(SampleReader, HeaderNamesGyroFirstColumns) {
@@ -46,9 +50,15 @@ TEST(SampleReader, HeaderNamesGyroFirstColumns) {
 }
 
 TEST(SampleReader, CommonSpellingsInTheHeader) {
-  const auto s = ReadAll("Timestamp,AccX [m/s^2],acc_y,accel_z,Temperature\n0,1,2,3,25.5\n");
+  const std::string text = "Timestamp,AccX [m/s^2],acc_y,accel_z,Temperature\n0,1,2,3,25.5\n";
+  // The header states m/s^2: not taken silently as counts.
+  EXPECT_THROW(ReadAll(text), Error);
+  SampleFormat f;
+  f.unit = *StringToReadingUnit("m/s^2");
+  f.unit_declared = true;
+  const auto s = ReadAll(text, f);
   ASSERT_EQ(s.size(), 1u);
-  EXPECT_EQ(s[0].raw_counts, Eigen::Vector3d(1, 2, 3));
+  EXPECT_NEAR(s[0].raw_counts.x(), 1000.0, 1e-9);  // counts of 0.001 m/s^2
   EXPECT_DOUBLE_EQ(s[0].temp_c, 25.5);
 }
 

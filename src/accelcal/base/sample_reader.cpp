@@ -41,7 +41,7 @@ std::string ReadingSummary::Describe() const {
   if (repaired_ties > 0)
     out += fmt::format("; {} repeated time stamp{} (printed to {} s) spread within their step",
                        repaired_ties, repaired_ties == 1 ? "" : "s",
-                       detail::FormatNumber(stamp_step_s));
+                       fmt::format("{:.6g}", stamp_step_s));  // the step as printed, not its binary residue
   out += "; readings in " + unit.Describe();
   if (malformed > 0) out += fmt::format("; {} malformed line{} skipped", malformed, malformed == 1 ? "" : "s");
   return out;
