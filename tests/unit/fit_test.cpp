@@ -1,7 +1,9 @@
 #include "accelcal/calibration/fit/calibration_fit.h"
 
+#include <cmath>
 #include <random>
 
+#include <Eigen/Geometry>
 #include <gtest/gtest.h>
 
 #include "accelcal/calibration/fit/initial_guess.h"
@@ -125,19 +127,22 @@ TEST(CalibrationFit, InitialGuessIsCloseToTruth) {
   }
 }
 
+// Changed with issue 14 (reduced models): eight captures used to be refused ("need at least 9");
+// six or more now give a calibration with what they determine held. Five are too few.
 TEST(CalibrationFit, RefusesTooFewCaptures) {
   auto set = SeedPlan(4);
-  set.resize(8);
+  set.resize(5);
   const FitSummary s = FitCalibration(set, Options());
   EXPECT_EQ(s.termination, FitTermination::kUnderdetermined);
-  EXPECT_NE(s.message.find("8 usable captures"), std::string::npos) << s.message;
+  EXPECT_NE(s.message.find("5 usable captures"), std::string::npos) << s.message;
 }
 
 TEST(CalibrationFit, LeftOutCapturesDoNotCount) {
   auto set = SeedPlan(4);
-  for (int i = 0; i < 10; ++i) set[i].rejection_reason = "test";
+  for (int i = 0; i < 13; ++i) set[i].rejection_reason = "test";
   const FitSummary s = FitCalibration(set, Options());
   EXPECT_EQ(s.termination, FitTermination::kUnderdetermined);
+  EXPECT_NE(s.message.find("5 usable captures"), std::string::npos) << s.message;
 }
 
 TEST(CalibrationFit, RefusesPosesInOnePlane) {
@@ -173,9 +178,12 @@ TEST(CalibrationFit, StaticOnlyNinePosesFitWithoutRedundancyWarning) {
   EXPECT_TRUE(warned);
 }
 
-TEST(CalibrationFit, RefusesTiltedPosesThatCannotSeparateTheMisalignments) {
+// Changed with issue 14 (reduced models): this set used to be refused; now the combination the
+// tilted poses cannot separate is held (one angle at 0), the rest fitted, and the reason names
+// the angles and says what to capture.
+TEST(CalibrationFit, HoldsTheMisalignmentTiltedPosesCannotSeparate) {
   // Six faces plus [1,1,1], [-1,1,-1], [1,-1,1]: the last two have the same axis-sign products
-  // (xy, xz, yz) = (+,+,+) up to sign, so a magnitude-only fit cannot tell a_yz, a_zy, a_zx apart.
+  // (xy, xz, yz) = (-,+,-), so a magnitude-only fit cannot tell a_yz, a_zy, a_zx apart.
   std::mt19937_64 rng(11);
   std::vector<Capture> set;
   const std::vector<Eigen::Vector3d> ups = {
@@ -184,9 +192,18 @@ TEST(CalibrationFit, RefusesTiltedPosesThatCannotSeparateTheMisalignments) {
       Eigen::Vector3d(1, -1, 1).normalized()};
   for (const auto& up : ups) set.push_back(MakeCapture(int(set.size()) + 1, CaptureKind::kStatic, kG * up, 1.5, 500, rng));
   const FitSummary s = FitCalibration(set, Options());
-  EXPECT_EQ(s.termination, FitTermination::kUnderdetermined) << s.FullReport();
-  EXPECT_NE(s.message.find("cannot separate"), std::string::npos) << s.message;
-  EXPECT_NE(s.message.find("a_yz"), std::string::npos) << s.message;
+  ASSERT_TRUE(s.IsUsable()) << s.FullReport();
+  ASSERT_EQ(s.held.size(), 1u) << s.FullReport();
+  EXPECT_GE(s.held[0].index, kMisYZ);
+  EXPECT_EQ(s.held[0].value, 0.0);
+  EXPECT_TRUE(std::isnan(s.uncertainty(s.held[0].index)));
+  EXPECT_NE(s.held[0].reason.find("cannot separate"), std::string::npos) << s.held[0].reason;
+  EXPECT_NE(s.held[0].reason.find("a_yz"), std::string::npos) << s.held[0].reason;
+  EXPECT_NE(s.FullReport().find("held"), std::string::npos);
+  // Bias and scale are determined all the same.
+  const auto truth = Truth().ToVector();
+  for (int j = kBiasX; j <= kScaleZ; ++j)
+    EXPECT_LT(std::fabs(s.parameters(j) - truth(j)), 5.0 * s.uncertainty(j)) << ParameterName(j);
 }
 
 TEST(CalibrationFit, NeverReportsAnUnconvergedFit) {
@@ -224,6 +241,79 @@ TEST(CalibrationFit, FullReportNamesEveryParameter) {
   EXPECT_NE(r.find("most correlated"), std::string::npos);
   EXPECT_GE(s.most_correlated.first, 0);
   EXPECT_GT(s.condition_number, 1.0);
+}
+
+// Issue 17 item 1: the same eleven poses (six faces and five tilted) with different noise seeds
+// were refused "rank deficient" for seeds 1, 4, 7, 8 and fitted for 2, 3, 5, 6. The rank decision
+// now rests on the captures' noise (determinacy.h): every seed fits all nine, near the truth.
+TEST(CalibrationFit, ElevenPosesFitForEverySeed) {
+  const std::vector<Eigen::Vector3d> ups = {
+      {0, 0, 1}, {0, 0, -1}, {1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0},
+      Eigen::Vector3d(1, 1, 1).normalized(), Eigen::Vector3d(1, 1, -1).normalized(),
+      Eigen::Vector3d(1, -1, 1).normalized(), Eigen::Vector3d(-1, 1, 1).normalized(),
+      Eigen::Vector3d(1, -1, -1).normalized()};
+  const auto truth = Truth().ToVector();
+  for (unsigned seed = 1; seed <= 8; ++seed) {
+    std::mt19937_64 rng(seed);
+    std::vector<Capture> set;
+    for (const auto& up : ups)
+      set.push_back(MakeCapture(int(set.size()) + 1, CaptureKind::kStatic, kG * up, 1.5, 500, rng));
+    const FitSummary s = FitCalibration(set, Options());
+    ASSERT_TRUE(s.IsUsable()) << "seed " << seed << ": " << s.FullReport();
+    EXPECT_TRUE(s.held.empty()) << "seed " << seed << ": " << s.FullReport();
+    EXPECT_LT(s.condition_number, 100.0) << "seed " << seed;
+    for (int j = 0; j < kNumBaseParameters; ++j)
+      EXPECT_LT(std::fabs(s.parameters(j) - truth(j)), 5.0 * s.uncertainty(j))
+          << "seed " << seed << " " << ParameterName(j);
+  }
+}
+
+// Issue 14: six faces give bias and scale; the three angles are held at 0 and said so.
+TEST(CalibrationFit, SixFacesGiveBiasAndScaleWithTheAnglesHeld) {
+  std::mt19937_64 rng(5);
+  std::vector<Capture> set;
+  for (const Eigen::Vector3d& up : {Eigen::Vector3d(0, 0, 1), Eigen::Vector3d(0, 0, -1),
+                                    Eigen::Vector3d(1, 0, 0), Eigen::Vector3d(-1, 0, 0),
+                                    Eigen::Vector3d(0, 1, 0), Eigen::Vector3d(0, -1, 0)})
+    set.push_back(MakeCapture(int(set.size()) + 1, CaptureKind::kStatic, kG * up, 1.5, 1000, rng));
+  const FitSummary s = FitCalibration(set, Options());
+  ASSERT_TRUE(s.IsUsable()) << s.FullReport();
+  ASSERT_EQ(s.held.size(), 3u) << s.FullReport();
+  for (const HeldParameter& h : s.held) {
+    EXPECT_GE(h.index, kMisYZ);
+    EXPECT_EQ(s.parameters(h.index), 0.0);
+    EXPECT_NE(h.reason.find("tilted"), std::string::npos) << h.reason;
+  }
+  // The truth's angles (a few mrad) shift bias and scale by a second-order amount only.
+  const auto truth = Truth().ToVector();
+  for (int j = kBiasX; j <= kScaleZ; ++j)
+    EXPECT_LT(std::fabs(s.parameters(j) - truth(j)), 5.0 * s.uncertainty(j)) << ParameterName(j);
+}
+
+// Issue 14: a near-singular set (40 poses within 2-9 deg of the six faces) gives all nine with
+// uncertainties that cover the truth, not a refusal.
+TEST(CalibrationFit, NearFacePosesGiveHonestUncertainties) {
+  std::mt19937_64 rng(9);
+  std::uniform_real_distribution<double> tilt_deg(2.0, 9.0), phi(0.0, 2.0 * M_PI);
+  const std::vector<Eigen::Vector3d> faces = {{0, 0, 1}, {0, 0, -1}, {1, 0, 0},
+                                              {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}};
+  std::vector<Capture> set;
+  for (int i = 0; i < 40; ++i) {
+    const Eigen::Vector3d& f = faces[static_cast<size_t>(i % 6)];
+    const Eigen::Vector3d a = f.x() == 0 ? Eigen::Vector3d::UnitX() : Eigen::Vector3d::UnitY();
+    const Eigen::Vector3d b = f.cross(a);
+    const double t = tilt_deg(rng) * M_PI / 180.0, p = phi(rng);
+    const Eigen::Vector3d up = std::cos(t) * f + std::sin(t) * (std::cos(p) * a + std::sin(p) * b);
+    set.push_back(MakeCapture(i + 1, CaptureKind::kStatic, kG * up.normalized(), 1.5, 600, rng));
+  }
+  const FitSummary s = FitCalibration(set, Options());
+  ASSERT_TRUE(s.IsUsable()) << s.FullReport();
+  const auto truth = Truth().ToVector();
+  for (int j = 0; j < kNumBaseParameters; ++j) {
+    if (std::isnan(s.uncertainty(j))) continue;  // held: checked below
+    EXPECT_LT(std::fabs(s.parameters(j) - truth(j)), 4.0 * s.uncertainty(j)) << ParameterName(j);
+  }
+  for (const HeldParameter& h : s.held) EXPECT_GE(h.index, kMisYZ);
 }
 
 }  // namespace

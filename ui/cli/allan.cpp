@@ -19,6 +19,7 @@
 #include "accelcal/report/allan_text.h"
 #include "accelcal/session/session_store.h"
 #include "cli/commands.h"
+#include "cli/sample_format_flags.h"
 
 namespace accelcal::cli {
 namespace {
@@ -29,8 +30,8 @@ struct AllanCommandOptions {
   std::string calibration_path;  // empty: figures in counts
   std::string output_path;       // allan.json; empty: none
   std::string kalibr_path;       // imu.yaml; empty: none
-  double rate_hz = kNaN;         // NaN: from the time stamps
   double drift_window_s = 60.0;
+  SampleFormatFlags format;      // recording files (its --rate-hz is the analysis's rate too)
 };
 
 // Kalibr's imu.yaml from the analysis: the worst axis of each figure (Kalibr takes one).
@@ -78,7 +79,8 @@ RecordAnalysis AnalyzeSessionRecord(const AllanCommandOptions& o, const RecordAn
 
 void RunAllan(const AllanCommandOptions& o) {
   RecordAnalysisOptions options;
-  options.rate_hz = o.rate_hz;
+  const SampleFormat format = o.format.Resolve();
+  options.rate_hz = format.rate_hz;
   options.drift.window_s = o.drift_window_s;
   std::string source = o.recording_path;
   std::optional<Calibration> cal;
@@ -89,7 +91,10 @@ void RunAllan(const AllanCommandOptions& o) {
   if (o.recording_path != "-" && !IsReadOnceInput(o.recording_path) && IsSessionFile(o.recording_path)) {
     analysis = AnalyzeSessionRecord(o, options, cal, &source);
   } else {
-    analysis = AnalyzeRecordingFile(o.recording_path, options, cal);
+    ReadingSummary summary;
+    analysis = AnalyzeRecordingFile(o.recording_path, options, cal, {}, format, &summary);
+    std::cout << "read " << summary.Describe() << "\n";
+    if (!summary.converted_hint.empty()) std::cout << "note: " << summary.converted_hint << "\n";
   }
   if (analysis.samples < 2)
     throw Error(fmt::format("{}: {} samples: nothing to analyse", source, analysis.samples));
@@ -127,9 +132,7 @@ void SetupAllanCommand(CLI::App& app) {
   sub->add_option("-o,--output", opts->output_path, "Write the analysis (allan.json) here");
   sub->add_option("--kalibr", opts->kalibr_path,
                   "Also write Kalibr's imu.yaml (needs --calibration: Kalibr wants m/s^2)");
-  sub->add_option("--rate-hz", opts->rate_hz,
-                  "Sample rate, Hz (default: the median interval of the first samples)")
-      ->check(CLI::PositiveNumber);
+  opts->format.Bind(*sub, "the recording");
   sub->add_option("--drift-window-s", opts->drift_window_s, "Window of the drift means, s")
       ->check(CLI::PositiveNumber)->capture_default_str();
   sub->callback([opts] { RunAllan(*opts); });

@@ -8,6 +8,7 @@
 #include "accelcal/base/error.h"
 #include "accelcal/io/calibration_file.h"
 #include "cli/commands.h"
+#include "cli/sample_format_flags.h"
 
 namespace accelcal::cli {
 namespace {
@@ -15,20 +16,30 @@ namespace {
 struct ApplyCommandOptions {
   std::string calibration_path;
   int max_reported = 20;
+  SampleFormatFlags format;
 };
 
 void RunApply(const ApplyCommandOptions& o) {
   const Calibration cal = ReadCalibrationFile(o.calibration_path);
+  const SampleFormat format = o.format.Resolve();
+  if (format.unit_declared && format.unit.Describe() != cal.reading_unit.Describe())
+    throw Error(fmt::format("--unit {}: the calibration was made from readings in {}; apply reads "
+                            "readings as it was made", format.unit.Describe(),
+                            cal.reading_unit.Describe()));
   const CalibrationApplier applier(cal);
   for (const std::string& n : applier.not_applied())
     fmt::print(stderr, "accelcal: note: not applied to readings: {}\n", n);
   std::ios::sync_with_stdio(false);
   long reported = 0;
-  const ApplyStreamResult r =
-      ApplyStream(std::cin, std::cout, applier, "<stdin>", [&](const InputError& e) {
+  ReadingSummary summary;
+  const ApplyStreamResult r = ApplyStream(
+      std::cin, std::cout, applier, "<stdin>",
+      [&](const InputError& e) {
         if (reported++ < o.max_reported) fmt::print(stderr, "accelcal: skipped {}\n", e.what());
-      });
+      },
+      format, &summary);
   std::cout.flush();
+  fmt::print(stderr, "accelcal: read {}\n", summary.Describe());
   if (!std::cout) throw Error("cannot write the calibrated samples to standard output");
   if (r.malformed > 0)
     throw Error(fmt::format("{} of {} lines were malformed and skipped ({} shown above); {} "
@@ -43,13 +54,15 @@ void SetupApplyCommand(CLI::App& app) {
   CLI::App* sub = app.add_subcommand(
       "apply",
       "Apply a calibration file to raw samples: reads lines 't ax ay az [temp_c]' (raw counts,\n"
-      "blanks or commas) on standard input and writes 't ax ay az [temp_c]' in m/s^2 on standard\n"
-      "output. Malformed lines are reported on stderr and skipped (exit status 1).\n\n"
+      "blanks, commas or semicolons; or the columns a header row or --columns names) on standard\n"
+      "input and writes 't ax ay az [temp_c]' in m/s^2 on standard output. Malformed lines are\n"
+      "reported on stderr and skipped (exit status 1).\n\n"
       "Example:\n"
       "  accelcal apply cal.json < raw.txt > calibrated.txt");
   sub->add_option("calibration", opts->calibration_path, "Calibration file (JSON) from 'accelcal fit'")
       ->required()
       ->check(CLI::ExistingFile);
+  opts->format.Bind(*sub, "standard input");
   sub->add_option("--max-reported", opts->max_reported, "Malformed lines reported one by one at most")
       ->capture_default_str();
   sub->callback([opts] { RunApply(*opts); });

@@ -14,6 +14,7 @@
 #include "cli/commands.h"
 #include "accelcal/report/fit_text.h"
 #include "cli/gravity_options.h"
+#include "cli/sample_format_flags.h"
 
 namespace accelcal::cli {
 namespace {
@@ -30,6 +31,7 @@ struct FitCommandOptions {
   bool quiet = false;
   bool no_diagnose = false;
   GravityFlags gravity;
+  SampleFormatFlags format;  // recordings
 };
 
 struct LoadedCaptures {
@@ -37,19 +39,30 @@ struct LoadedCaptures {
   std::string source;
   std::optional<AdcRange> adc_range;
   std::string intervals_text;  // for recordings: the intervals found
+  std::string reading_text;    // for recordings: what the reader understood, one line
+  ReadingUnit reading_unit;
 };
 
 LoadedCaptures LoadCaptureSet(const FitCommandOptions& o) {
   CaptureSet set = ReadCaptureSetFile(o.captures_path);
-  return {std::move(set.captures), o.captures_path, set.adc_range, {}};
+  return {std::move(set.captures), o.captures_path, set.adc_range, {}, {}, {}};
 }
 
 LoadedCaptures LoadRecording(const FitCommandOptions& o) {
   if (std::string e = o.detector.Validate(); !e.empty()) throw Error("static detector: " + e);
-  const std::vector<Sample> samples = ReadRecordingFile(o.recording_path);
-  const StaticDetection detection = DetectStaticIntervals(samples, o.detector);
-  LoadedCaptures out{CapturesFromIntervals(samples, detection), o.recording_path, std::nullopt,
-                     FormatIntervals(detection, o.detector)};
+  const SampleFormat format = o.format.Resolve();
+  const Recording recording = ReadRecording(o.recording_path, format);
+  if (!recording.summary.converted_hint.empty())
+    throw Error(fmt::format("{}: {}", o.recording_path, recording.summary.converted_hint));
+  const StaticDetection detection = DetectStaticIntervals(recording.samples, o.detector);
+  LoadedCaptures out{CapturesFromIntervals(recording.samples, detection), o.recording_path,
+                     std::nullopt, FormatIntervals(detection, o.detector),
+                     "read " + recording.summary.Describe() + "\n", format.unit};
+  if (!format.unit.is_counts())
+    out.reading_text += fmt::format(
+        "readings in {0}: the model's counts are {1} {0} here, so bias_counts is in those "
+        "counts and a scale of {2} counts per {0} means the logger's own conversion is exact\n",
+        format.unit.Name(), 1.0 / format.unit.counts_per_unit, format.unit.counts_per_unit);
   return out;
 }
 
@@ -75,12 +88,13 @@ void RunFit(const FitCommandOptions& o) {
     request.stability = stability;
   }
   request.diagnose = !o.no_diagnose;
+  request.reading_unit = loaded.reading_unit;
   const CalibrationOutcome outcome = CalibrateCaptures(std::move(request));
   const FitSummary& summary = outcome.Fit(true);
 
   if (!o.quiet) {
     std::cout << fmt::format("source: {}\ngravity: {}\n", loaded.source, gravity.Describe());
-    std::cout << loaded.intervals_text;
+    std::cout << loaded.reading_text << loaded.intervals_text;
   }
   if (!summary.IsUsable()) {
     if (!o.quiet) std::cout << FormatCaptureTable(outcome.captures, summary);
@@ -147,6 +161,7 @@ void SetupFitCommand(CLI::App& app) {
   sub->add_option("--window-samples", opts->detector.window_samples,
                   "Recordings: centred variance window, samples (odd)")
       ->capture_default_str();
+  opts->format.Bind(*sub, "the recording (--recording)");
   sub->add_flag("--no-diagnose", opts->no_diagnose,
                 "Fit the seed's nine-parameter model only: do not look for missing effects");
   sub->add_flag("-q,--quiet", opts->quiet, "Print nothing but errors");

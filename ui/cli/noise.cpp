@@ -19,6 +19,7 @@
 #include "accelcal/session/procedure.h"
 #include "cli/commands.h"
 #include "cli/output.h"
+#include "cli/sample_format_flags.h"
 
 namespace accelcal::cli {
 namespace {
@@ -29,16 +30,35 @@ struct NoiseCommandOptions {
   std::string sessions_dir;            // empty: the default directory
   std::string procedure_path;          // empty: procedures/noise.toml of the source tree
   std::string calibration_path;        // empty: counts
-  std::string format = "text";         // text | json
+  std::string output_format = "text";  // text | json
   std::string output_path;             // empty: stdout
+  SampleFormatFlags format;            // --record files
 };
 
 std::vector<analysis::NoiseRecord> Records(const NoiseCommandOptions& o,
+                                           const std::optional<Calibration>& calibration,
                                            std::vector<std::string>* notes) {
   std::vector<analysis::NoiseRecord> records;
   if (!o.record_paths.empty()) {
-    for (const std::string& path : o.record_paths)
-      records.push_back(analysis::NoiseRecordFromFile(path));
+    SampleFormat format = o.format.Resolve();
+    if (calibration) {
+      if (format.unit_declared && format.unit.Describe() != calibration->reading_unit.Describe())
+        throw Error(fmt::format("--unit {}: the calibration was made from readings in {}",
+                                format.unit.Describe(), calibration->reading_unit.Describe()));
+      format.unit = calibration->reading_unit;
+      format.unit_declared = true;
+    } else if (!format.unit.is_counts()) {
+      throw Error(fmt::format("--unit {}: the noise analysis is in counts, or in m/s^2 with the "
+                              "--calibration made from the same logger's readings",
+                              format.unit.Name()));
+    }
+    for (const std::string& path : o.record_paths) {
+      ReadingSummary summary;
+      records.push_back(analysis::NoiseRecordFromFile(path, format, &summary));
+      // What was understood goes to stderr: the report (stdout or -o) stays the analysis.
+      fmt::print(stderr, "accelcal: read {}\n", summary.Describe());
+      if (!summary.converted_hint.empty()) notes->push_back(summary.converted_hint);
+    }
     return records;
   }
   const Procedure procedure = LoadProcedure(
@@ -55,11 +75,11 @@ void RunNoise(const NoiseCommandOptions& o) {
   std::optional<Calibration> calibration;
   if (!o.calibration_path.empty()) calibration = ReadCalibrationFile(o.calibration_path);
   std::vector<std::string> notes;
-  const std::vector<analysis::NoiseRecord> records = Records(o, &notes);
+  const std::vector<analysis::NoiseRecord> records = Records(o, calibration, &notes);
   analysis::NoiseReport report = analysis::AnalyzeNoise(
       records, analysis::NoiseAnalysisOptions{}, calibration ? &*calibration : nullptr);
   report.warnings.insert(report.warnings.begin(), notes.begin(), notes.end());
-  if (o.format == "json") {
+  if (o.output_format == "json") {
     WriteOutputText(o.output_path, NoiseFileText(report));
   } else {
     std::string header = o.device.empty() ? "" : fmt::format("Device {}\n", o.device);
@@ -92,7 +112,8 @@ void SetupNoiseCommand(CLI::App& app) {
                   "The noise procedure whose sessions count (default: procedures/noise.toml)");
   sub->add_option("--calibration", opts->calibration_path,
                   "Calibration file (JSON): results in m/s^2 instead of counts");
-  sub->add_option("--format", opts->format, "text or json")
+  opts->format.Bind(*sub, "the --record files");
+  sub->add_option("--format", opts->output_format, "text or json")
       ->check(CLI::IsMember({"text", "json"}))->capture_default_str();
   sub->add_option("-o,--output", opts->output_path, "Write here instead of standard output");
   sub->callback([opts] { RunNoise(*opts); });

@@ -18,6 +18,7 @@
 #include "accelcal/io/text_file.h"
 #include "accelcal/acquire/source/source_spec.h"
 #include "cli/commands.h"
+#include "cli/sample_format_flags.h"
 #include "accelcal/io/scenario_file.h"
 
 namespace accelcal::cli {
@@ -31,6 +32,7 @@ struct RecordCommandOptions {
   bool quiet = false;
   SourceOptions source;
   std::string scenario_path;  // sim: the bench; empty = the built-in default
+  SampleFormatFlags format;   // every source but sim
 };
 
 volatile std::sig_atomic_t g_interrupted = 0;
@@ -104,6 +106,10 @@ std::ostream& OpenOutput(const std::string& path, std::ofstream* file) {
 
 void RunRecord(const RecordCommandOptions& o) {
   SourceOptions source_options = o.source;
+  source_options.format = o.format.Resolve();
+  if (!source_options.format.unit.is_counts())
+    throw Error("--unit: record writes the readings as the source gives them; declare the unit "
+                "to the command that reads the recording (fit --recording, apply, allan)");
   if (!o.scenario_path.empty()) source_options.scenario = sim::LoadScenario(o.scenario_path);
   std::unique_ptr<SampleSource> source = OpenSource(o.source_spec, source_options);
   SigintGuard sigint;
@@ -155,6 +161,8 @@ void RunRecord(const RecordCommandOptions& o) {
     if (!out || file.fail()) FailWrite(o, &file, writer ? writer->written() : 0);
     throw;
   }
+  if (!o.quiet && !source->DescribeReading().empty())
+    fmt::print(stderr, "accelcal record: read {}\n", source->DescribeReading());
   if (!o.quiet)
     fmt::print(stderr, "{}accelcal record: {}; {} samples written to {}\n", StatusLine(*source),
                why_stopped, writer->written(), o.output_path);
@@ -196,6 +204,7 @@ void SetupRecordCommand(CLI::App& app) {
   sub->add_option("--dead-after", opts->source.dead_after_s,
                   "Report the link dead after this long without a sample, s")
       ->capture_default_str();
+  opts->format.Bind(*sub, "the source's lines (file:, serial:, tcp:, -)");
   sub->add_flag("-q,--quiet", opts->quiet, "Print nothing but errors");
   sub->callback([opts] { RunRecord(*opts); });
 }

@@ -14,19 +14,34 @@ namespace accelcal {
 
 RecordAnalysis AnalyzeRecordingFile(const std::string& path, const RecordAnalysisOptions& options,
                                     const std::optional<Calibration>& calibration,
-                                    const std::function<void(long samples)>& progress) {
+                                    const std::function<void(long samples)>& progress,
+                                    const SampleFormat& format, ReadingSummary* summary) {
   std::unique_ptr<CalibrationApplier> applier;
-  if (calibration) applier = std::make_unique<CalibrationApplier>(*calibration);
-  RecordAnalyzer analyzer(options, applier ? "m/s^2" : "counts");
-  RecordingStream stream(path);
+  SampleFormat read_as = format;
+  if (calibration) {
+    if (format.unit_declared && format.unit.Describe() != calibration->reading_unit.Describe())
+      throw Error(fmt::format("--unit {}: the calibration was made from readings in {}",
+                              format.unit.Describe(), calibration->reading_unit.Describe()));
+    read_as.unit = calibration->reading_unit;
+    read_as.unit_declared = true;
+    applier = std::make_unique<CalibrationApplier>(*calibration);
+  }
+  // Without a calibration: counts as they are, or a logger's converted readings back in m/s^2.
+  const bool converted = !applier && !read_as.unit.is_counts();
+  const double to_mps2 = converted ? (read_as.unit.kind == ReadingUnit::Kind::kG ? 9.80665 : 1.0) /
+                                         read_as.unit.counts_per_unit
+                                   : 1.0;
+  RecordAnalyzer analyzer(options, applier || converted ? "m/s^2" : "counts");
+  RecordingStream stream(path, RecordingStream::kDefaultBlockBytes, read_as);
   std::vector<Sample> block;
   long read = 0;
   while (stream.Next(&block)) {
     for (const Sample& s : block)
-      analyzer.Add(s.t_s, applier ? applier->Apply(s) : s.raw_counts, s.temp_c);
+      analyzer.Add(s.t_s, applier ? applier->Apply(s) : Eigen::Vector3d(s.raw_counts * to_mps2), s.temp_c);
     read += static_cast<long>(block.size());
     if (progress) progress(read);
   }
+  if (summary != nullptr) *summary = stream.Summary();
   return analyzer.Result();
 }
 

@@ -9,18 +9,25 @@
 #include <string>
 
 #include "accelcal/analysis/record_analysis.h"
+#include "accelcal/base/sample_format.h"
+#include "accelcal/base/sample_reader.h"
 #include "accelcal/io/calibration_file.h"
 #include "accelcal/session/session_journal.h"
 
 namespace accelcal {
 
-// `path` is a recording file ("-": standard input). `progress`, when set, is called now and
-// then with the samples read so far. Throws accelcal::Error / InputError (FILE:LINE:COL) on a
-// file that cannot be read or is malformed, and Error when the calibration needs a temperature
-// the record lacks.
+// `path` is a recording file ("-": standard input), read as `format` says (base/sample_reader.h);
+// with a calibration its readings are in the calibration's unit (a different declared one is an
+// error); without one, readings a logger converted (--unit m/s^2 or g) are analysed in m/s^2
+// (g as 9.80665 m/s^2, the unit's definition). `progress`, when set, is called now and then
+// with the samples read so far; *summary (when not null) gets what the reading understood.
+// Throws accelcal::Error / InputError (FILE:LINE:COL) on a file that cannot be read or is
+// malformed, and Error when the calibration needs a temperature the record lacks.
 RecordAnalysis AnalyzeRecordingFile(const std::string& path, const RecordAnalysisOptions& options,
                                     const std::optional<Calibration>& calibration,
-                                    const std::function<void(long samples)>& progress = {});
+                                    const std::function<void(long samples)>& progress = {},
+                                    const SampleFormat& format = {},
+                                    ReadingSummary* summary = nullptr);
 
 }  // namespace accelcal
 

@@ -11,6 +11,7 @@ const FitSummary& CalibrationOutcome::Fit(bool adopt_effects) const {
 Calibration CalibrationOutcome::MakeCalibration(bool adopt_effects) const {
   Calibration cal = accelcal::MakeCalibration(diagnosis, adopt_effects, gravity, captures, source_name);
   if (cal.diagnosis) cal.diagnosis->ran = diagnosed;
+  cal.reading_unit = reading_unit;
   return cal;
 }
 
@@ -19,6 +20,7 @@ CalibrationOutcome CalibrateCaptures(CalibrationRequest request) {
   CalibrationOutcome out;
   out.gravity = request.gravity;
   out.source_name = request.source_name;
+  out.reading_unit = request.reading_unit;
   out.diagnosed = request.diagnose;
   out.captures = std::move(request.captures);
   ScreenCaptures(out.captures, request.screening);

@@ -29,12 +29,16 @@ struct CalibrationRequest {
   std::optional<OfflineStabilityOptions> stability;
   bool diagnose = true;               // false: the base model alone (no effect looked for)
   DiagnosisOptions diagnosis;         // max_effects is set to 0 when !diagnose
+  // What the captures' readings are in (counts, or a logger's converted unit taken as counts):
+  // recorded in the calibration so that apply reads later readings the same way.
+  ReadingUnit reading_unit;
 };
 
 struct CalibrationOutcome {
   std::vector<Capture> captures;      // as screened: rejection_reason says why one is left out
   GravitySpec gravity;
   std::string source_name;
+  ReadingUnit reading_unit;
   bool diagnosed = false;
   DiagnosisReport diagnosis;          // base fit, adopted effects, final fit, stages
 

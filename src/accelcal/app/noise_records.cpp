@@ -80,8 +80,11 @@ NoiseRecordSet NoiseRecordsOfDevice(const std::string& sessions_dir, const std::
   return set;
 }
 
-NoiseRecord NoiseRecordFromFile(const std::string& path) {
-  return {path, "", ReadRecordingFile(path)};
+NoiseRecord NoiseRecordFromFile(const std::string& path, const SampleFormat& format,
+                                ReadingSummary* summary) {
+  Recording recording = ReadRecording(path, format);
+  if (summary != nullptr) *summary = recording.summary;
+  return {path, "", std::move(recording.samples)};
 }
 
 }  // namespace accelcal::analysis

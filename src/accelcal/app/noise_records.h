@@ -8,6 +8,8 @@
 #include <vector>
 
 #include "accelcal/analysis/noise_analysis.h"
+#include "accelcal/base/sample_format.h"
+#include "accelcal/base/sample_reader.h"
 #include "accelcal/session/procedure.h"
 
 namespace accelcal::analysis {
@@ -25,7 +27,9 @@ struct NoiseRecordSet {
 NoiseRecordSet NoiseRecordsOfDevice(const std::string& sessions_dir, const std::string& device,
                                     const Procedure& noise_procedure);
 
-// A recording file as an undated record labelled by its path. Throws as ReadRecordingFile.
-NoiseRecord NoiseRecordFromFile(const std::string& path);
+// A recording file as an undated record labelled by its path, read as `format` says; *summary
+// (when not null) gets what the reading understood. Throws as ReadRecording.
+NoiseRecord NoiseRecordFromFile(const std::string& path, const SampleFormat& format = {},
+                                ReadingSummary* summary = nullptr);
 
 }  // namespace accelcal::analysis

@@ -78,6 +78,10 @@ struct Capture {
   // Turntable only, when known: the sensor axis that pointed up (the others lie in the table's
   // plane). Needed only by effects that depend on the mounting (the size effect).
   std::optional<SensorAxis> up_axis;
+  // Static only, when known: the up direction the procedure asked for, sensor frame, unit length
+  // (a capture set's `up` column; `accelcal export` fills it from the procedure). The fit warns
+  // when the measured direction disagrees (calibration/pose_check.h).
+  std::optional<Eigen::Vector3d> requested_up;
   std::vector<Sample> samples;
 
   // When the capture was left out of the fit: why (set by screening); empty when usable.

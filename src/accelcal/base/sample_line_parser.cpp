@@ -1,115 +1,253 @@
 #include "accelcal/base/sample_line_parser.h"
 
-#include <array>
 #include <charconv>
 #include <cmath>
 
 #include <fmt/format.h>
 
-#include "accelcal/base/text_scan.h"
 #include "accelcal/base/error.h"
+#include "accelcal/base/text_scan.h"
 
 namespace accelcal::detail {
 namespace {
 
-constexpr int kMinFields = 4;
-constexpr int kMaxFields = 5;
-constexpr std::array<std::string_view, kMaxFields> kFieldNames = {"t", "ax", "ay", "az",
-                                                                   "temp_c"};
+constexpr int kMinPositional = 4;
+constexpr int kMaxPositional = 5;
+constexpr std::array<std::string_view, kMaxPositional> kPositionalNames = {"t", "ax", "ay", "az",
+                                                                           "temp_c"};
+constexpr size_t kMaxQuoted = 40;  // characters of a bad token quoted in a message
 
-inline bool IsSeparatorChar(char c) { return c == ' ' || c == '\t' || c == ','; }
+bool IsNumberWord(std::string_view token) {
+  std::string lower;
+  for (char c : token) lower += static_cast<char>(c >= 'A' && c <= 'Z' ? c - 'A' + 'a' : c);
+  if (!lower.empty() && (lower.front() == '+' || lower.front() == '-')) lower.erase(0, 1);
+  return lower == "nan" || lower == "inf" || lower == "infinity";
+}
 
 }  // namespace
 
-bool SampleLineParser::Parse(std::string_view line, long line_number, Sample* sample) {
-  line_number_ = line_number;
-  const char* const begin = line.data();
-  const char* const end = begin + line.size();
-  const char* p = begin;
-  while (p < end && IsBlank(*p)) ++p;
-  if (p == end || *p == '#') return false;
-
-  std::array<double, kMaxFields> values{};
-  const char* t_begin = p;
-  int count = 0;
-  while (p < end) {
-    if (count == kMaxFields) Fail(begin, end, p, "too many fields: expected t ax ay az [temp_c]");
-    p = ParseField(p, begin, end, count, &values[static_cast<size_t>(count)]);
-    ++count;
-    p = SkipSeparator(p, begin, end);
+void SampleLineParser::UseColumns(const std::vector<NamedColumn>& columns,
+                                  const std::vector<std::string>& names) {
+  positional_ = false;
+  num_columns_ = static_cast<int>(std::min<size_t>(columns.size(), kMaxColumns));
+  names_ = names;
+  t_slot_ = -1;
+  for (int i = 0; i < num_columns_; ++i) {
+    const NamedColumn& c = columns[static_cast<size_t>(i)];
+    switch (c.column) {
+      case SampleColumn::kT:
+        slots_[static_cast<size_t>(i)] = kSlotT;
+        t_slot_ = i;
+        time_to_s_ = c.time_to_s;
+        break;
+      case SampleColumn::kAx: slots_[static_cast<size_t>(i)] = kSlotAx; break;
+      case SampleColumn::kAy: slots_[static_cast<size_t>(i)] = kSlotAy; break;
+      case SampleColumn::kAz: slots_[static_cast<size_t>(i)] = kSlotAz; break;
+      case SampleColumn::kTempC: slots_[static_cast<size_t>(i)] = kSlotTemp; break;
+      case SampleColumn::kIgnore: slots_[static_cast<size_t>(i)] = kSlotIgnore; break;
+    }
   }
-  CheckFieldCount(count, begin, end);
-  CheckTime(values[0], t_begin, begin, end);
-
-  sample->t_s = values[0];
-  sample->raw_counts = {values[1], values[2], values[3]};
-  sample->temp_c = count == kMaxFields ? values[4] : kNaN;
-  if (fields_per_line_ == 0) {
-    fields_per_line_ = count;
-    first_data_line_ = line_number_;
-  }
-  has_previous_ = true;
-  previous_t_s_ = values[0];
-  previous_t_line_ = line_number_;
-  return true;
 }
 
-const char* SampleLineParser::ParseField(const char* p, const char* begin, const char* end,
-                                         int index, double* value) const {
-  const char* start = p;
-  // from_chars takes no leading '+'; accept one (but not "+-1" or "++1").
-  if (p < end && *p == '+' && p + 1 < end && p[1] != '-' && p[1] != '+') ++p;
-  const auto [next, ec] = std::from_chars(p, end, *value);
-  if (ec != std::errc() || (next < end && !IsSeparatorChar(*next))) {
-    const char* token_end = start;
-    while (token_end < end && !IsSeparatorChar(*token_end)) ++token_end;
-    Fail(begin, end, start,
-         fmt::format("field '{}': '{}' is not a number", kFieldNames[static_cast<size_t>(index)],
-                     std::string_view(start, static_cast<size_t>(token_end - start))));
-  }
-  if (!std::isfinite(*value)) {
-    Fail(begin, end, start,
-         fmt::format("field '{}': '{}' is not a finite number",
-                     kFieldNames[static_cast<size_t>(index)],
-                     std::string_view(start, static_cast<size_t>(next - start))));
-  }
-  return next;
+bool SampleLineParser::IsSeparator(char c) const {
+  if (delimiter_ != 0) return c == delimiter_;
+  return c == ' ' || c == '\t' || c == ',' || c == ';';
 }
 
-const char* SampleLineParser::SkipSeparator(const char* p, const char* begin,
-                                            const char* end) const {
-  while (p < end && IsBlank(*p)) ++p;
-  if (p == end || *p != ',') return p;
-  const char* comma = p++;
-  while (p < end && IsBlank(*p)) ++p;
-  if (p == end || *p == ',')
-    Fail(begin, end, p == end ? comma : p, "empty field (two commas, or a trailing comma)");
+// Blanks around a field: spaces, and tabs unless the tab is the delimiter.
+static inline bool IsPad(char c, char delimiter) {
+  return c == ' ' || (c == '\t' && delimiter != '\t');
+}
+
+const char* SampleLineParser::TokenEnd(const char* p, const char* end) const {
+  while (p < end && !IsSeparator(*p)) ++p;
   return p;
 }
 
-void SampleLineParser::CheckFieldCount(int count, const char* begin, const char* end) const {
-  if (count < kMinFields)
-    Fail(begin, end, end,
-         fmt::format("{} field{} here, expected t ax ay az [temp_c]", count, count == 1 ? "" : "s"));
-  if (fields_per_line_ != 0 && count != fields_per_line_)
-    Fail(begin, end, end,
-         fmt::format("{} fields here but {} on line {}, the first data line", count,
-                     fields_per_line_, first_data_line_));
+std::string SampleLineParser::FieldName(int field) const {
+  if (positional_) return std::string(kPositionalNames[static_cast<size_t>(field)]);
+  const Slot slot = slots_[static_cast<size_t>(field)];
+  const std::string canonical(
+      slot == kSlotT ? "t" : slot == kSlotAx ? "ax" : slot == kSlotAy ? "ay"
+      : slot == kSlotAz ? "az" : slot == kSlotTemp ? "temp_c" : "-");
+  const size_t i = static_cast<size_t>(field);
+  if (i < names_.size() && names_[i] != canonical)
+    return fmt::format("{}' ('{}", canonical, PrintableExcerpt(names_[i], kMaxQuoted));
+  return canonical;
 }
 
-void SampleLineParser::CheckTime(double t_s, const char* t_begin, const char* begin,
-                                 const char* end) const {
-  if (!has_previous_ || t_s > previous_t_s_) return;
-  Fail(begin, end, t_begin,
-       fmt::format("t = {} s does not increase (line {} has t = {} s); t must be strictly "
-                   "increasing", FormatNumber(t_s), previous_t_line_, FormatNumber(previous_t_s_)));
+std::string SampleLineParser::Expected() const {
+  if (positional_) return "t ax ay az [temp_c]";
+  std::string list;
+  for (int i = 0; i < num_columns_; ++i) {
+    const Slot s = slots_[static_cast<size_t>(i)];
+    if (i > 0) list += ',';
+    list += s == kSlotT ? "t" : s == kSlotAx ? "ax" : s == kSlotAy ? "ay" : s == kSlotAz ? "az"
+            : s == kSlotTemp ? "temp_c" : "-";
+  }
+  return fmt::format("{} ({})", num_columns_, list);
 }
 
-void SampleLineParser::Fail(const char* begin, const char* end, const char* at,
+void SampleLineParser::ReadNumber(const char* start, const char* token_end, int field,
+                                  double* value) const {
+  const char* p = start;
+  // A semicolon file writes decimal commas ("9,81"): read them as points.
+  char buffer[64];
+  const char* last = token_end;
+  if (delimiter_ == ';') {
+    const size_t n = static_cast<size_t>(token_end - start);
+    bool has_comma = false;
+    for (const char* q = start; q < token_end; ++q) has_comma |= (*q == ',');
+    if (has_comma && n < sizeof buffer) {
+      for (size_t i = 0; i < n; ++i) buffer[i] = start[i] == ',' ? '.' : start[i];
+      p = buffer;
+      last = buffer + n;
+    }
+  }
+  // from_chars takes no leading '+'; accept one (but not "+-1" or "++1").
+  if (p < last && *p == '+' && p + 1 < last && p[1] != '-' && p[1] != '+') ++p;
+  const auto [next, ec] = std::from_chars(p, last, *value);
+  const std::string_view token(start, static_cast<size_t>(token_end - start));
+  if (ec != std::errc() || next != last) {
+    FailAt(start, fmt::format("field '{}': '{}' is not a number", FieldName(field),
+                              PrintableExcerpt(token, kMaxQuoted)));
+  }
+  if (!std::isfinite(*value)) {
+    FailAt(start, fmt::format("field '{}': '{}' is not a finite number", FieldName(field),
+                              PrintableExcerpt(token, kMaxQuoted)));
+  }
+}
+
+size_t SampleLineParser::Parse(std::string_view line, long line_number, Sample* sample) {
+  line_ = line;
+  line_number_ = line_number;
+  const char* const begin = line.data();
+  const char* const end = begin + line.size();
+  const char d = delimiter_;
+  const char* p = begin;
+  while (p < end && IsPad(*p, d)) ++p;
+
+  std::array<double, 6> values{0.0, 0.0, 0.0, 0.0, kNaN, 0.0};
+  const int max_fields = positional_ ? kMaxPositional : num_columns_;
+  const char* t_begin = begin;
+  int count = 0;
+  for (;;) {
+    const char* token_end = TokenEnd(p, end);
+    const char* trimmed_end = token_end;
+    while (trimmed_end > p && IsPad(trimmed_end[-1], d)) --trimmed_end;
+    if (count == max_fields) FailAt(p, fmt::format("too many fields: expected {}", Expected()));
+    const Slot slot = positional_ ? static_cast<Slot>(count) : slots_[static_cast<size_t>(count)];
+    if (trimmed_end == p) {
+      // Only a delimiter file has empty fields here: a blank-separated one never yields one.
+      if (positional_ || (slot != kSlotIgnore && slot != kSlotTemp))
+        FailAt(p, d == ';' ? "empty field (two semicolons, or a trailing semicolon)"
+                 : d == '\t' ? "empty field (two tabs, or a trailing tab)"
+                             : "empty field (two commas, or a trailing comma)");
+    } else if (slot != kSlotIgnore) {
+      if (slot == kSlotT) t_begin = p;
+      ReadNumber(p, trimmed_end, count, &values[static_cast<size_t>(slot)]);
+    }
+    ++count;
+    p = token_end;
+    if (d != 0) {
+      if (p == end) break;
+      ++p;  // the delimiter
+      while (p < end && IsPad(*p, d)) ++p;
+      continue;
+    }
+    while (p < end && IsPad(*p, d)) ++p;
+    if (p == end) break;
+    if (*p == ',' || *p == ';') {
+      const char* separator = p++;
+      while (p < end && IsPad(*p, d)) ++p;
+      if (p == end || *p == ',' || *p == ';')
+        FailAt(p == end ? separator : p, "empty field (two commas, or a trailing comma)");
+    }
+  }
+
+  if (positional_) {
+    if (count < kMinPositional)
+      FailAt(end, fmt::format("{} field{} here, expected t ax ay az [temp_c]", count,
+                              count == 1 ? "" : "s"));
+    if (fields_per_line_ != 0 && count != fields_per_line_)
+      FailAt(end, fmt::format("{} fields here but {} on line {}, the first data line", count,
+                              fields_per_line_, first_data_line_));
+    if (fields_per_line_ == 0) {
+      fields_per_line_ = count;
+      first_data_line_ = line_number;
+    }
+    if (count < kMaxPositional) values[kSlotTemp] = kNaN;
+  } else if (count < num_columns_) {
+    FailAt(end, fmt::format("{} field{} here, expected {}", count, count == 1 ? "" : "s",
+                            Expected()));
+  }
+
+  const bool has_t = positional_ || t_slot_ >= 0;
+  sample->t_s = has_t ? values[kSlotT] * time_to_s_ : kNaN;
+  sample->raw_counts = {values[kSlotAx], values[kSlotAy], values[kSlotAz]};
+  if (reading_scale_ != 1.0) sample->raw_counts *= reading_scale_;
+  sample->temp_c = values[kSlotTemp];
+  return has_t ? static_cast<size_t>(t_begin - begin) : 0;
+}
+
+void SampleLineParser::FailAt(const char* at, const std::string& message) const {
+  Fail(line_, line_number_, static_cast<size_t>(at - line_.data()), message);
+}
+
+void SampleLineParser::Fail(std::string_view line, long line_number, size_t offset,
                             const std::string& message) const {
-  const std::string_view line(begin, static_cast<size_t>(end - begin));
-  throw InputError(source_name_, line_number_, ColumnAt(line, static_cast<size_t>(at - begin)),
-                   message);
+  throw InputError(source_name_, line_number, ColumnAt(line, offset), message);
+}
+
+std::vector<std::string> SplitHeaderCells(std::string_view line, char delimiter) {
+  std::vector<std::string> cells;
+  const auto push = [&](std::string_view cell) {
+    cell = TrimBlanks(cell);
+    if (cell.size() >= 2 && cell.front() == '"' && cell.back() == '"')
+      cell = cell.substr(1, cell.size() - 2);
+    cells.emplace_back(TrimBlanks(cell));
+  };
+  if (delimiter != 0) {
+    size_t start = 0;
+    for (;;) {
+      const size_t at = line.find(delimiter, start);
+      push(line.substr(start, at == std::string_view::npos ? std::string_view::npos : at - start));
+      if (at == std::string_view::npos) break;
+      start = at + 1;
+    }
+    return cells;
+  }
+  size_t i = 0;
+  while (i < line.size()) {
+    while (i < line.size() && (IsBlank(line[i]) || line[i] == ',' || line[i] == ';')) ++i;
+    const size_t start = i;
+    while (i < line.size() && !IsBlank(line[i]) && line[i] != ',' && line[i] != ';') ++i;
+    if (i > start) push(line.substr(start, i - start));
+  }
+  return cells;
+}
+
+char DetectDelimiter(std::string_view line, bool is_header) {
+  if (line.find(';') != std::string_view::npos) return ';';
+  if (!is_header) return 0;
+  if (line.find(',') != std::string_view::npos) return ',';
+  if (line.find('\t') != std::string_view::npos) return '\t';
+  return 0;
+}
+
+bool LooksLikeHeader(std::string_view line) {
+  size_t i = 0;
+  while (i < line.size()) {
+    while (i < line.size() && (IsBlank(line[i]) || line[i] == ',' || line[i] == ';')) ++i;
+    const size_t start = i;
+    while (i < line.size() && !IsBlank(line[i]) && line[i] != ',' && line[i] != ';') ++i;
+    if (i == start) continue;
+    const std::string_view token = line.substr(start, i - start);
+    const char c = token.front();
+    const bool wordish = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_' || c == '"';
+    if (wordish && !IsNumberWord(token)) return true;
+  }
+  return false;
 }
 
 }  // namespace accelcal::detail

@@ -1,5 +1,6 @@
 #include "accelcal/base/text_scan.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cstring>
 
@@ -70,6 +71,20 @@ bool ParseWhole(std::string_view text, T* value) {
 bool ParseDouble(std::string_view text, double* value) { return ParseWhole(text, value); }
 
 bool ParseLong(std::string_view text, long* value) { return ParseWhole(text, value); }
+
+std::string PrintableExcerpt(std::string_view text, size_t max_chars) {
+  std::string out;
+  out.reserve(std::min(text.size(), max_chars) + 3);
+  for (char c : text) {
+    if (out.size() >= max_chars) {
+      out += "...";
+      break;
+    }
+    const auto u = static_cast<unsigned char>(c);
+    out += (u >= 0x20 && u < 0x7f) ? c : '?';
+  }
+  return out;
+}
 
 std::string FormatNumber(double value) { return fmt::format("{}", value); }
 

@@ -44,6 +44,10 @@ bool ParseDouble(std::string_view text, double* value);
 // Parses all of `text` as a base-10 integer (optional sign); false otherwise or on overflow.
 bool ParseLong(std::string_view text, long* value);
 
+// `text` fit to quote in a message: bytes outside printable ASCII shown as '?', at most
+// `max_chars` characters (then "...").
+std::string PrintableExcerpt(std::string_view text, size_t max_chars);
+
 // A number for messages: shortest form that reads back the same ("4095", "1.23", "1e-07").
 std::string FormatNumber(double value);
 

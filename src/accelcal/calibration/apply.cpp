@@ -7,7 +7,6 @@
 
 #include <fmt/format.h>
 
-#include "accelcal/base/sample_line_parser.h"
 #include "accelcal/base/text_scan.h"
 
 namespace accelcal {
@@ -28,7 +27,8 @@ std::vector<double> EffectParameters(const Effect& effect, const CalibrationEffe
 
 }  // namespace
 
-CalibrationApplier::CalibrationApplier(const Calibration& cal) : model_(cal.model) {
+CalibrationApplier::CalibrationApplier(const Calibration& cal)
+    : model_(cal.model), reading_unit_(cal.reading_unit) {
   context_.gravity_mps2 = cal.gravity.gravity_mps2;
   for (const CalibrationEffect& e : cal.effects) {
     const std::string& name = e.name;
@@ -70,42 +70,63 @@ Eigen::Vector3d CalibrationApplier::Apply(const Sample& sample) const {
 
 ApplyStreamResult ApplyStream(std::istream& in, std::ostream& out, const CalibrationApplier& applier,
                               const std::string& source_name,
-                              const std::function<void(const InputError&)>& on_error) {
+                              const std::function<void(const InputError&)>& on_error,
+                              const SampleFormat& format, ReadingSummary* summary) {
   ApplyStreamResult result;
-  detail::SampleLineParser parser(source_name);
-  std::string line;
+  SampleFormat with_unit = format;
+  with_unit.unit = applier.reading_unit();
+  with_unit.unit_declared = true;
+  if (applier.needs_temperature())
+    with_unit.require_temp_c = "this calibration corrects for temperature: the line needs a temp_c field";
+  SampleReader reader(source_name, with_unit, SampleReader::OnMalformed::kSkip);
+  reader.set_error_sink([&](const InputError& e) {
+    ++result.malformed;
+    on_error(e);
+  });
   fmt::memory_buffer buffer;
-  Sample sample;
-  while (std::getline(in, line)) {
-    ++result.lines;
-    std::string_view view = line;
-    if (result.lines == 1) view = detail::StripBom(view);
-    if (!view.empty() && view.back() == '\r') view.remove_suffix(1);
-    Eigen::Vector3d a;
-    try {
-      if (!parser.Parse(view, result.lines, &sample)) {
-        if (!detail::TrimBlanks(view).empty()) out << view << '\n';
+  std::vector<Sample> samples;
+  size_t written = 0;  // of `samples`
+  // Writes the samples delivered so far (before a comment, so that it stays in place).
+  const auto flush = [&] {
+    for (; written < samples.size(); ++written) {
+      const Sample& s = samples[written];
+      Eigen::Vector3d a;
+      try {
+        a = applier.Apply(s);
+        // Never print inf or nan as a result (an effect's term may overflow for a wild reading).
+        if (!a.allFinite())
+          throw Error("the calibrated value is not a finite number (the reading is out of the sensor's range)");
+      } catch (const Error& e) {
+        ++result.malformed;
+        on_error(InputError(source_name, reader.line_number(), 0, e.what()));
         continue;
       }
-      try {
-        a = applier.Apply(sample);
-        // Never print inf or nan as a result (an effect's term may overflow for a wild reading).
-        if (!a.allFinite()) throw Error("the calibrated value is not a finite number (the reading is out of the sensor's range)");
-      } catch (const Error& e) {
-        throw InputError(source_name, result.lines, 0, e.what());
-      }
-    } catch (const InputError& e) {
-      ++result.malformed;
-      on_error(e);
-      continue;
+      buffer.clear();
+      fmt::format_to(std::back_inserter(buffer), "{} {:.6f} {:.6f} {:.6f}", s.t_s, a.x(), a.y(), a.z());
+      if (std::isfinite(s.temp_c)) fmt::format_to(std::back_inserter(buffer), " {}", s.temp_c);
+      buffer.push_back('\n');
+      out.write(buffer.data(), static_cast<std::streamsize>(buffer.size()));
+      ++result.samples;
     }
-    buffer.clear();
-    fmt::format_to(std::back_inserter(buffer), "{} {:.6f} {:.6f} {:.6f}", sample.t_s, a.x(), a.y(), a.z());
-    if (std::isfinite(sample.temp_c)) fmt::format_to(std::back_inserter(buffer), " {}", sample.temp_c);
-    buffer.push_back('\n');
-    out.write(buffer.data(), static_cast<std::streamsize>(buffer.size()));
-    ++result.samples;
+  };
+  reader.set_comment_sink([&](std::string_view comment, long) {
+    flush();
+    out << comment << '\n';
+  });
+  std::vector<char> chunk(size_t{1} << 16);
+  while (in) {
+    in.read(chunk.data(), static_cast<std::streamsize>(chunk.size()));
+    const std::streamsize got = in.gcount();
+    if (got <= 0) break;
+    reader.Feed(std::string_view(chunk.data(), static_cast<size_t>(got)), &samples);
+    flush();
+    samples.clear();
+    written = 0;
   }
+  reader.Finish(&samples);
+  flush();
+  result.lines = reader.line_number();
+  if (summary != nullptr) *summary = reader.Summary();
   return result;
 }
 

@@ -14,6 +14,8 @@
 
 #include "accelcal/calibration/diagnosis/effect.h"
 #include "accelcal/base/error.h"
+#include "accelcal/base/sample_format.h"
+#include "accelcal/base/sample_reader.h"
 #include "accelcal/calibration/calibration.h"
 
 namespace accelcal {
@@ -24,6 +26,9 @@ class CalibrationApplier {
   // malformed: applying the base model alone would give silently wrong numbers.
   explicit CalibrationApplier(const Calibration& cal);
 
+  // What the readings must be in (the calibration's): counts, or a logger's m/s^2 or g, which
+  // the reader converts to the calibration's counts (sample_format.h).
+  const ReadingUnit& reading_unit() const { return reading_unit_; }
   // True when an applied effect depends on temperature (readings must carry temp_c).
   bool needs_temperature() const { return needs_temperature_; }
   // Effects listed in the file but not applied to readings, with why (for the user).
@@ -39,6 +44,7 @@ class CalibrationApplier {
     std::vector<double> theta;
   };
   SensorModel model_;
+  ReadingUnit reading_unit_;
   EffectContext context_;
   std::vector<AppliedEffect> effects_;
   std::vector<std::string> not_applied_;
@@ -51,13 +57,16 @@ struct ApplyStreamResult {
   long malformed = 0;  // lines reported to on_error and skipped
 };
 
-// Reads lines `t ax ay az [temp_c]` (the sample protocol: blanks or commas, '#' comments) from
-// `in` and writes `t ax ay az [temp_c]` with ax ay az in m/s^2 to `out`; comments are passed
-// through. A malformed line (or one without the temperature the calibration needs) goes to
-// `on_error` and is skipped; the stream goes on. So is a line whose calibrated value is not
-// finite: no inf or nan is ever written.
+// Reads samples from `in` with the one sample reader (base/sample_reader.h: the protocol's
+// `t ax ay az [temp_c]`, or the columns, header, skipped rows and rate `format` gives; the
+// readings' unit is the calibration's) and writes `t ax ay az [temp_c]` with ax ay az in m/s^2
+// to `out`; comments are passed through. A malformed line (or one without the temperature the
+// calibration needs) goes to `on_error` and is skipped; the stream goes on. So is a line whose
+// calibrated value is not finite: no inf or nan is ever written. *summary (when not null) gets
+// what the reading understood.
 ApplyStreamResult ApplyStream(std::istream& in, std::ostream& out, const CalibrationApplier& applier,
                               const std::string& source_name,
-                              const std::function<void(const InputError&)>& on_error);
+                              const std::function<void(const InputError&)>& on_error,
+                              const SampleFormat& format = {}, ReadingSummary* summary = nullptr);
 
 }  // namespace accelcal

@@ -1,4 +1,5 @@
 #include "accelcal/calibration/calibration.h"
+#include "accelcal/calibration/pose_check.h"
 
 #include <fmt/core.h>
 
@@ -98,6 +99,13 @@ std::vector<CalibrationCapture> MakeCalibrationCaptures(const std::vector<Captur
   return out;
 }
 
+const HeldMark* Calibration::FindHeld(int index) const {
+  if (index < 0 || index >= kNumBaseParameters) return nullptr;
+  for (const HeldMark& h : held)
+    if (h.name == ParameterName(index)) return &h;
+  return nullptr;
+}
+
 Calibration MakeCalibration(const FitSummary& summary, const GravitySpec& gravity,
                             const std::vector<Capture>& all, const std::string& source) {
   Calibration cal;
@@ -108,6 +116,12 @@ Calibration MakeCalibration(const FitSummary& summary, const GravitySpec& gravit
   cal.residual_max_abs_mps2 = summary.residual_max_abs_mps2;
   cal.source = source;
   cal.fit = MakeFitStatistics(summary);
+  // A capture set may state each pose asked for: a capture taken in another one is named.
+  if (summary.IsUsable())
+    for (std::string& w : CheckRequestedPoses(all, cal.model)) cal.fit.warnings.push_back(std::move(w));
+  for (const HeldParameter& h : summary.held)
+    if (h.index < kNumBaseParameters)
+      cal.held.push_back({std::string(ParameterName(h.index)), h.value, h.reason});
   cal.captures = MakeCalibrationCaptures(all, summary);
   cal.stages.push_back({"base model", summary.residual_rms_mps2});
   for (CalibrationCapture& c : cal.captures) c.stage_residuals_mps2 = {c.residual_mps2};
@@ -118,6 +132,10 @@ Calibration MakeCalibration(const DiagnosisReport& d, bool adopt_effects, const 
                             const std::vector<Capture>& all, const std::string& source) {
   const bool adopt = adopt_effects && !d.adopted.empty();
   Calibration cal = MakeCalibration(adopt ? d.final_fit : d.base, gravity, all, source);
+  // The extended fits held what the base fit held; the reasons are the base fit's.
+  for (HeldMark& h : cal.held)
+    for (const HeldParameter& b : d.base.held)
+      if (h.reason.empty() && ParameterName(b.index) == h.name) h.reason = b.reason;
   cal.diagnosis = DiagnosisOutcome{true, d.base.residual_rms_mps2, d.noise_rms_mps2,
                                    adopt ? d.consistent : d.adopted.empty() && d.consistent,
                                    d.conclusion};

@@ -16,6 +16,7 @@
 
 #include "accelcal/base/capture.h"
 #include "accelcal/base/gravity.h"
+#include "accelcal/base/sample_format.h"
 #include "accelcal/base/sensor_model.h"
 #include "accelcal/calibration/fit/fit_summary.h"
 
@@ -102,9 +103,21 @@ struct ModelStage {
   double rms_mps2 = kNaN;
 };
 
+// One of the nine parameters held at a value instead of fitted (a reduced model: the captures
+// did not determine it, e.g. the misalignment from six faces).
+struct HeldMark {
+  std::string name;    // ParameterName(): "a_yz", ...
+  double value = 0.0;  // held at, in its unit (the model carries it too)
+  std::string reason;  // why, and what to capture to determine it
+};
+
 struct Calibration {
   SensorModel model;
-  SensorModel uncertainty;         // 1-sigma of each parameter, same fields
+  SensorModel uncertainty;         // 1-sigma of each parameter, same fields; NaN when held
+  std::vector<HeldMark> held;      // parameters held, not fitted (empty: all nine fitted)
+  // What the readings were in: counts, or a logger's m/s^2 or g taken as counts of a fraction of
+  // that unit (sample_format.h); apply converts readings the same way.
+  ReadingUnit reading_unit;
   GravitySpec gravity;
   double residual_rms_mps2 = kNaN;
   double residual_max_abs_mps2 = kNaN;
@@ -118,6 +131,8 @@ struct Calibration {
 
   // The adopted effect called `name`; nullptr when there is none.
   const CalibrationEffect* FindEffect(std::string_view name) const;
+  // The held mark of parameter `index` (ParameterIndex); nullptr when it was fitted.
+  const HeldMark* FindHeld(int index) const;
   std::vector<std::string> EffectNames() const;
 };
 

@@ -1,5 +1,7 @@
 #include "accelcal/io/calibration_file.h"
 
+#include <algorithm>
+
 #include <fmt/core.h>
 
 #include "accelcal/base/error.h"
@@ -134,6 +136,59 @@ SensorModel ReadModel(const json& j, const std::string& path, const std::string&
   m.a_zy_rad = RequiredFinite(mis, "zy", path + "misalignment_rad.", source);
   m.a_zx_rad = RequiredFinite(mis, "zx", path + "misalignment_rad.", source);
   return m;
+}
+
+// Parameters held in a reduced model (calibration.h): absent or empty when all nine were fitted.
+std::vector<HeldMark> ReadHeld(const json& j, const std::string& source) {
+  std::vector<HeldMark> out;
+  if (!j.contains("held") || j.at("held").is_null()) return out;
+  const json& held = j.at("held");
+  if (!held.is_array()) FailField(source, "held", "must be an array");
+  for (size_t i = 0; i < held.size(); ++i) {
+    const std::string path = fmt::format("held[{}].", i);
+    if (!held[i].is_object()) FailField(source, fmt::format("held[{}]", i), "must be an object");
+    HeldMark h;
+    h.name = OptionalString(held[i], "name", path, source);
+    if (h.name != "a_yz" && h.name != "a_zy" && h.name != "a_zx")
+      FailField(source, path + "name", "must be one of the misalignment angles a_yz, a_zy, a_zx");
+    h.value = RequiredFinite(held[i], "value", path, source);
+    h.reason = OptionalString(held[i], "reason", path, source);
+    out.push_back(std::move(h));
+  }
+  return out;
+}
+
+// The 1-sigma of the parameters: finite, except a held angle's (null: it was not fitted).
+SensorModel ReadUncertainty(const json& unc, const std::vector<HeldMark>& held,
+                            const std::string& source) {
+  SensorModel u;
+  u.bias_counts = ReadTriad(unc, "bias_counts", "uncertainty.", source);
+  u.scale_counts_per_mps2 = ReadTriad(unc, "scale_counts_per_mps2", "uncertainty.", source);
+  const json& mis = RequiredField(unc, "misalignment_rad", "uncertainty.", source);
+  const auto angle = [&](const char* key, const char* name) {
+    const bool is_held = std::any_of(held.begin(), held.end(), [&](const HeldMark& h) { return h.name == name; });
+    return is_held ? OptionalFinite(mis, key, "uncertainty.misalignment_rad.", source)
+                   : RequiredFinite(mis, key, "uncertainty.misalignment_rad.", source);
+  };
+  u.a_yz_rad = angle("yz", "a_yz");
+  u.a_zy_rad = angle("zy", "a_zy");
+  u.a_zx_rad = angle("zx", "a_zx");
+  return u;
+}
+
+// What the readings were in; absent: counts.
+ReadingUnit ReadReadingUnit(const json& j, const std::string& source) {
+  ReadingUnit unit;
+  if (!j.contains("reading_unit") || j.at("reading_unit").is_null()) return unit;
+  const json& r = j.at("reading_unit");
+  if (!r.is_object()) FailField(source, "reading_unit", "must be an object");
+  const std::string name = OptionalString(r, "unit", "reading_unit.", source);
+  const std::optional<ReadingUnit> parsed = StringToReadingUnit(name);
+  if (!parsed) FailField(source, "reading_unit.unit", "must be \"counts\", \"m/s^2\" or \"g\"");
+  unit = *parsed;
+  if (!unit.is_counts()) unit.counts_per_unit = RequiredFinite(r, "counts_per_unit", "reading_unit.", source);
+  if (std::string e = unit.Validate(); !e.empty()) FailField(source, "reading_unit", e);
+  return unit;
 }
 
 GravitySpec ReadGravity(const json& j, const std::string& source) {
@@ -291,7 +346,9 @@ Calibration CalibrationFromJson(const json& j, const std::string& source) {
   cal.model = ReadModel(j, "", source);
   if (std::string e = cal.model.Validate(); !e.empty()) throw InputError(source, 0, 0, e);
   const json& unc = RequiredField(j, "uncertainty", "", source);
-  cal.uncertainty = ReadModel(unc, "uncertainty.", source);
+  cal.held = ReadHeld(j, source);
+  cal.uncertainty = ReadUncertainty(unc, cal.held, source);
+  cal.reading_unit = ReadReadingUnit(j, source);
   cal.gravity = ReadGravity(j, source);
   cal.residual_rms_mps2 = OptionalFinite(j, "residual_rms_mps2", "", source);
   cal.residual_max_abs_mps2 = OptionalFinite(j, "residual_max_abs_mps2", "", source);
@@ -312,6 +369,10 @@ json CalibrationToJson(const Calibration& cal) {
   for (const CalibrationCapture& c : cal.captures) captures.push_back(CaptureJson(c));
   json effects = json::array();
   for (const CalibrationEffect& e : cal.effects) effects.push_back(EffectJson(e, cal.reference));
+  json held = json::array();
+  for (const HeldMark& h : cal.held) held.push_back({{"name", h.name}, {"value", h.value}, {"reason", h.reason}});
+  json unit = {{"unit", cal.reading_unit.Name()}, {"description", cal.reading_unit.Describe()}};
+  if (!cal.reading_unit.is_counts()) unit["counts_per_unit"] = cal.reading_unit.counts_per_unit;
   return {{"format", kCalibrationFormat},
           {"tool", std::string("accelcal ") + kAccelcalVersion},
           {"source", cal.source},
@@ -324,6 +385,8 @@ json CalibrationToJson(const Calibration& cal) {
            {{"bias_counts", JsonTriad(cal.uncertainty.bias_counts)},
             {"scale_counts_per_mps2", JsonTriad(cal.uncertainty.scale_counts_per_mps2)},
             {"misalignment_rad", Misalignment(cal.uncertainty)}}},
+          {"held", held},
+          {"reading_unit", unit},
           {"residual_rms_mps2", JsonNumber(cal.residual_rms_mps2)},
           {"residual_max_abs_mps2", JsonNumber(cal.residual_max_abs_mps2)},
           {"fit", FitJson(cal)},

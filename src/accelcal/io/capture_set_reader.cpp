@@ -10,6 +10,7 @@
 
 #include "accelcal/io/csv_fields.h"
 #include "accelcal/io/detail/read_file.h"
+#include "accelcal/base/sample_columns.h"
 #include "accelcal/base/text_scan.h"
 #include "accelcal/base/error.h"
 
@@ -18,13 +19,30 @@ namespace {
 
 
 enum Column : int {
-  kCapture, kKind, kT, kAx, kAy, kAz, kTempC, kRadiusM, kRpm, kLabel, kUpAxis, kNumColumns
+  kCapture, kKind, kT, kAx, kAy, kAz, kTempC, kRadiusM, kRpm, kLabel, kUpAxis, kUp, kNumColumns
 };
 constexpr std::array<std::string_view, kNumColumns> kColumnNames = {
-    "capture", "kind", "t", "ax", "ay", "az", "temp_c", "radius_m", "rpm", "label", "up_axis"};
+    "capture", "kind", "t", "ax", "ay", "az", "temp_c", "radius_m", "rpm", "label", "up_axis", "up"};
 constexpr int kNumRequiredColumns = kTempC;  // the columns before temp_c are required
 
 constexpr std::string_view kAdcRangeKey = "adc_range_counts";
+
+// The column a header cell names: its exact name, or for the sample columns a common spelling
+// (base/sample_columns.h; a time column in seconds only); kNumColumns when none.
+int ColumnOfName(std::string_view name) {
+  for (int c = 0; c < kNumColumns; ++c)
+    if (kColumnNames[static_cast<size_t>(c)] == name) return c;
+  const NamedColumn named = RecognizeColumnName(name);
+  switch (named.column) {
+    case SampleColumn::kT: return named.time_to_s == 1.0 ? kT : kNumColumns;
+    case SampleColumn::kAx: return kAx;
+    case SampleColumn::kAy: return kAy;
+    case SampleColumn::kAz: return kAz;
+    case SampleColumn::kTempC: return kTempC;
+    case SampleColumn::kIgnore: return kNumColumns;
+  }
+  return kNumColumns;
+}
 
 // One data row, parsed.
 struct Row {
@@ -35,6 +53,7 @@ struct Row {
   double rpm = kNaN;
   std::string label;
   std::optional<SensorAxis> up_axis;
+  std::optional<Eigen::Vector3d> up;
 };
 
 // Line span of a capture already read, to report a non-contiguous id.
@@ -67,6 +86,8 @@ class CaptureSetParser {
   Row ParseRow() const;
   void ParseTurntableColumns(Row* row) const;
   void CheckStaticColumnEmpty(Column c) const;
+  void CheckTurntableColumnEmpty(Column c) const;
+  void ParseUp(Row* row) const;
   void AddRow(Row row);
   void StartCapture(Row row);
   void CheckSameAsFirstRow(const Row& row) const;
@@ -153,15 +174,20 @@ void CaptureSetParser::ParseHeader() {
   column_index_.fill(-1);
   for (size_t i = 0; i < fields_.size(); ++i) {
     const std::string& name = fields_[i].value;
-    int c = 0;
-    while (c < kNumColumns && kColumnNames[c] != name) ++c;
+    const int c = ColumnOfName(name);
     if (c == kNumColumns) {
       FailAt(fields_[i].offset,
              fmt::format("unknown column '{}' in the header (known: capture, kind, t, ax, ay, "
-                         "az, temp_c, radius_m, rpm, label, up_axis)", name));
+                         "az, temp_c, radius_m, rpm, label, up_axis, up; t, ax, ay, az and "
+                         "temp_c also in their common spellings: time, acc_x, AccX, ...)",
+                         detail::PrintableExcerpt(name, 40)));
     }
     if (column_index_[c] >= 0) {
-      FailAt(fields_[i].offset, fmt::format("column '{}' appears twice in the header", name));
+      const std::string& first = fields_[static_cast<size_t>(column_index_[c])].value;
+      FailAt(fields_[i].offset,
+             first == name ? fmt::format("column '{}' appears twice in the header", name)
+                           : fmt::format("column '{}' appears twice in the header (as '{}' and "
+                                         "'{}')", kColumnNames[c], first, name));
     }
     column_index_[c] = static_cast<int>(i);
   }
@@ -247,7 +273,9 @@ Row CaptureSetParser::ParseRow() const {
     CheckStaticColumnEmpty(kRadiusM);
     CheckStaticColumnEmpty(kRpm);
     CheckStaticColumnEmpty(kUpAxis);
+    ParseUp(&row);
   }
+  if (row.kind == CaptureKind::kTurntable) CheckTurntableColumnEmpty(kUp);
   if (const CsvField* label = Field(kLabel)) row.label = label->value;
   return row;
 }
@@ -281,6 +309,43 @@ void CaptureSetParser::CheckStaticColumnEmpty(Column c) const {
     FailAt(field->offset, fmt::format("column '{}': must be empty on a static row (got '{}')",
                                       kColumnNames[c], field->value));
   }
+}
+
+void CaptureSetParser::CheckTurntableColumnEmpty(Column c) const {
+  const CsvField* field = Field(c);
+  if (field != nullptr && !field->value.empty()) {
+    FailAt(field->offset, fmt::format("column '{}': must be empty on a turntable row (its "
+                                      "mounting is up_axis; got '{}')", kColumnNames[c],
+                                      detail::PrintableExcerpt(field->value, 40)));
+  }
+}
+
+// `up`: "+x" ... "-z", or three numbers separated by blanks ("0.577 0.577 -0.577"), normalized.
+void CaptureSetParser::ParseUp(Row* row) const {
+  const CsvField* field = Field(kUp);
+  if (field == nullptr || field->value.empty()) return;
+  if (const std::optional<SensorAxis> axis = StringToSensorAxis(field->value)) {
+    row->up = SensorAxisVector(*axis);
+    return;
+  }
+  Eigen::Vector3d v;
+  std::string_view rest = field->value;
+  int n = 0;
+  bool ok = true;
+  while (ok && !(rest = detail::TrimBlanks(rest)).empty()) {
+    size_t end = 0;
+    while (end < rest.size() && !detail::IsBlank(rest[end])) ++end;
+    double x = 0.0;
+    ok = n < 3 && detail::ParseDouble(rest.substr(0, end), &x) && std::isfinite(x);
+    if (ok) v(n++) = x;
+    rest.remove_prefix(end);
+  }
+  if (!ok || n != 3 || !(v.norm() > 0.0)) {
+    FailAt(field->offset, fmt::format("column 'up': '{}' is not a direction (+x ... -z, or three "
+                                      "numbers such as '0.577 0.577 -0.577')",
+                                      detail::PrintableExcerpt(field->value, 40)));
+  }
+  row->up = v.normalized();
 }
 
 void CaptureSetParser::AddRow(Row row) {
@@ -319,6 +384,7 @@ void CaptureSetParser::StartCapture(Row row) {
   capture.radius_m = row.radius_m;
   capture.rpm = row.rpm;
   capture.up_axis = row.up_axis;
+  capture.requested_up = row.up;
   capture.samples.push_back(row.sample);
   first_row_ = std::move(row);
   first_row_line_ = lines_.line_number();
@@ -327,8 +393,8 @@ void CaptureSetParser::StartCapture(Row row) {
 void CaptureSetParser::CheckSameAsFirstRow(const Row& row) const {
   const auto differs = [&](Column c, const std::string& here, const std::string& first) {
     FailAtField(c, fmt::format("column '{}': '{}' differs from '{}' on line {}, the first row of "
-                               "capture {} (kind, radius_m, rpm, label and up_axis must be the "
-                               "same on all rows of a capture)",
+                               "capture {} (kind, radius_m, rpm, label, up_axis and up must be "
+                               "the same on all rows of a capture)",
                                kColumnNames[c], here, first, first_row_line_, row.id));
   };
   if (row.kind != first_row_.kind) {
@@ -343,6 +409,12 @@ void CaptureSetParser::CheckSameAsFirstRow(const Row& row) const {
     differs(kRpm, Field(kRpm)->value, detail::FormatNumber(first_row_.rpm));
   }
   if (row.label != first_row_.label) differs(kLabel, row.label, first_row_.label);
+  if (row.up != first_row_.up) {
+    const auto text = [](const std::optional<Eigen::Vector3d>& u) {
+      return u ? fmt::format("{:.4f} {:.4f} {:.4f}", u->x(), u->y(), u->z()) : std::string();
+    };
+    differs(kUp, text(row.up), text(first_row_.up));
+  }
   if (row.up_axis != first_row_.up_axis) {
     const auto name = [](const std::optional<SensorAxis>& a) {
       return a ? std::string(SensorAxisToString(*a)) : std::string();

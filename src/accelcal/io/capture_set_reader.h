@@ -15,11 +15,13 @@
 //   around each token; MIN < MAX, finite, counts, inclusive) is metadata; a malformed one, or a
 //   second one, is an error.
 // - The first other line is the header. It names the columns in any order. Required:
-//   capture, kind, t, ax, ay, az. Optional: temp_c, radius_m, rpm, label, up_axis. Unknown and
-//   repeated names are errors.
+//   capture, kind, t, ax, ay, az. Optional: temp_c, radius_m, rpm, label, up_axis, up. t, ax,
+//   ay, az and temp_c are also recognised in the common spellings of sample tables
+//   (base/sample_columns.h: time, acc_x, AccX, accel_x, temperature, ...). Unknown and repeated
+//   names are errors.
 // - capture: integer id (0 .. INT_MAX). The rows of one capture are contiguous.
-// - kind: "static" or "turntable"; kind, radius_m, rpm, label and up_axis are the same on all rows of
-//   a capture.
+// - kind: "static" or "turntable"; kind, radius_m, rpm, label, up_axis and up are the same on all
+//   rows of a capture.
 // - t: seconds, finite, never decreasing down the file (one session clock).
 // - ax, ay, az: raw readings, ADC counts. "nan" and "inf" are accepted (any case): they are
 //   read as non-finite values so that screening (capture_screening.h) rejects the capture with
@@ -28,6 +30,8 @@
 // - radius_m (m) and rpm (revolutions per minute): required on turntable rows (finite, > 0);
 //   empty or absent on static rows.
 // - up_axis: turntable rows only, optional: the sensor axis that pointed up ("+x" ... "-z").
+// - up: static rows only, optional: the up direction the procedure asked for, sensor frame:
+//   "+x" ... "-z", or three numbers separated by blanks ("0.577 0.577 -0.577"; normalized).
 // - label: free text. RFC 4180 quoting when it holds commas: "a, b" and "say ""hi""".
 //   A quoted field cannot span lines.
 // - Blanks around fields are ignored. Line endings may be LF or CRLF; a UTF-8 byte-order mark

@@ -20,6 +20,16 @@ std::string OptionalNumber(double value) {
   return std::isnan(value) ? std::string() : Number(value);
 }
 
+// The `up` column's text: a face ("+z") or three numbers.
+std::string UpText(const Capture& c) {
+  if (!c.requested_up || c.kind != CaptureKind::kStatic) return {};
+  const Eigen::Vector3d& u = *c.requested_up;
+  for (SensorAxis a : {SensorAxis::kPlusX, SensorAxis::kMinusX, SensorAxis::kPlusY,
+                       SensorAxis::kMinusY, SensorAxis::kPlusZ, SensorAxis::kMinusZ})
+    if ((u - SensorAxisVector(a)).norm() < 1e-9) return std::string(SensorAxisToString(a));
+  return fmt::format("{} {} {}", u.x(), u.y(), u.z());
+}
+
 void WriteRow(std::ostream& out, const Capture& c, const std::string& label, const Sample& s) {
   const bool turntable = c.kind == CaptureKind::kTurntable;
   out << c.id << ',' << CaptureKindToString(c.kind) << ',' << Number(s.t_s) << ','
@@ -27,7 +37,7 @@ void WriteRow(std::ostream& out, const Capture& c, const std::string& label, con
       << Number(s.raw_counts.z()) << ',' << OptionalNumber(s.temp_c) << ','
       << (turntable ? OptionalNumber(c.radius_m) : "") << ','
       << (turntable ? OptionalNumber(c.rpm) : "") << ',' << label << ','
-      << (turntable && c.up_axis ? SensorAxisToString(*c.up_axis) : "") << '\n';
+      << (turntable && c.up_axis ? SensorAxisToString(*c.up_axis) : "");
 }
 
 }  // namespace
@@ -38,14 +48,21 @@ void WriteCaptureSet(std::ostream& out, const CaptureSet& set) {
     out << "# adc_range_counts = " << Number(set.adc_range->min_counts) << ','
         << Number(set.adc_range->max_counts) << '\n';
   }
-  out << "capture,kind,t,ax,ay,az,temp_c,radius_m,rpm,label,up_axis\n";
+  // The `up` column only when some capture knows its requested pose (older readers lack it).
+  const bool with_up = std::any_of(set.captures.begin(), set.captures.end(),
+                                   [](const Capture& c) { return c.requested_up.has_value(); });
+  out << "capture,kind,t,ax,ay,az,temp_c,radius_m,rpm,label,up_axis" << (with_up ? ",up\n" : "\n");
   for (const Capture& c : set.captures) {
     // A line break would split a row: the format is one row per line.
     if (c.label.find_first_of("\r\n") != std::string::npos) {
       throw Error(fmt::format("capture {}: a label cannot hold a line break", c.id));
     }
     const std::string label = CsvQuote(c.label);
-    for (const Sample& s : c.samples) WriteRow(out, c, label, s);
+    const std::string up = with_up ? "," + UpText(c) + "\n" : "\n";
+    for (const Sample& s : c.samples) {
+      WriteRow(out, c, label, s);
+      out << up;
+    }
   }
   if (!out) throw Error("cannot write the capture set");
 }

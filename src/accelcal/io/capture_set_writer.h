@@ -10,7 +10,8 @@
 // contiguous. capture: integer id. kind: static | turntable. t: s on the session clock.
 // ax, ay, az: raw counts. temp_c: degC, empty when unknown. radius_m (m) and rpm: empty on
 // static rows. label: quoted with double quotes when it holds a comma or a quote, quotes
-// doubled inside (RFC 4180). Numbers are written shortest-round-trip (a whole number of counts
+// doubled inside (RFC 4180). up (the requested up direction, "+z" or three numbers) only when
+// some capture knows it, as a last column. Numbers are written shortest-round-trip (a whole number of counts
 // prints as an integer), so reading them back gives the same doubles.
 //
 // Recording format: comment lines starting with '#', then one line per sample

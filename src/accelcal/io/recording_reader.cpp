@@ -1,34 +1,46 @@
 #include "accelcal/io/recording_reader.h"
 
-#include <algorithm>
-
-#include "accelcal/io/detail/read_file.h"
-#include "accelcal/io/detail/recording_lines.h"
-#include "accelcal/base/sample_line_parser.h"
-#include "accelcal/base/text_scan.h"
-#include "accelcal/base/error.h"
+#include "accelcal/io/recording_stream.h"
 
 namespace accelcal {
-namespace {
 
-std::vector<Sample> ParseLines(std::string_view text, const std::string& source_name) {
-  detail::SampleLineParser parser(source_name);
-  std::vector<Sample> samples;
-  // One sample per line at most: reserve once instead of growing.
-  samples.reserve(static_cast<size_t>(std::count(text.begin(), text.end(), '\n')) + 1);
-  long line_number = 0;
-  detail::ParseRecordingLines(text, /*final=*/true, parser, &line_number, &samples);
-  return samples;
+Recording ReadRecording(const std::string& path, const SampleFormat& format) {
+  RecordingStream stream(path, RecordingStream::kDefaultBlockBytes, format);
+  Recording out;
+  // One reservation from the file's size and the first block's line length, rather than a
+  // vector doubling its way up (each doubling copies every sample and faults in new pages).
+  if (!stream.AppendNext(&out.samples)) {
+    out.summary = stream.Summary();
+    return out;
+  }
+  if (stream.size_hint() > stream.bytes_read() && !out.samples.empty()) {
+    const double bytes_per_sample =
+        static_cast<double>(stream.bytes_read()) / static_cast<double>(out.samples.size());
+    const double expected = static_cast<double>(stream.size_hint()) / bytes_per_sample;
+    out.samples.reserve(static_cast<size_t>(expected * 1.02) + 1024);
+  }
+  while (stream.AppendNext(&out.samples)) {
+  }
+  out.summary = stream.Summary();
+  return out;
 }
 
-}  // namespace
+Recording ParseRecordingText(std::string_view text, const std::string& source_name,
+                             const SampleFormat& format) {
+  SampleReader reader(source_name, format, SampleReader::OnMalformed::kThrow);
+  Recording out;
+  reader.Consume(text, /*final=*/true, &out.samples);
+  reader.Finish(&out.samples);
+  out.summary = reader.Summary();
+  return out;
+}
 
 std::vector<Sample> ReadRecordingFile(const std::string& path) {
-  return ParseRecording(detail::ReadWholeFile(path), path);
+  return ReadRecording(path).samples;
 }
 
 std::vector<Sample> ParseRecording(std::string_view text, const std::string& source_name) {
-  return ParseLines(detail::StripBom(text), source_name);
+  return ParseRecordingText(text, source_name).samples;
 }
 
 }  // namespace accelcal

@@ -3,62 +3,93 @@
 #include <cerrno>
 #include <cstring>
 
-#include "accelcal/io/detail/recording_lines.h"
-#include "accelcal/base/text_scan.h"
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include "accelcal/base/error.h"
 
 namespace accelcal {
+namespace {
 
-RecordingStream::RecordingStream(const std::string& path, size_t block_bytes)
-    : path_(path), block_bytes_(block_bytes), parser_(path) {
+std::string Failure(const char* what, const std::string& path, int err) {
+  return std::string(what) + " '" + path + "': " + std::strerror(err);
+}
+
+}  // namespace
+
+RecordingStream::RecordingStream(const std::string& path, size_t block_bytes,
+                                 const SampleFormat& format)
+    : path_(path),
+      block_bytes_(block_bytes),
+      reader_(path, format, SampleReader::OnMalformed::kThrow) {
   if (block_bytes_ == 0) throw Error("RecordingStream: block_bytes must be > 0");
   if (path == "-") {
-    file_ = stdin;
-    return;
+    fd_ = STDIN_FILENO;
+  } else {
+    fd_ = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+    if (fd_ < 0) throw Error(Failure("cannot open", path, errno));
+    owns_fd_ = true;
   }
-  file_ = std::fopen(path.c_str(), "rb");
-  if (file_ == nullptr)
-    throw Error("cannot open '" + path + "': " + std::strerror(errno));
-  owns_file_ = true;
+  struct stat info {};
+  if (::fstat(fd_, &info) == 0) {
+    if (S_ISDIR(info.st_mode)) {
+      if (owns_fd_) ::close(fd_);
+      throw Error(Failure("cannot open", path, EISDIR));
+    }
+    if (S_ISREG(info.st_mode) && info.st_size > 0) size_hint_ = static_cast<size_t>(info.st_size);
+  }
+  // A partial line is at most the line limit (and its CR LF); a block goes after it.
+  capacity_ = static_cast<size_t>(format.max_line_bytes) + 2 + block_bytes_;
+  buffer_.reset(new char[capacity_]);
 }
 
 RecordingStream::~RecordingStream() {
-  if (owns_file_) std::fclose(file_);
+  if (owns_fd_) ::close(fd_);
 }
 
 bool RecordingStream::Fill() {
   if (at_eof_) return false;
-  const size_t used = buffer_.size();
-  buffer_.resize(used + block_bytes_);
-  const size_t got = std::fread(buffer_.data() + used, 1, block_bytes_, file_);
-  buffer_.resize(used + got);
-  if (got < block_bytes_) {
-    if (std::ferror(file_)) throw Error("cannot read '" + path_ + "': " + std::strerror(errno));
-    at_eof_ = true;
+  size_t got_total = 0;
+  while (got_total < block_bytes_) {
+    const ssize_t got = ::read(fd_, buffer_.get() + used_, block_bytes_ - got_total);
+    if (got < 0) {
+      if (errno == EINTR) continue;
+      throw Error(Failure("cannot read", path_, errno));
+    }
+    if (got == 0) {
+      at_eof_ = true;
+      break;
+    }
+    used_ += static_cast<size_t>(got);
+    got_total += static_cast<size_t>(got);
+    if (size_hint_ == 0) break;  // a pipe: take what came, do not wait for a full block
   }
-  if (first_block_ && (buffer_.size() >= 3 || at_eof_)) {
-    // The byte-order mark can only be at the very start of the file (decided once its three
-    // bytes are in, however small the blocks).
-    const std::string_view stripped = detail::StripBom(buffer_);
-    buffer_.erase(0, buffer_.size() - stripped.size());
-    first_block_ = false;
-  }
-  return got > 0;
+  bytes_read_ += got_total;
+  return got_total > 0;
 }
 
 bool RecordingStream::Next(std::vector<Sample>* samples) {
   samples->clear();
+  return AppendNext(samples);
+}
+
+bool RecordingStream::AppendNext(std::vector<Sample>* samples) {
+  const size_t before = samples->size();
   // Read until at least one sample is parsed or the file ends (a block may hold only comments,
   // or only part of one long line).
-  while (samples->empty()) {
-    const bool more = Fill();
+  while (samples->size() == before && !finished_) {
+    Fill();
     const size_t consumed =
-        detail::ParseRecordingLines(buffer_, /*final=*/!more, parser_, &line_number_, samples);
-    buffer_.erase(0, consumed);
-    if (consumed > 0) first_block_ = false;  // past the start: no byte-order mark any more
-    if (!more) return !samples->empty();
+        reader_.Consume(std::string_view(buffer_.get(), used_), at_eof_, samples);
+    used_ -= consumed;
+    if (used_ > 0 && consumed > 0) std::memmove(buffer_.get(), buffer_.get() + consumed, used_);
+    if (at_eof_) {
+      reader_.Finish(samples);
+      finished_ = true;
+    }
   }
-  return true;
+  return samples->size() > before;
 }
 
 }  // namespace accelcal

@@ -1,25 +1,32 @@
-// Reading a continuous recording block by block, for records too long to hold in memory (12 hours
-// at 1 kHz is 43 million lines, ~1.7 GB of text). Same format, same checks and same errors as
-// recording_reader.h, which reads a whole file at once; memory is bounded by the block size
-// (plus the longest line).
+// Reading a recording block by block, for records too long to hold in memory (12 hours at
+// 1 kHz is 43 million lines, ~1.7 GB of text), and for the whole-file reader
+// (recording_reader.h), which appends every block. The format is the sample reader's
+// (base/sample_reader.h: columns, header, skipped rows, rate, repaired time stamps); errors name
+// FILE:LINE:COLUMN. Memory is bounded by the block size plus the longest line allowed.
+//
+// Speed: each block is read with read(2) straight into one buffer allocated once (never
+// zero-filled), parsed in place, and only the partial line at its end is moved to the front.
 #pragma once
 
 #include <cstddef>
-#include <cstdio>
 #include <memory>
 #include <string>
 #include <vector>
 
 #include "accelcal/base/capture.h"
-#include "accelcal/base/sample_line_parser.h"
+#include "accelcal/base/sample_format.h"
+#include "accelcal/base/sample_reader.h"
 
 namespace accelcal {
 
 class RecordingStream {
  public:
-  // Opens `path` ("-" is standard input). Throws accelcal::Error "cannot open 'PATH': <reason>".
-  // `block_bytes` > 0 is how much is read at a time.
-  explicit RecordingStream(const std::string& path, size_t block_bytes = size_t{1} << 22);
+  static constexpr size_t kDefaultBlockBytes = size_t{1} << 22;
+
+  // Opens `path` ("-" is standard input). Throws accelcal::Error "cannot open 'PATH': <reason>",
+  // or for an invalid format. `block_bytes` > 0 is how much is read at a time.
+  explicit RecordingStream(const std::string& path, size_t block_bytes = kDefaultBlockBytes,
+                           const SampleFormat& format = {});
   ~RecordingStream();
   RecordingStream(const RecordingStream&) = delete;
   RecordingStream& operator=(const RecordingStream&) = delete;
@@ -28,21 +35,32 @@ class RecordingStream {
   // empty) once the file is exhausted. Malformed content throws accelcal::InputError
   // (FILE:LINE:COLUMN), read failures accelcal::Error; the samples returned before stay valid.
   bool Next(std::vector<Sample>* samples);
+  // As Next, but appends to *samples; false once nothing more was appended (exhausted).
+  bool AppendNext(std::vector<Sample>* samples);
 
   const std::string& path() const { return path_; }
+  // The size of the file when known (0 for a pipe), bytes; for reserving.
+  size_t size_hint() const { return size_hint_; }
+  // Bytes read so far.
+  size_t bytes_read() const { return bytes_read_; }
+  // What the reading understood so far (complete once Next returned false).
+  ReadingSummary Summary() const { return reader_.Summary(); }
 
  private:
-  bool Fill();  // reads more bytes into buffer_; false at end of file
+  bool Fill();  // reads one block after the kept partial line; false at end of file
 
   std::string path_;
-  std::FILE* file_ = nullptr;  // owned unless it is stdin
-  bool owns_file_ = false;
+  int fd_ = -1;
+  bool owns_fd_ = false;
   size_t block_bytes_;
-  std::string buffer_;   // unparsed bytes: at most a partial line between calls
+  std::unique_ptr<char[]> buffer_;  // capacity_ bytes, uninitialised
+  size_t capacity_ = 0;
+  size_t used_ = 0;                 // bytes in buffer_: a partial line, then a block
+  size_t size_hint_ = 0;
+  size_t bytes_read_ = 0;
   bool at_eof_ = false;
-  bool first_block_ = true;  // the byte-order mark is still to be looked for
-  long line_number_ = 0;
-  detail::SampleLineParser parser_;
+  bool finished_ = false;
+  SampleReader reader_;
 };
 
 }  // namespace accelcal

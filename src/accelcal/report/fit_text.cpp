@@ -1,5 +1,6 @@
 #include "accelcal/report/fit_text.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <fmt/core.h>
@@ -56,7 +57,12 @@ std::string FormatCaptureTable(const std::vector<Capture>& captures, const FitSu
 }
 
 std::string FormatFitReport(const Calibration& cal, const FitSummary& summary) {
-  return "\n" + summary.FullReport() + "\ncaptures:\n" + FormatCaptureTable(cal.captures);
+  // Warnings the calibration adds to the fit's own (a capture in another pose than asked).
+  std::string extra;
+  for (const std::string& w : cal.fit.warnings)
+    if (std::find(summary.warnings.begin(), summary.warnings.end(), w) == summary.warnings.end())
+      extra += "warning: " + w + "\n";
+  return "\n" + summary.FullReport() + extra + "\ncaptures:\n" + FormatCaptureTable(cal.captures);
 }
 
 }  // namespace accelcal

@@ -100,8 +100,12 @@ void CheckLimits(const ProcedureLimits& l, const Calibration& cal, ReportModel* 
            l.max_bias_sigma_counts, false);
   const Eigen::Vector3d rel = cal.uncertainty.scale_counts_per_mps2.cwiseQuotient(cal.model.scale_counts_per_mps2);
   AddCheck(m, "largest scale 1-sigma", "ppm", rel.maxCoeff() * 1e6, l.max_scale_sigma_ppm, false);
-  const double mis = std::max({cal.uncertainty.a_yz_rad, cal.uncertainty.a_zy_rad, cal.uncertainty.a_zx_rad});
-  AddCheck(m, "largest misalignment 1-sigma", "rad", mis, l.max_misalignment_sigma_rad, false);
+  // Held angles (a reduced model) have no 1-sigma: judged are the fitted ones, if any.
+  double mis = kNaN;
+  for (double s : {cal.uncertainty.a_yz_rad, cal.uncertainty.a_zy_rad, cal.uncertainty.a_zx_rad})
+    if (!std::isnan(s)) mis = std::isnan(mis) ? s : std::max(mis, s);
+  if (!std::isnan(mis) || cal.held.empty())
+    AddCheck(m, "largest misalignment 1-sigma", "rad", mis, l.max_misalignment_sigma_rad, false);
 }
 
 std::vector<std::string> IncompleteReasons(const std::optional<SessionGaps>& gaps, const Calibration& cal) {
@@ -173,6 +177,8 @@ ReportModel BuildReportModel(const ReportInputs& in) {
   m.chi2_per_dof = cal.fit.dof > 0 && cal.fit.chi2_per_dof >= 0.0 ? cal.fit.chi2_per_dof : kNaN;
   m.condition_number = cal.fit.condition_number;
   m.warnings = cal.fit.warnings;
+  for (const HeldMark& h : cal.held)
+    m.warnings.push_back(fmt::format("{} held at {} (not fitted): {}", h.name, h.value, h.reason));
   m.residual_rms_mps2 = cal.residual_rms_mps2;
   m.residual_max_abs_mps2 = cal.residual_max_abs_mps2;
 

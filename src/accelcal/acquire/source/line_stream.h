@@ -3,8 +3,9 @@
 //
 // Protocol (README.md, "Sample sources"): one sample per line `t ax ay az [temp_c]`, fields
 // separated by blanks and/or one comma, t in s strictly increasing, raw counts, '#' comments,
-// blank lines, LF or CRLF. Each line goes through detail::SampleLineParser (the recording
-// reader's), so the rules are the same everywhere.
+// blank lines, LF or CRLF; or what a SampleFormat says (columns, a header row, skipped rows, a
+// rate for a stream without time). The lines go through the one sample reader
+// (base/sample_reader.h, the recording reader's), so the rules are the same everywhere.
 //
 // Bad input is never fatal: a malformed line (bad number, wrong field count, t not increasing)
 // is counted and its complaint kept, and the stream goes on. A run of more than max_line_bytes
@@ -18,12 +19,12 @@
 #include <vector>
 
 #include "accelcal/base/capture.h"
+#include "accelcal/base/sample_format.h"
 
 namespace accelcal {
 
-namespace detail {
-class SampleLineParser;
-}
+class SampleReader;
+struct ReadingSummary;
 
 class LineStream {
  public:
@@ -33,8 +34,9 @@ class LineStream {
     std::string last_malformed;  // "line 12, column 5: field 'ax': 'x' is not a number"
   };
 
-  // source_name names the stream in nothing user-visible today but the parser's errors.
-  LineStream(std::string source_name, long max_line_bytes);
+  // source_name names the stream in the reader's summary. `format` must be valid; its
+  // max_line_bytes is replaced by `max_line_bytes` (>= 64).
+  LineStream(std::string source_name, long max_line_bytes, const SampleFormat& format = {});
   ~LineStream();
   LineStream(const LineStream&) = delete;
   LineStream& operator=(const LineStream&) = delete;
@@ -47,22 +49,19 @@ class LineStream {
   void DiscardPartial();
 
   // Lines seen so far (data, comments, malformed), 1-based number of the latest.
-  long line_number() const { return line_number_; }
+  long line_number() const;
+  // What the stream's reading understood so far (columns, rate, repairs).
+  ReadingSummary Summary() const;
 
  private:
-  void ConsumeLine(std::string_view line, std::vector<Sample>* out, FeedResult* result);
-  void AppendPartial(std::string_view bytes, FeedResult* result);
-  void CountOverlong(FeedResult* result);
+  void Collect(size_t before, const std::vector<Sample>& out, FeedResult* result);
 
-  std::unique_ptr<detail::SampleLineParser> parser_;
-  long max_line_bytes_;
-  std::string partial_;    // bytes of the unterminated line so far
-  bool skipping_ = false;  // inside an overlong line: drop bytes up to the next newline
-  long line_number_ = 0;
+  std::unique_ptr<SampleReader> reader_;
+  long malformed_seen_ = 0;  // the reader's malformed count already reported
 };
 
 // A complaint fit for a status line: non-printable bytes (garbage) shown as '?', at most
-// `max_chars` characters.
+// `max_chars` characters (base/text_scan.h's PrintableExcerpt).
 std::string PrintableText(std::string_view text, size_t max_chars = 160);
 
 }  // namespace accelcal

@@ -40,6 +40,10 @@ class SampleSource {
   // The status as of the end of the last Read.
   virtual const SourceStatus& status() const = 0;
 
+  // What the source's line reading understood so far (columns, rate, repaired time stamps), one
+  // line (base/sample_reader.h); empty for a source that reads no lines (the simulator).
+  virtual std::string DescribeReading() const { return {}; }
+
   // The simulated bench's controls (place the sensor); nullptr for every real source, since
   // only the simulator can move the sensor. The pointer is owned by the source.
   virtual BenchControl* bench() { return nullptr; }

@@ -17,6 +17,7 @@ std::string SourceOptions::Validate() const {
                        reconnect_initial_s, reconnect_max_s);
   if (max_line_bytes < 64)
     return fmt::format("max_line_bytes = {} is too small (at least 64)", max_line_bytes);
+  if (std::string e = format.Validate(); !e.empty()) return "format: " + e;
   if (stdin_fd < 0) return fmt::format("stdin_fd = {} is not a file descriptor", stdin_fd);
   return sim.Validate();
 }

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "accelcal/acquire/sim/scenario.h"
+#include "accelcal/base/sample_format.h"
 #include "accelcal/acquire/source/sim_options.h"
 
 namespace accelcal {
@@ -24,6 +25,10 @@ struct SourceOptions {
   // A line longer than this with no end of line is garbage (binary noise, a wrong baud rate):
   // counted as one malformed line and skipped up to the next newline, bytes. >= 64.
   long max_line_bytes = 256;
+  // Every source but sim: how its lines are read (columns, a header row, skipped rows, a rate
+  // for a stream without time, the readings' unit); the default is the protocol's
+  // `t ax ay az [temp_c]`. Its own max_line_bytes is replaced by the one above.
+  SampleFormat format;
   // file: true => deliver samples paced by their t (as they were recorded); false => as fast
   // as they can be read.
   bool realtime = false;

@@ -8,6 +8,7 @@
 #include <cstring>
 
 #include "accelcal/acquire/source/wall_clock.h"
+#include "accelcal/base/sample_reader.h"
 
 namespace accelcal {
 namespace {
@@ -33,7 +34,7 @@ StreamSource::StreamSource(std::unique_ptr<ByteLink> link, const SourceOptions& 
                            Pacing pacing)
     : link_(std::move(link)),
       pacing_(pacing),
-      lines_(link_->Describe(), options.max_line_bytes),
+      lines_(link_->Describe(), options.max_line_bytes, options.format),
       tracker_(options.gap_factor, options.dead_after_s, WallNowS()),
       backoff_(options.reconnect_initial_s, options.reconnect_max_s),
       pace_origin_wall_s_(kNaN),
@@ -41,6 +42,8 @@ StreamSource::StreamSource(std::unique_ptr<ByteLink> link, const SourceOptions& 
       buffer_(kReadChunkBytes) {}
 
 StreamSource::~StreamSource() { link_->Close(); }
+
+std::string StreamSource::DescribeReading() const { return lines_.Summary().Describe(); }
 
 ReadResult StreamSource::Read(double timeout_s, std::vector<Sample>* out) {
   ReadResult result;

@@ -30,13 +30,14 @@ class StreamSource final : public SampleSource {
   };
 
   // Takes ownership of `link`; reads only options' stream settings (dead_after_s, gap_factor,
-  // reconnect_*, max_line_bytes).
+  // reconnect_*, max_line_bytes, format).
   StreamSource(std::unique_ptr<ByteLink> link, const SourceOptions& options, Pacing pacing);
   ~StreamSource() override;
 
   std::string Describe() const override { return link_->Describe(); }
   ReadResult Read(double timeout_s, std::vector<Sample>* out) override;
   const SourceStatus& status() const override { return tracker_.status(); }
+  std::string DescribeReading() const override;
 
  private:
   void Fill(double deadline_s, ReadResult* result);

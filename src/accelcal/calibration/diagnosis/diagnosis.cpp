@@ -291,6 +291,9 @@ DiagnosisReport Diagnose(const std::vector<FitCapture>& captures, const FitOptio
   report.noise_rms_mps2 = NoiseRms(report.base);
   report.stages.push_back(report.base);
   const EffectContext ctx = MakeEffectContext(captures, fit_options.gravity.gravity_mps2);
+  // The extended fits hold what the base fit held: a reduced model stays reduced.
+  FitOptions held_options = fit_options;
+  for (const HeldParameter& h : report.base.held) held_options.solver.held.push_back(h.index);
   report.context = ctx;
   std::vector<const Effect*> adopted;
   while (true) {
@@ -309,7 +312,7 @@ DiagnosisReport Diagnose(const std::vector<FitCapture>& captures, const FitOptio
       break;
     }
     std::vector<Trial> trials;
-    const int best = RunRound(adopted, report.final_fit, captures, fit_options, ctx, options, &round, &trials);
+    const int best = RunRound(adopted, report.final_fit, captures, held_options, ctx, options, &round, &trials);
     report.rounds.push_back(round);
     if (best < 0) break;
     adopted.push_back(trials[best].effect);

@@ -1,11 +1,13 @@
 #include "accelcal/calibration/fit/calibration_fit.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <Eigen/Core>
 #include <fmt/core.h>
 
 #include "accelcal/base/linear_algebra.h"
+#include "accelcal/calibration/fit/determinacy.h"
 #include "accelcal/calibration/fit/initial_guess.h"
 #include "accelcal/calibration/fit/residual_model.h"
 
@@ -26,44 +28,81 @@ std::string CheckCapture(const FitCapture& c) {
   return {};
 }
 
-// The captures cannot separate some parameters when the weighted Jacobian at the initial guess
-// is (numerically) rank deficient: its null direction says which ones. Empty when it is not.
-std::string CheckSeparable(const ResidualModel& model, const std::vector<FitCapture>& captures,
-                           const Eigen::VectorXd& p, double gravity_mps2) {
-  const int np = model.NumParameters();
-  Eigen::MatrixXd jac(captures.size(), np);
-  Eigen::VectorXd grad(np);
-  for (size_t i = 0; i < captures.size(); ++i) {
-    model.Residual(p, captures[i], gravity_mps2, &grad, nullptr);
-    for (int j = 0; j < np; ++j) jac(i, j) = grad(j) * model.ParameterScale(p, j);
+// Which misalignment angle to hold next: the one with the largest part in the undetermined
+// combinations (the norm of its row in their basis); -1 when none has a real part (then a bias
+// or scale is undetermined, and nothing can be held).
+int NextToHold(const Determinacy& d, const std::vector<int>& held) {
+  int best = -1;
+  double best_weight = 0.3;  // below it the combination is mostly bias and scale
+  for (int j = kMisYZ; j <= kMisZX; ++j) {
+    if (std::find(held.begin(), held.end(), j) != held.end()) continue;
+    double w2 = 0.0;
+    for (const UndeterminedCombination& u : d.undetermined) w2 += u.direction(j) * u.direction(j);
+    if (std::sqrt(w2) > best_weight) {
+      best_weight = std::sqrt(w2);
+      best = j;
+    }
   }
-  for (int j = 0; j < np; ++j) {
-    const double norm = jac.col(j).norm();
-    if (!(norm > 0.0)) return fmt::format("no capture is sensitive to {}", model.ParameterLabel(j));
-    jac.col(j) /= norm;
+  return best;
+}
+
+std::string UndeterminedText(const ResidualModel& model, const UndeterminedCombination& u) {
+  return std::isfinite(u.sigma_scaled)
+             ? fmt::format("{} (1-sigma {:.3g} times its scale from the captures' noise)",
+                           DescribeCombination(model, u.direction), u.sigma_scaled)
+             : DescribeCombination(model, u.direction);
+}
+
+// The reduced model: the misalignment angles held (at the initial guess's 0) so that the rest
+// is determined, with their reasons; or the reason the set cannot be calibrated.
+struct HeldDecision {
+  std::vector<HeldParameter> held;
+  std::string refusal;
+};
+
+HeldDecision DecideHeld(const ResidualModel& model, const std::vector<FitCapture>& captures,
+                        const Eigen::VectorXd& p, const FitOptions& options) {
+  HeldDecision out;
+  DeterminacyOptions judge;
+  judge.gravity_mps2 = options.gravity.gravity_mps2;
+  judge.max_sigma_scaled = options.max_sigma_scaled;
+  std::vector<std::string> combinations;
+  for (;;) {
+    const Determinacy d = JudgeDeterminacy(model, captures, p, judge);
+    if (d.determined()) break;
+    const int j = options.allow_held ? NextToHold(d, judge.held) : -1;
+    if (j < 0) {
+      out.refusal = fmt::format(
+          "the captures cannot determine {}: a combination of them changes no capture's "
+          "magnitude beyond its noise; add poses or mountings that tell them apart, e.g. "
+          "tilted poses whose axis signs differ, and poses on both sides of each axis",
+          UndeterminedText(model, d.undetermined.front()));
+      return out;
+    }
+    combinations.push_back(UndeterminedText(model, d.undetermined.front()));
+    judge.held.push_back(j);
+    out.held.push_back({j, p(j), {}});
   }
-  const SingularValueDecomposition svd = DecomposeSvd(jac);
-  const Eigen::VectorXd& sv = svd.values;
-  // Well-designed sets (six faces, three tilted poses, turntable runs) sit near 0.2; a set whose
-  // tilted poses repeat an axis-sign pattern falls below 1e-3: treat that as not determinable.
-  constexpr double kRankTolerance = 1e-3;
-  if (sv(np - 1) > kRankTolerance * sv(0)) return {};
-  const Eigen::VectorXd null = svd.v.col(np - 1);
-  std::string names;
-  for (int j = 0; j < np; ++j)
-    if (std::fabs(null(j)) > 0.1) names += (names.empty() ? "" : ", ") + model.ParameterLabel(j);
-  return fmt::format("the captures cannot separate {} (a combination of them changes no "
-                     "capture's magnitude); add poses or mountings that tell them apart, e.g. "
-                     "tilted poses whose axis signs differ",
-                     names);
+  if (out.held.empty()) return out;
+  const std::string advice =
+      out.held.size() == 3
+          ? "the poses say nothing of the misalignment (a magnitude fit sees it only in poses "
+            "tilted between the axes); add three tilted poses with independent axis-sign "
+            "patterns, e.g. up = (1,1,1), (1,1,-1), (1,-1,1), to determine them"
+          : "the captures cannot separate " + combinations.front() +
+                "; add tilted poses whose axis-sign patterns (the signs of xy, xz, yz) differ "
+                "from those taken";
+  for (HeldParameter& h : out.held)
+    h.reason = fmt::format("held at {} (the axes taken as orthogonal): {}", h.value, advice);
+  return out;
 }
 
 }  // namespace
 
 std::string FitOptions::Validate() const {
   if (std::string e = gravity.Validate(); !e.empty()) return "gravity: " + e;
-  if (min_captures < kNumBaseParameters)
-    return fmt::format("min_captures must be at least {}", int(kNumBaseParameters));
+  if (min_captures < 6) return "min_captures must be at least 6";
+  if (!(max_sigma_scaled > 0.0)) return "max_sigma_scaled must be positive";
   if (!(min_planarity_ratio >= 0.0 && min_planarity_ratio < 1.0))
     return "min_planarity_ratio must be in [0, 1)";
   return solver.Validate();
@@ -72,7 +111,8 @@ std::string FitOptions::Validate() const {
 std::string CheckDeterminable(const std::vector<FitCapture>& captures, const FitOptions& options) {
   const int n = static_cast<int>(captures.size());
   if (n < options.min_captures)
-    return fmt::format("{} usable captures; the nine parameters need at least {}", n,
+    return fmt::format("{} usable captures; a calibration needs at least {} (six give bias and "
+                       "scale, nine in general position all nine parameters)", n,
                        options.min_captures);
   Eigen::Vector3d centre = Eigen::Vector3d::Zero();
   for (const FitCapture& c : captures) centre += c.mean_counts / n;
@@ -119,12 +159,16 @@ FitSummary FitCalibration(const std::vector<FitCapture>& captures, const FitOpti
   solver.gravity_mps2 = options.gravity.gravity_mps2;
   const Eigen::VectorXd initial = InitialGuess(captures, solver.gravity_mps2, nullptr);
   const BaseResidualModel model;
-  if (std::string e = CheckSeparable(model, captures, initial, solver.gravity_mps2); !e.empty()) {
+  const HeldDecision decision = DecideHeld(model, captures, initial, options);
+  if (!decision.refusal.empty()) {
     refused.termination = FitTermination::kUnderdetermined;
-    refused.message = e;
+    refused.message = decision.refusal;
     return refused;
   }
+  solver.held.clear();
+  for (const HeldParameter& h : decision.held) solver.held.push_back(h.index);
   FitSummary s = SolveWeightedLeastSquares(model, captures, initial, solver);
+  s.held = decision.held;
   if (s.IsUsable()) {
     if (std::string e = s.Model().Validate(); !e.empty()) {
       s.termination = FitTermination::kNumericalFailure;

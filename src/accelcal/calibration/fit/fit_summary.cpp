@@ -18,6 +18,14 @@ std::string_view FitTerminationToString(FitTermination t) {
   return "?";
 }
 
+bool FitSummary::IsHeld(int i) const { return FindHeld(i) != nullptr; }
+
+const HeldParameter* FitSummary::FindHeld(int i) const {
+  for (const HeldParameter& h : held)
+    if (h.index == i) return &h;
+  return nullptr;
+}
+
 SensorModel FitSummary::Model() const {
   if (parameters.size() < kNumBaseParameters) return SensorModel{};
   return SensorModel::FromVector(parameters.head(kNumBaseParameters));
@@ -26,8 +34,9 @@ SensorModel FitSummary::Model() const {
 std::string FitSummary::BriefReport() const {
   if (!IsUsable()) return fmt::format("fit {}: {}", FitTerminationToString(termination), message);
   return fmt::format("fit converged: {} captures, residual RMS {:.4f} m/s^2, chi2/dof {:.2f}, "
-                     "condition {:.3g}{}",
+                     "condition {:.3g}{}{}",
                      num_captures, residual_rms_mps2, Chi2PerDof(), condition_number,
+                     held.empty() ? "" : fmt::format(", {} held", held.size()),
                      warnings.empty() ? "" : fmt::format(", {} warning(s)", warnings.size()));
 }
 
@@ -37,9 +46,15 @@ std::string FitSummary::FullReport() const {
   out += fmt::format("gravity used: {:.6f} m/s^2\n\nparameters (1-sigma):\n", gravity_mps2);
   for (int i = 0; i < parameters.size(); ++i) {
     const std::string unit = i < kNumBaseParameters ? std::string(ParameterUnit(i)) : "";
+    if (IsHeld(i)) {
+      out += fmt::format("  {:<12} {:>14.6f}    held        {}\n", parameter_labels[i], parameters(i), unit);
+      continue;
+    }
     out += fmt::format("  {:<12} {:>14.6f} +- {:<11.6f} {}\n", parameter_labels[i], parameters(i),
                        uncertainty(i), unit);
   }
+  for (const HeldParameter& h : held)
+    out += fmt::format("held: {} = {} (not fitted): {}\n", parameter_labels[h.index], h.value, h.reason);
   out += fmt::format("residuals: RMS {:.5f} m/s^2, max |r| {:.5f} m/s^2, chi2 {:.2f} on {} dof\n",
                      residual_rms_mps2, residual_max_abs_mps2, chi2, dof);
   if (uncertainty_scale > 1.0)

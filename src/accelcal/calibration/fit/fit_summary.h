@@ -39,6 +39,13 @@ struct ParameterCorrelation {
   double rho = 0.0;  // correlation coefficient, -1..1
 };
 
+// A parameter the fit did not determine and held at a fixed value instead (a reduced model).
+struct HeldParameter {
+  int index = -1;       // into parameters
+  double value = 0.0;   // held at, in the parameter's unit
+  std::string reason;   // in words: why, and what to capture to determine it
+};
+
 struct FitSummary {
   FitTermination termination = FitTermination::kNotRun;
   std::string message;                 // one line: what happened, or why it failed
@@ -46,13 +53,14 @@ struct FitSummary {
 
   std::vector<std::string> parameter_labels;
   Eigen::VectorXd parameters;          // estimate, units as in ParameterUnit()
-  Eigen::VectorXd uncertainty;         // 1-sigma, same units
+  Eigen::VectorXd uncertainty;         // 1-sigma, same units; NaN for a held parameter
   Eigen::MatrixXd covariance;
   double uncertainty_scale = 1.0;      // sqrt(max(1, chi2/dof)) applied to the covariance's sigmas
+  std::vector<HeldParameter> held;     // not fitted (empty: all were)
 
   std::vector<CaptureResidual> residuals;  // one per capture used, in input order
   int num_captures = 0;
-  int dof = -1;                        // captures - parameters
+  int dof = -1;                        // captures - fitted parameters
   double chi2 = -1.0;                  // sum (r/sigma)^2
   double residual_rms_mps2 = -1.0;
   double residual_max_abs_mps2 = -1.0;
@@ -65,6 +73,10 @@ struct FitSummary {
   int gauss_newton_iterations = -1;
 
   bool IsUsable() const { return termination == FitTermination::kConverged; }
+  // Parameter i was held, not fitted.
+  bool IsHeld(int i) const;
+  // The held parameter i; nullptr when it was fitted.
+  const HeldParameter* FindHeld(int i) const;
   double Chi2PerDof() const { return dof > 0 ? chi2 / dof : -1.0; }
   // The nine base parameters as a model (valid when IsUsable()).
   SensorModel Model() const;

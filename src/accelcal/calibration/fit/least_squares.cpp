@@ -1,10 +1,10 @@
 #include "accelcal/calibration/fit/least_squares.h"
 #include "accelcal/base/linear_algebra.h"
 
+#include <algorithm>
 #include <cmath>
 #include <exception>
 
-#include <Eigen/Cholesky>
 #include <Eigen/QR>
 #include <fmt/core.h>
 #include <nlopt.hpp>
@@ -13,33 +13,54 @@ namespace accelcal {
 namespace {
 
 // Everything the objective needs; p = p0 + scales .* x, x being NLopt's variables.
+// Only the free parameters are variables: p = p0 + sum_k scales(free_k) x_k e_(free_k).
 struct Problem {
   const ResidualModel* model;  // borrowed; outlives the Problem
   const std::vector<FitCapture>* captures;  // borrowed
   double gravity_mps2;
   Eigen::VectorXd p0;
-  Eigen::VectorXd scales;
+  Eigen::VectorXd scales;      // of every parameter
   Eigen::VectorXd sigmas;
+  std::vector<int> free;       // indices of the fitted parameters
   int evaluations = 0;
 
+  int NumFree() const { return static_cast<int>(free.size()); }
   Eigen::VectorXd ToParameters(const double* x) const {
-    return p0 + scales.cwiseProduct(Eigen::Map<const Eigen::VectorXd>(x, p0.size()));
+    Eigen::VectorXd p = p0;
+    for (int k = 0; k < NumFree(); ++k) p(free[k]) += scales(free[k]) * x[k];
+    return p;
+  }
+  // A step in the scaled free variables, as a change of p.
+  Eigen::VectorXd Step(const Eigen::VectorXd& x) const {
+    Eigen::VectorXd d = Eigen::VectorXd::Zero(p0.size());
+    for (int k = 0; k < NumFree(); ++k) d(free[k]) = scales(free[k]) * x(k);
+    return d;
   }
 };
 
-// Weighted residuals rho_i = r_i / sigma_i and their Jacobian in the scaled variables.
+// Weighted residuals rho_i = r_i / sigma_i and their Jacobian in the scaled free variables.
 void Evaluate(const Problem& pr, const Eigen::VectorXd& p, Eigen::VectorXd* rho, Eigen::MatrixXd* jac) {
   const int n = static_cast<int>(pr.captures->size());
   const int np = static_cast<int>(p.size());
   rho->resize(n);
-  if (jac != nullptr) jac->resize(n, np);
+  if (jac != nullptr) jac->resize(n, pr.NumFree());
   Eigen::VectorXd grad(np);
   for (int i = 0; i < n; ++i) {
     const double r = pr.model->Residual(p, (*pr.captures)[i], pr.gravity_mps2,
                                         jac != nullptr ? &grad : nullptr, nullptr);
     (*rho)(i) = r / pr.sigmas(i);
-    if (jac != nullptr) jac->row(i) = grad.cwiseProduct(pr.scales).transpose() / pr.sigmas(i);
+    if (jac != nullptr) {
+      for (int k = 0; k < pr.NumFree(); ++k)
+        (*jac)(i, k) = grad(pr.free[k]) * pr.scales(pr.free[k]) / pr.sigmas(i);
+    }
   }
+}
+
+double Cost(const Problem& pr, const Eigen::VectorXd& p) {
+  Eigen::VectorXd rho;
+  Evaluate(pr, p, &rho, nullptr);
+  const double cost = rho.squaredNorm();
+  return std::isfinite(cost) ? cost : INFINITY;
 }
 
 double Objective(unsigned n, const double* x, double* grad, void* data) {
@@ -77,9 +98,9 @@ std::string NloptResultName(nlopt::result r) {
 // every negative result, including roundoff_limited, which usually still leaves a good x: we
 // keep x either way and let the Gauss-Newton polish judge convergence.
 Eigen::VectorXd RunNlopt(Problem& pr, int max_evaluations, std::string* result_name) {
-  const int np = static_cast<int>(pr.p0.size());
+  const int np = pr.NumFree();
   std::vector<double> x(np, 0.0);
-  nlopt::opt opt(nlopt::LD_SLSQP, np);
+  nlopt::opt opt(nlopt::LD_SLSQP, static_cast<unsigned>(np));
   opt.set_min_objective(Objective, &pr);
   // Loose enough to end on a tolerance rather than in round-off: the polish finishes the job.
   opt.set_ftol_rel(1e-10);
@@ -94,6 +115,27 @@ Eigen::VectorXd RunNlopt(Problem& pr, int max_evaluations, std::string* result_n
     *result_name = std::string("failure (") + e.what() + ")";
   }
   return pr.ToParameters(x.data());
+}
+
+// Empty when the Jacobian in the scaled free variables has full numerical rank; else which
+// combination the captures cannot separate (determinacy.h's relative criterion, on the
+// column-equilibrated matrix so that units do not matter).
+std::string SingularStep(const Problem& pr, const Eigen::MatrixXd& jac) {
+  const int nf = static_cast<int>(jac.cols());
+  if (nf == 0) return {};
+  Eigen::MatrixXd equilibrated = Eigen::MatrixXd::Zero(std::max<Eigen::Index>(jac.rows(), nf), nf);
+  equilibrated.topRows(jac.rows()) = jac;
+  for (int k = 0; k < nf; ++k) {
+    const double norm = equilibrated.col(k).norm();
+    if (!(norm > 0.0))
+      return fmt::format("no capture is sensitive to {}", pr.model->ParameterLabel(pr.free[k]));
+    equilibrated.col(k) /= norm;
+  }
+  const SingularValueDecomposition svd = DecomposeSvd(equilibrated);
+  if (svd.values(nf - 1) > DeterminacyOptions{}.min_relative_singular_value * svd.values(0)) return {};
+  Eigen::VectorXd direction = Eigen::VectorXd::Zero(pr.p0.size());
+  for (int k = 0; k < nf; ++k) direction(pr.free[k]) = svd.v(k, nf - 1);
+  return "the captures cannot separate " + DescribeCombination(*pr.model, direction.normalized());
 }
 
 struct PolishResult {
@@ -115,20 +157,19 @@ PolishResult Polish(const Problem& pr, Eigen::VectorXd p, const LeastSquaresOpti
       out.p = p;
       return out;
     }
-    Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(jac);
-    if (qr.rank() < jac.cols()) {
-      out.failure = "the Jacobian is rank deficient: the captures cannot separate the parameters";
+    if (std::string why = SingularStep(pr, jac); !why.empty()) {
+      out.failure = why;
       out.p = p;
       return out;
     }
-    const Eigen::VectorXd step = qr.solve(-rho);
+    const Eigen::VectorXd step = jac.colPivHouseholderQr().solve(-rho);
     const double cost = rho.squaredNorm();
     double alpha = 1.0;
     Eigen::VectorXd candidate;
     Eigen::VectorXd rho_new;
     bool decreased = false;
     for (int halving = 0; halving < 40; ++halving, alpha *= 0.5) {
-      candidate = p + pr.scales.cwiseProduct(alpha * step);
+      candidate = p + pr.Step(alpha * step);
       Evaluate(pr, candidate, &rho_new, nullptr);
       if (rho_new.allFinite() && rho_new.squaredNorm() <= cost) {
         decreased = true;
@@ -160,7 +201,8 @@ PolishResult Polish(const Problem& pr, Eigen::VectorXd p, const LeastSquaresOpti
   return out;
 }
 
-// Covariance, condition number and correlations at the solution.
+// Covariance, condition number and correlations at the solution (free parameters only; held
+// ones get a NaN uncertainty and zero rows and columns).
 void FillStatistics(const Problem& pr, const Eigen::VectorXd& p, const LeastSquaresOptions& options,
                     FitSummary* s) {
   Eigen::VectorXd rho;
@@ -168,25 +210,38 @@ void FillStatistics(const Problem& pr, const Eigen::VectorXd& p, const LeastSqua
   Evaluate(pr, p, &rho, &jac);
   const int n = static_cast<int>(rho.size());
   const int np = static_cast<int>(p.size());
+  const int nf = pr.NumFree();
   s->chi2 = rho.squaredNorm();
-  s->dof = n - np;
+  s->dof = n - nf;
   s->uncertainty_scale = s->dof > 0 ? std::sqrt(std::max(1.0, s->chi2 / s->dof)) : 1.0;
 
-  const Eigen::MatrixXd info_scaled = jac.transpose() * jac;
-  const Eigen::MatrixXd cov_scaled = info_scaled.ldlt().solve(Eigen::MatrixXd::Identity(np, np));
-  const Eigen::MatrixXd scale = pr.scales.asDiagonal();
-  s->covariance = scale * cov_scaled * scale * (s->uncertainty_scale * s->uncertainty_scale);
-  s->uncertainty = s->covariance.diagonal().cwiseSqrt();
+  // (J^T J)^-1 = V S^-2 V^T, from the SVD of J: better conditioned than the normal equations.
+  Eigen::MatrixXd padded = Eigen::MatrixXd::Zero(std::max(n, nf), nf);
+  padded.topRows(n) = jac;
+  const SingularValueDecomposition svd = DecomposeSvd(padded);
+  Eigen::VectorXd inv_sq(nf);
+  for (int k = 0; k < nf; ++k)
+    inv_sq(k) = svd.values(k) > 0.0 ? 1.0 / (svd.values(k) * svd.values(k)) : INFINITY;
+  const Eigen::MatrixXd cov_free = svd.v * inv_sq.asDiagonal() * svd.v.transpose();
+  s->covariance = Eigen::MatrixXd::Zero(np, np);
+  const double scale2 = s->uncertainty_scale * s->uncertainty_scale;
+  for (int a = 0; a < nf; ++a)
+    for (int b = 0; b < nf; ++b)
+      s->covariance(pr.free[a], pr.free[b]) =
+          pr.scales(pr.free[a]) * cov_free(a, b) * pr.scales(pr.free[b]) * scale2;
+  s->uncertainty = Eigen::VectorXd::Constant(np, kNaN);
+  for (int k = 0; k < nf; ++k) s->uncertainty(pr.free[k]) = std::sqrt(s->covariance(pr.free[k], pr.free[k]));
 
-  Eigen::MatrixXd equilibrated = jac;
-  for (int j = 0; j < np; ++j) equilibrated.col(j).normalize();
+  Eigen::MatrixXd equilibrated = padded;
+  for (int k = 0; k < nf; ++k) equilibrated.col(k).normalize();
   const Eigen::VectorXd sv = SingularValues(equilibrated);
-  s->condition_number = sv(0) / sv(np - 1);
+  s->condition_number = nf > 0 ? sv(0) / sv(nf - 1) : 1.0;
 
-  for (int a = 0; a < np; ++a) {
-    for (int b = a + 1; b < np; ++b) {
-      const double rho_ab = s->covariance(a, b) / (s->uncertainty(a) * s->uncertainty(b));
-      if (std::fabs(rho_ab) > std::fabs(s->most_correlated.rho)) s->most_correlated = {a, b, rho_ab};
+  for (int a = 0; a < nf; ++a) {
+    for (int b = a + 1; b < nf; ++b) {
+      const int i = pr.free[a], j = pr.free[b];
+      const double rho_ab = s->covariance(i, j) / (s->uncertainty(i) * s->uncertainty(j));
+      if (std::fabs(rho_ab) > std::fabs(s->most_correlated.rho)) s->most_correlated = {i, j, rho_ab};
     }
   }
 
@@ -253,8 +308,20 @@ FitSummary SolveWeightedLeastSquares(const ResidualModel& model,
     return s;
   }
 
-  Problem pr{&model, &captures, options.gravity_mps2, initial, Eigen::VectorXd(initial.size()), {}};
-  for (int i = 0; i < initial.size(); ++i) pr.scales(i) = model.ParameterScale(initial, i);
+  Problem pr{&model, &captures, options.gravity_mps2, initial, Eigen::VectorXd(initial.size()), {}, {}};
+  for (int i = 0; i < initial.size(); ++i) {
+    pr.scales(i) = model.ParameterScale(initial, i);
+    if (std::find(options.held.begin(), options.held.end(), i) == options.held.end()) {
+      pr.free.push_back(i);
+    } else {
+      s.held.push_back({i, initial(i), {}});
+    }
+  }
+  if (static_cast<int>(s.held.size()) != static_cast<int>(options.held.size())) {
+    s.termination = FitTermination::kInvalidInput;
+    s.message = "held parameters must be distinct indices of the model's parameters";
+    return s;
+  }
   pr.sigmas = ResidualSigmas(model, captures, initial, options.gravity_mps2);
   if (!pr.sigmas.allFinite() || (pr.sigmas.array() <= 0.0).any() || !pr.scales.allFinite()) {
     s.termination = FitTermination::kNumericalFailure;
@@ -262,8 +329,13 @@ FitSummary SolveWeightedLeastSquares(const ResidualModel& model,
     return s;
   }
 
-  const Eigen::VectorXd p_nlopt = RunNlopt(pr, options.max_evaluations, &s.optimizer_result);
+  Eigen::VectorXd p_nlopt = RunNlopt(pr, options.max_evaluations, &s.optimizer_result);
   s.optimizer_evaluations = pr.evaluations;
+  // SLSQP can run off (to 1e40 from a poor start): polish from whichever is better.
+  if (!(Cost(pr, p_nlopt) <= Cost(pr, initial))) {
+    p_nlopt = initial;
+    s.optimizer_result += " (worse than the initial guess: not used)";
+  }
   // Re-anchor weights and variable scales at NLopt's answer for the polish.
   pr.p0 = p_nlopt;
   for (int i = 0; i < p_nlopt.size(); ++i) pr.scales(i) = model.ParameterScale(p_nlopt, i);
@@ -285,7 +357,9 @@ FitSummary SolveWeightedLeastSquares(const ResidualModel& model,
     return s;
   }
   FillStatistics(pr, polished.p, options, &s);
-  if (!s.uncertainty.allFinite()) {
+  bool finite = true;
+  for (int i : pr.free) finite &= std::isfinite(s.uncertainty(i));
+  if (!finite) {
     s.termination = FitTermination::kNumericalFailure;
     s.message = "the covariance is singular: some parameter is not determined by the captures";
     return s;

@@ -7,13 +7,25 @@
 // the NLopt stage and at NLopt's answer for the polish, then held fixed (it depends on the
 // parameters only through the scales, weakly).
 //
-// Uncertainties: covariance = (J^T W J)^-1, its sigmas multiplied by sqrt(max(1, chi2/dof)):
-// when the residuals exceed what the noise explains, the noise-only covariance would claim
-// more than the data support.
+// Uncertainties: covariance = (J^T W J)^-1 (from the SVD of the weighted Jacobian), its sigmas
+// multiplied by sqrt(max(1, chi2/dof)): when the residuals exceed what the noise explains, the
+// noise-only covariance would claim more than the data support.
+//
+// Held parameters (options.held): a reduced model. They keep their value from `initial`, are not
+// fitted, take no degree of freedom, and have no uncertainty (NaN in the summary; their rows and
+// columns of the covariance are zero). An extended model keeps the base parameters' indices, so
+// the diagnosis holds what the base fit held.
+//
+// Robustness: NLopt's answer is polished only when it is better than the initial guess (SLSQP
+// can run off to 1e40 from a poor start); otherwise the polish starts from the guess. The
+// polish refuses a numerically singular step (determinacy.h's relative criterion), naming the
+// combination the captures do not determine.
 #pragma once
 
 #include <string>
 #include <vector>
+
+#include "accelcal/calibration/fit/determinacy.h"
 
 #include <Eigen/Core>
 
@@ -34,6 +46,9 @@ struct LeastSquaresOptions {
   double condition_warning = 100.0;
   // Above this |rho| between two parameters a warning is issued.
   double correlation_warning = 0.995;
+  // Parameters held at their initial value (indices into the model's parameter vector, each at
+  // most once): not fitted. Empty: all are fitted.
+  std::vector<int> held;
 
   std::string Validate() const;
 };
