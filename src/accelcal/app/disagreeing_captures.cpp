@@ -80,12 +80,19 @@ void Refuse(const LeaveOneOutResult& loo, DiagnosisReport* d) {
                         d->ambiguous[0], d->ambiguous[1])
           : std::string("no effect of the library explains them and no capture alone does");
   d->base.termination = FitTermination::kInvalidInput;
-  d->base.message = fmt::format(
-      "the captures disagree with each other: chi2/dof {:.4g} (residual RMS {:.4g} m/s^2, {:.0f} "
-      "times what their noise explains) is not a calibration; {}; predicted worst from the "
-      "others: {} (check their stated radius and speed, or their pose){}",
-      f.Chi2PerDof(), f.residual_rms_mps2, std::sqrt(f.Chi2PerDof()), why, fmt::join(worst, ", "),
-      d->next_captures.empty() ? std::string() : "; next: " + d->next_captures);
+  const std::string next = d->next_captures.empty() ? std::string() : "; next: " + d->next_captures;
+  // Two effects that explain the residuals alike are the cause, not captures that disagree.
+  if (d->ambiguous.size() == 2)
+    d->base.message = fmt::format(
+        "chi2/dof {:.4g} (residual RMS {:.4g} m/s^2, {:.0f} times what the captures' noise "
+        "explains) is not a calibration: {}, and these captures cannot tell them apart{}",
+        f.Chi2PerDof(), f.residual_rms_mps2, std::sqrt(f.Chi2PerDof()), why, next);
+  else
+    d->base.message = fmt::format(
+        "the captures disagree with each other: chi2/dof {:.4g} (residual RMS {:.4g} m/s^2, {:.0f} "
+        "times what their noise explains) is not a calibration; {}; predicted worst from the "
+        "others: {} (check their stated radius and speed, or their pose){}",
+        f.Chi2PerDof(), f.residual_rms_mps2, std::sqrt(f.Chi2PerDof()), why, fmt::join(worst, ", "), next);
   d->final_fit = d->base;
   d->adopted.clear();
   d->stages.clear();

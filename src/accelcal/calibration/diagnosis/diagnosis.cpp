@@ -149,15 +149,27 @@ std::string NineParameterDifference(const Trial& a, const Trial& b) {
   return fmt::format("their {} differ by {:.1f} sigma", ParameterName(worst), worst_sigmas);
 }
 
-// Whether the captures tell `best` (ranked first by ScaledBic) from `other`: not when the BIC
-// difference is "not worth more than a bare mention" (below 2 on the Kass & Raftery scale), nor
-// when it is short of "strong" (below 6) while the left-out captures are predicted better by
-// the other (the two criteria disagree).
-bool Indistinguishable(const Trial& best, const Trial& other, int n, double scale) {
+// Which of two candidates the captures favour when neither is decisively better by BIC: `best`
+// is ranked first by ScaledBic, `other` is within 6 of it (short of "strong" on the Kass &
+// Raftery scale). +1: best; -1: other; 0: the captures cannot tell them apart.
+// - BIC within 2 ("not worth more than a bare mention"): cannot tell.
+// - BIC within 2..6: the prediction of the captures each did not see decides (the smaller
+//   leave-one-out RMS), as the issue asks of an adopted effect: a drift in time and a
+//   temperature warm-up can fit the captures alike, but the right one predicts the first and
+//   last poses from the others. Without leave-one-out, BIC decides.
+int PreferredOf(const Trial& best, const Trial& other, int n, double scale) {
   const double delta = ScaledBic(other, n, scale) - ScaledBic(best, n, scale);
-  if (delta < 2.0) return true;
-  return delta < 6.0 && other.score.loo_rms_mps2 >= 0.0 && best.score.loo_rms_mps2 >= 0.0 &&
-         other.score.loo_rms_mps2 < best.score.loo_rms_mps2;
+  if (delta < 2.0) return 0;
+  if (delta >= 6.0 || other.score.loo_rms_mps2 < 0.0 || best.score.loo_rms_mps2 < 0.0) return +1;
+  return other.score.loo_rms_mps2 < best.score.loo_rms_mps2 ? -1 : +1;
+}
+
+// Why `loser` is not adopted: `winner` predicts the left-out captures better (PreferredOf).
+std::string PredictionVerdict(const Trial& winner, const Trial& loser) {
+  return fmt::format("{} fits these captures about as well, but {} predicts each capture from the "
+                     "others better (leave-one-out RMS {:.5f} against {:.5f} m/s^2)",
+                     loser.score.effect, winner.score.effect, winner.score.loo_rms_mps2,
+                     loser.score.loo_rms_mps2);
 }
 
 // The effect's own parameters in a fit of `model` (its index among the model's effects).
@@ -191,9 +203,9 @@ std::string WhyNotAdopted(const Trial& t, const std::vector<const Effect*>& adop
 }
 
 // Runs one round: scores every candidate and returns the index of the one to adopt (the best
-// by ScaledBic among those that pass WhyNotAdopted, unless another that passes is
-// Indistinguishable from it and implies a different calibration: then the captures cannot tell
-// the two apart), or -1.
+// by ScaledBic among those that pass WhyNotAdopted; when another that passes is within 6 of it
+// and implies a different calibration, PreferredOf decides between them, and when it cannot, the
+// captures cannot tell the two apart), or -1.
 int RunRound(const std::vector<const Effect*>& adopted, const FitSummary& current,
              const std::vector<FitCapture>& captures, const FitOptions& fit_options,
              const EffectContext& ctx, const DiagnosisOptions& options, DiagnosisRound* round,
@@ -221,17 +233,26 @@ int RunRound(const std::vector<const Effect*>& adopted, const FitSummary& curren
   int chosen = passing.empty() ? -1 : passing.front();
   std::string tie;
   for (size_t k = 1; chosen >= 0 && k < passing.size(); ++k) {
-    const Trial& best = (*trials)[static_cast<size_t>(chosen)];
+    Trial& best = (*trials)[static_cast<size_t>(chosen)];
     Trial& other = (*trials)[static_cast<size_t>(passing[k])];
     if (ScaledBic(other, n, scale) - ScaledBic(best, n, scale) >= 6.0) break;
-    if (!Indistinguishable(best, other, n, scale)) continue;
     const std::string difference = MaterialDifference(best, other);
-    if (difference.empty()) continue;
+    if (difference.empty()) continue;  // either one gives the same calibration
+    const int preferred = PreferredOf(best, other, n, scale);
+    if (preferred > 0) {
+      other.score.rejected_reason = PredictionVerdict(best, other);
+      continue;
+    }
+    if (preferred < 0) {
+      best.score.rejected_reason = PredictionVerdict(other, best);
+      chosen = passing[k];
+      continue;
+    }
     tie = fmt::format("{} and {} explain the captures alike (BIC within {:.1f}) but {}: these captures "
                       "cannot tell them apart", best.score.effect, other.score.effect,
                       ScaledBic(other, n, scale) - ScaledBic(best, n, scale), difference);
     *ambiguous = {best.score.effect, other.score.effect};
-    (*trials)[static_cast<size_t>(chosen)].score.rejected_reason = tie;
+    best.score.rejected_reason = tie;
     other.score.rejected_reason = tie;
     chosen = -1;
   }
@@ -374,6 +395,20 @@ void JudgeExplained(const std::vector<FitCapture>& captures, const FitOptions& f
     report->structure = FindResidualStructure(captures, Standardized(report->final_fit));
     why_withdrawn = WhyNotExplained(captures, fit_options, options, report, adopted);
     if (why_withdrawn.empty()) return;
+    if (report->ambiguous.size() == 2) {
+      // The last round found two effects that explain the rest alike: the effects adopted before
+      // it were adopted on their own evidence and stay (withdrawing them too would leave a worse
+      // model for an ambiguity that is not theirs); the rest stays unexplained.
+      report->unexplained = true;
+      report->next_captures = NextCaptures(*report, captures);
+      report->conclusion = fmt::format(
+          "{} added; the rest of the residuals (chi2/dof {:.2f}) is explained alike by {} and by "
+          "{}, which imply different calibrations: these captures cannot tell them apart, so "
+          "neither is added; next: {}", fmt::join(report->adopted_names(), " + "),
+          report->final_fit.Chi2PerDof(), report->ambiguous[0], report->ambiguous[1],
+          report->next_captures);
+      return;
+    }
     for (const AdoptedEffect& a : report->adopted) report->withdrawn.push_back(a.name);
     report->adopted.clear();
     report->final_fit = report->base;

@@ -20,19 +20,22 @@
 //       not beyond what n normals give (family p >= prediction_p);
 //     - its parameters are physically plausible (Effect::WhyImplausible: datasheet or bench
 //       bounds);
-//     - no other candidate that passes is indistinguishable from it (BIC within 2, or within 6
-//       while the other predicts the left-out captures better) while implying a different
-//       calibration (exactly one of them corrects later readings, or their nine parameters
-//       differ by more than 2 combined sigma): then the captures cannot tell the two apart,
-//       neither is adopted, and both are named (a drift in time and a temperature warm-up, a
-//       corner-only coupling and a turntable-only effect that moves the misalignment).
+//     - among candidates that pass and imply different calibrations (exactly one of them
+//       corrects later readings, or their nine parameters differ by more than 2 combined
+//       sigma), one within 6 of the best BIC ("strong" on the Kass & Raftery scale) but 2 or
+//       more from it is decided by the prediction of the left-out captures (the smaller LOO
+//       RMS wins: a drift in time and a temperature warm-up can fit alike, the right one
+//       predicts the first and last poses better); two within 2 of each other cannot be told
+//       apart by these captures: neither is adopted, and both are named.
 //     A candidate that fits but fails a test is named with the reason. Then back to 1.
 //  4. The adopted set must explain the residuals: the final model's residuals are what noise
 //     explains (chi-square p >= consistency_p), show no structure in pose or time
 //     (residual_structure.h, family p >= structure_p), and predict every capture from the
 //     others within noise (LOO unscaled, family p >= prediction_p). Otherwise the effects are
 //     withdrawn, the base model kept, and the conclusion says "the residuals exceed noise and no
-//     effect of the library explains them" and what to capture next.
+//     effect of the library explains them" and what to capture next. When the last round ended
+//     in two effects the captures cannot tell apart, the effects adopted before it stay (the
+//     ambiguity is about the rest) and the conclusion names both and what to capture next.
 //  5. Every step keeps the residual RMS, maximum and chi2/dof before and after, the effect's
 //     parameters with 1-sigma uncertainties, and the evidence in words.
 #pragma once
@@ -119,7 +122,9 @@ struct DiagnosisReport {
   double noise_rms_mps2 = 0.0;           // RMS of the captures' own sigma_i: what noise explains
   bool consistent = false;               // the final residuals pass the chi-square test
   // The residuals exceed noise and no effect of the library explains them (none passed, or the
-  // ones adopted were withdrawn: final_fit is then the base model).
+  // ones adopted were withdrawn: final_fit is then the base model), or the last round found two
+  // effects that explain the rest alike (`ambiguous`): the effects adopted before it stay in
+  // `adopted` and final_fit, and the rest is unexplained.
   bool unexplained = false;
   std::vector<std::string> withdrawn;    // effects adopted in a round, then withdrawn (step 4)
   // Two effects that explained the captures alike but imply different calibrations (step 3):
