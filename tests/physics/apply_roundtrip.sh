@@ -31,7 +31,9 @@ check() {
   echo "ok   $case (seed $seed, $want): $(tail -n 1 "$d/residuals.txt")"
 }
 
-check quadratic_temperature 1 "" "quadratic_nonlinearity,temperature_bias"
+# Seed 2: on seed 1 the plan cannot tell the temperature warm-up from a drift in time (BIC within
+# 2): the file then holds the quadratic alone (unit test AnAmbiguousRestKeepsTheEffectAdoptedBefore).
+check quadratic_temperature 2 "" "quadratic_nonlinearity,temperature_bias"
 check radius_size 1 "" "radius_offset,size_effect"
 check temperature_scale 1 "" "temperature_scale"
 check bias_drift 2 "" "bias_drift"
