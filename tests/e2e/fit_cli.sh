@@ -80,6 +80,39 @@ grep -q '"reason": "not still: .*spike: ' "$work/bump.json" || fail "stability r
 expect 0 "$accelcal" fit "$work/bump.csv" --no-stability-check
 grep -q "fit converged: 18 captures" "$work/out" || fail "--no-stability-check"
 
+# Issue 17 item 2: a mistyped radius or speed is never fitted silently. In the default scenario
+# capture 10 is the x-radial run at 0.05 m, 120 rpm (columns: capture,kind,t,ax,ay,az,temp_c,
+# radius_m,rpm,label,up_axis).
+retype() {  # FILE RADIUS RPM: capture 10's stated radius and speed
+  awk -F, -v OFS=, -v r="$2" -v w="$3" '$1 == 10 && $2 == "turntable" { $8 = r; $9 = w } { print }' \
+    "$work/c.csv" >"$1"
+}
+# 0.07 m typed for 0.05: the run does not match its readings; left out with the reason, in the
+# output and in the file, and the rest calibrates.
+retype "$work/r7.csv" 0.07 120
+expect 0 "$accelcal" fit "$work/r7.csv" -o "$work/r7.json"
+grep -q "fit converged: 17 captures" "$work/out" || { cat "$work/out"; fail "mistyped radius not left out"; }
+grep -q "does not match the run" "$work/out" || fail "mistyped radius: no reason in the output"
+grep -q '"reason": "the stated radius or speed does not match the run: .*0.07 m' "$work/r7.json" ||
+  fail "mistyped radius: no reason in the file"
+# The same without the up_axis column's values: found by leave-one-out instead.
+awk -F, -v OFS=, 'NR > 3 && $2 == "turntable" { $NF = "" } { print }' "$work/r7.csv" >"$work/r7n.csv"
+expect 0 "$accelcal" fit "$work/r7n.csv" -o "$work/r7n.json"
+grep -q "fit converged: 17 captures" "$work/out" || { cat "$work/out"; fail "leave-one-out did not leave the run out"; }
+grep -q '"reason": "disagrees with the other captures' "$work/r7n.json" || fail "leave-one-out reason"
+grep -q 'capture 10 was left out' "$work/r7n.json" || fail "leave-one-out warning in the file"
+# Radius and speed swapped: implausible, left out with the reason.
+retype "$work/swap.csv" 120 0.05
+expect 0 "$accelcal" fit "$work/swap.csv" -o "$work/swap.json"
+grep -q "fit converged: 17 captures" "$work/out" || fail "swapped radius and speed not left out"
+grep -q "are the radius and the speed swapped" "$work/swap.json" || fail "swap reason"
+# Three runs 40 % off, no mounting: more than can be left out; no calibration, exit 1, named.
+awk -F, -v OFS=, 'NR > 3 && $2 == "turntable" { $NF = ""; if ($1 == 10 || $1 == 13 || $1 == 16) $8 = $8 * 1.4 } { print }' \
+  "$work/c.csv" >"$work/bad3.csv"
+expect 1 "$accelcal" fit "$work/bad3.csv" -o "$work/bad3.json"
+grep -q "no calibration: the captures disagree with each other" "$work/err" || { cat "$work/err"; fail "refusal text"; }
+[ ! -e "$work/bad3.json" ] || fail "a refused fit wrote a calibration file"
+
 for sub in fit apply simulate; do
   expect 0 "$accelcal" "$sub" --help
   grep -q "Example" "$work/out" || fail "$sub --help has no example"

@@ -6,6 +6,8 @@
 //   accelcal_physgen tally RESULTS.tsv                the tables of evaluate.sh
 //   accelcal_physgen selfcheck                        the generator against the physics
 //   accelcal_physgen cases                            the named cases
+//   accelcal_physgen means SET.csv CAL.json           mean readings for `accelcal apply`
+//   accelcal_physgen residuals SET.csv CAL.json APPLIED.txt   apply_check.cpp
 //
 // --no-temperature leaves the temp_c column empty (the sensor still warms: a temperature effect
 // injected then acts unobserved). The generator uses only the standard library and Eigen; `compare` reads accelcal's
@@ -28,6 +30,11 @@
 
 #include "physics_bench.h"
 
+namespace physgen {
+int MeansCommand(const std::vector<std::string>& args);      // apply_check.cpp
+int ResidualsCommand(const std::vector<std::string>& args);  // apply_check.cpp
+}  // namespace physgen
+
 namespace {
 
 using physgen::Bench;
@@ -45,11 +52,14 @@ constexpr double kPi = 3.14159265358979323846;
                "         [--no-temperature] [--no-quantize]\n"
                "         [--fixed-sensor] [--quadratic X,Y,Z] [--temp-bias X,Y,Z] [--temp-scale X,Y,Z]\n"
                "         [--drift X,Y,Z] [--radius-offset M] [--rpm-scale S] [--size X,Y,Z]\n"
-               "         [--cubic X,Y,Z] [--cross C] [--tilt-deg D] -o SET.csv [--truth TRUTH.json]\n"
+               "         [--cubic X,Y,Z] [--cross C] [--tilt-deg D] [--asym X,Y,Z] [--bias-jump X,Y,Z]\n"
+               "         [--turntable-bias X,Y,Z] -o SET.csv [--truth TRUTH.json]\n"
                "       accelcal_physgen compare TRUTH.json CAL.json\n"
                "       accelcal_physgen tally RESULTS.tsv\n"
                "       accelcal_physgen selfcheck\n"
-               "       accelcal_physgen cases\n";
+               "       accelcal_physgen cases\n"
+               "       accelcal_physgen means SET.csv CAL.json\n"
+               "       accelcal_physgen residuals SET.csv CAL.json APPLIED.txt\n";
   std::exit(2);
 }
 
@@ -97,12 +107,22 @@ const std::vector<Case>& Cases() {
       {"rpm_scale", "in library: true speed 1 % above the stated", [](Effects& e) { e.rpm_scale = 0.01; }},
       {"size_effect", "in library: d = (1.5, -1.0, 2.0) mm",
        [](Effects& e) { e.size_effect_m = {0.0015, -0.001, 0.002}; }},
-      {"cubic", "outside: raw_x += 1e-4 u_x^3 counts (u in m/s^2; 38 mm/s^2 at 2.4 g)",
+      {"cubic", "in library since issue 13: raw_x += 1e-4 u_x^3 counts (u in m/s^2; 38 mm/s^2 at 2.4 g)",
        [](Effects& e) { e.cubic = {1e-4, 0.0, 0.0}; }},
-      {"cross", "outside: raw_x += 0.03 u_y u_z counts (28 mm/s^2 at the (1,1,1) corner)",
+      {"cross", "in library since issue 13: raw_x += 0.03 u_y u_z counts (28 mm/s^2 at the (1,1,1) corner)",
        [](Effects& e) { e.cross_x_yz = 0.03; }},
-      {"tilt", "outside: turntable spin axis tilted 2 deg",
+      {"tilt", "in library since issue 13: turntable spin axis tilted 2 deg",
        [](Effects& e) { e.tilt_rad = 2.0 * kPi / 180.0; }},
+      {"radius_size", "two in library: dr = 3 mm and d = (1.5, -1.0, 2.0) mm",
+       [](Effects& e) { e.radius_offset_m = 0.003; e.size_effect_m = {0.0015, -0.001, 0.002}; }},
+      {"quadratic_temperature", "two in library: q = (0.02, -0.015, 0.01), tc_bias = (0.5, -0.3, 0.8)",
+       [](Effects& e) { e.quadratic = {0.02, -0.015, 0.01}; e.temp_bias = {0.5, -0.3, 0.8}; }},
+      {"asym_scale", "outside: the x sensitivity is 0.3 % above its mean for positive inputs, 0.3 % below for negative",
+       [](Effects& e) { e.asym_scale = {0.003, 0.0, 0.0}; }},
+      {"bias_jump", "outside: the zero-g level steps by (2, 0, -1.5) counts once, mid-session",
+       [](Effects& e) { e.bias_jump = {2.0, 0.0, -1.5}; }},
+      {"turntable_bias", "outside: while the table turns the zero-g level shifts by (0.8, -0.5, -1.0) counts",
+       [](Effects& e) { e.turntable_bias = {0.8, -0.5, -1.0}; }},
   };
   return cases;
 }
@@ -167,6 +187,9 @@ int Generate(const std::vector<std::string>& args) {
     else if (a == "--cubic") { overrides.cubic = ParseVector(value()); overridden.insert(a); }
     else if (a == "--cross") { overrides.cross_x_yz = ParseNumber(value()); overridden.insert(a); }
     else if (a == "--tilt-deg") { overrides.tilt_rad = ParseNumber(value()) * kPi / 180.0; overridden.insert(a); }
+    else if (a == "--asym") { overrides.asym_scale = ParseVector(value()); overridden.insert(a); }
+    else if (a == "--bias-jump") { overrides.bias_jump = ParseVector(value()); overridden.insert(a); }
+    else if (a == "--turntable-bias") { overrides.turntable_bias = ParseVector(value()); overridden.insert(a); }
     else Usage("unknown argument '" + a + "'");
   }
   if (out_path.empty()) Usage("generate needs -o SET.csv");
@@ -187,6 +210,9 @@ int Generate(const std::vector<std::string>& args) {
   if (overridden.count("--cubic")) effects.cubic = overrides.cubic;
   if (overridden.count("--cross")) effects.cross_x_yz = overrides.cross_x_yz;
   if (overridden.count("--tilt-deg")) effects.tilt_rad = overrides.tilt_rad;
+  if (overridden.count("--asym")) effects.asym_scale = overrides.asym_scale;
+  if (overridden.count("--bias-jump")) effects.bias_jump = overrides.bias_jump;
+  if (overridden.count("--turntable-bias")) effects.turntable_bias = overrides.turntable_bias;
 
   std::vector<CaptureSpec> plan;
   if (plan_name == "seed") plan = physgen::SeedPlan(static_s, turntable_s);
@@ -496,6 +522,58 @@ int SelfCheck() {
                              Format("%.2f", temp.temp_ref_c) + " degC; temperature " + Format("%.1f", tmin) +
                              ".." + Format("%.1f", tmax) + " degC)");
   }
+  // 8. What the truth states of the coupling and the tilt (the quantities a magnitude fit sees),
+  //    and the effects outside the library against their definitions.
+  {
+    std::mt19937_64 rng(6);
+    const physgen::CaptureSetData clean = physgen::Generate(sensor, Effects{}, bench, plan, rng);
+    physgen::CaptureSetData cross = clean;
+    cross.effects.cross_x_yz = 0.03;
+    const physgen::CaptureData& corner = clean.captures[6];  // tilted +x+y+z
+    const Eigen::Vector3d ua = t.inverse() * (g * corner.spec.up);
+    const double kappa = 0.03 / sensor.scale_counts_per_mps2.x();
+    const double d_mag = Calibrate(sensor, physgen::NoiseFreeReading(cross, corner, corner.start_s)).norm() -
+                         Calibrate(sensor, physgen::NoiseFreeReading(clean, corner, corner.start_s)).norm();
+    const double first_order = kappa * ua.x() * ua.y() * ua.z() / ua.norm();
+    Check(std::fabs(d_mag - first_order) < 0.02 * std::fabs(first_order),
+          "cross 0.03: |a^p| grows by kappa u_x u_y u_z / |u| = " + Format("%.5f", first_order) +
+              " m/s^2 at the corner, kappa = c_x / k_x = " + Format("%.3g", kappa) + " (got " +
+              Format("%.5f", d_mag) + ")");
+    // Asymmetric scale: +x and -x faces read k (1 + a) g and -k (1 - a) g beyond the bias.
+    physgen::CaptureSetData asym = clean;
+    asym.effects.asym_scale = {0.003, 0.0, 0.0};
+    const physgen::CaptureData& px = clean.captures[2];  // +x up
+    const physgen::CaptureData& mx = clean.captures[3];  // -x up
+    const double kx = sensor.scale_counts_per_mps2.x();
+    const double up_x = (physgen::NoiseFreeReading(asym, px, px.start_s) - sensor.bias_counts).x();
+    const double down_x = (physgen::NoiseFreeReading(asym, mx, mx.start_s) - sensor.bias_counts).x();
+    const double ux_p = (t.inverse() * (g * px.spec.up)).x(), ux_m = (t.inverse() * (g * mx.spec.up)).x();
+    Check(std::fabs(up_x - kx * 1.003 * ux_p) < 1e-9 && std::fabs(down_x - kx * 0.997 * ux_m) < 1e-9,
+          "asymmetric scale 0.003: +x face reads k (1 + a) u, -x face k (1 - a) u");
+    // Bias jump: samples after t_jump carry it, those before do not.
+    physgen::CaptureSetData jump = clean;
+    jump.effects.bias_jump = {2.0, 0.0, -1.5};
+    const physgen::CaptureData& first = clean.captures.front();
+    const physgen::CaptureData& last = clean.captures.back();
+    const Eigen::Vector3d before = physgen::NoiseFreeReading(jump, first, first.start_s) -
+                                   physgen::NoiseFreeReading(clean, first, first.start_s);
+    const Eigen::Vector3d after = physgen::NoiseFreeReading(jump, last, last.start_s) -
+                                  physgen::NoiseFreeReading(clean, last, last.start_s);
+    Check(before.norm() < 1e-12 && (after - jump.effects.bias_jump).norm() < 1e-12 &&
+              clean.jump_t_s > first.start_s && clean.jump_t_s < last.start_s,
+          "bias jump: (2, 0, -1.5) counts from t = " + Format("%.1f", clean.jump_t_s) +
+              " s on, none before");
+    // Turntable bias: the runs shift, the static poses do not.
+    physgen::CaptureSetData vre = clean;
+    vre.effects.turntable_bias = {0.8, -0.5, -1.0};
+    const physgen::CaptureData& run = clean.captures[10];
+    const Eigen::Vector3d on_run = physgen::NoiseFreeReading(vre, run, run.start_s + 1.0) -
+                                   physgen::NoiseFreeReading(clean, run, run.start_s + 1.0);
+    const Eigen::Vector3d on_face = physgen::NoiseFreeReading(vre, first, first.start_s) -
+                                    physgen::NoiseFreeReading(clean, first, first.start_s);
+    Check((on_run - vre.effects.turntable_bias).norm() < 1e-12 && on_face.norm() < 1e-12,
+          "turntable bias: (0.8, -0.5, -1.0) counts on the runs, none on the static poses");
+  }
   std::cout << (failures ? "selfcheck FAILED\n" : "selfcheck passed\n");
   return failures ? 1 : 0;
 }
@@ -611,6 +689,8 @@ int main(int argc, char** argv) {
     if (cmd == "compare") return Compare(args);
     if (cmd == "selfcheck") return SelfCheck();
     if (cmd == "tally") return Tally(args);
+    if (cmd == "means") return physgen::MeansCommand(args);
+    if (cmd == "residuals") return physgen::ResidualsCommand(args);
     if (cmd == "cases") {
       for (const Case& c : Cases()) std::cout << c.name << "\t" << c.what << "\n";
       return 0;

@@ -129,11 +129,14 @@ Eigen::Vector3d NoiseFreeReading(const CaptureSetData& set, const CaptureData& c
   const double dt = t_s - set.t_ref_s;
   Eigen::Vector3d raw;
   for (int j = 0; j < 3; ++j) {
-    double response = s.scale_counts_per_mps2(j) * u(j) + e.quadratic(j) * u(j) * u(j) +
-                      e.cubic(j) * u(j) * u(j) * u(j);
+    const double sign = u(j) > 0.0 ? 1.0 : (u(j) < 0.0 ? -1.0 : 0.0);
+    double response = s.scale_counts_per_mps2(j) * u(j) * (1.0 + e.asym_scale(j) * sign) +
+                      e.quadratic(j) * u(j) * u(j) + e.cubic(j) * u(j) * u(j) * u(j);
     if (j == 0) response += e.cross_x_yz * u(1) * u(2);
     raw(j) = s.bias_counts(j) + e.drift(j) * dt + e.temp_bias(j) * dtemp +
              (1.0 + e.temp_scale(j) * dtemp) * response;
+    if (t_s >= set.jump_t_s) raw(j) += e.bias_jump(j);
+    if (c.spec.kind == Kind::kTurntable) raw(j) += e.turntable_bias(j);
   }
   return raw;
 }
@@ -173,6 +176,12 @@ CaptureSetData Generate(const Sensor& sensor, const Effects& effects, const Benc
   }
   set.t_ref_s = t_sum / static_cast<double>(plan.size());
   set.temp_ref_c = temp_sum / static_cast<double>(plan.size());
+  if (!set.captures.empty()) {
+    const size_t middle = set.captures.size() / 2;
+    set.jump_t_s = middle == 0 ? set.captures[0].start_s - 1.0
+                               : 0.5 * (set.captures[middle - 1].samples.back().t_s +
+                                        set.captures[middle].start_s);
+  }
 
   // 2. The samples.
   std::normal_distribution<double> unit(0.0, 1.0);
@@ -263,9 +272,20 @@ void WriteTruthJson(const CaptureSetData& set, const std::map<std::string, std::
   scalar("radius_offset", "dr", e.radius_offset_m, true);
   scalar("rpm_scale", "rpm_scale", e.rpm_scale, true);
   per_axis("size_effect", "d", e.size_effect_m, true);
-  per_axis("cubic_nonlinearity", "c3", e.cubic, false);
-  scalar("cross_axis_coupling", "c_x_yz", e.cross_x_yz, false);
-  scalar("turntable_tilt", "tilt_rad", e.tilt_rad, false);
+  per_axis("cubic_nonlinearity", "c3", e.cubic, true);
+  if (e.cross_x_yz != 0.0) {
+    // The magnitude-equivalent coupling of the header comment: kappa = c_x / k_x.
+    items.push_back("    \"cross_axis_coupling\": {\"library\": true, \"parameters\": {\"c_x_yz\": " +
+                    Num(e.cross_x_yz) + ", \"kappa\": " + Num(e.cross_x_yz / s.scale_counts_per_mps2.x()) +
+                    "}}");
+  }
+  if (e.tilt_rad != 0.0) {
+    items.push_back("    \"turntable_tilt\": {\"library\": true, \"parameters\": {\"tilt_rad\": " +
+                    Num(e.tilt_rad) + ", \"tilt_loss\": " + Num(1.0 - std::cos(e.tilt_rad)) + "}}");
+  }
+  per_axis("asymmetric_scale", "asym", e.asym_scale, false);
+  per_axis("bias_jump", "jump", e.bias_jump, false);
+  per_axis("turntable_bias", "vre", e.turntable_bias, false);
   out << "  \"effects\": {";
   for (size_t i = 0; i < items.size(); ++i) out << (i ? ",\n" : "\n") << items[i];
   out << (items.empty() ? "}\n" : "\n  }\n") << "}\n";

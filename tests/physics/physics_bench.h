@@ -15,18 +15,29 @@
 // Effects (each zero by default), per axis j and per sample at time t and temperature T_c:
 //
 //   u_j   = a^a_j                                 (m/s^2: the README table's u, "u = a^a")
-//   raw_j = b_j + drift_j (t - t_ref) + tcb_j (T_c - T_ref)
-//         + (1 + tcs_j (T_c - T_ref)) (k_j u_j + q_j u_j^2 + c3_j u_j^3 + [j = x] c_x u_y u_z)
+//   raw_j = b_j + drift_j (t - t_ref) + tcb_j (T_c - T_ref) + [t >= t_jump] jump_j
+//         + [turntable] vre_j
+//         + (1 + tcs_j (T_c - T_ref)) (k_j u_j (1 + asym_j sgn(u_j)) + q_j u_j^2 + c3_j u_j^3
+//                                      + [j = x] c_x u_y u_z)
 //         + white noise (std noise_j counts), rounded to whole counts and clipped to the ADC.
+//
+// jump: the zero-g level steps once during the session (a knock, a connector settling), at
+// t_jump, in the gap before the middle capture. vre: a constant shift of the zero-g level while
+// the table turns (the motor's vibration rectified by the sensor). asym: the sensitivity differs
+// for positive and negative inputs by +-asym_j. None of the three is in accelcal's library.
 //
 // t_ref and T_ref are the means over the captures of each capture's mean sample time and mean
 // temperature (the project's reference points), so the nine-parameter truth (b, K, a_ij) is the
 // sensor at the session's typical conditions.
 //
-// Units of the effects outside the library: c3 in counts/(m/s^2)^3 and c_x in
+// Units of the cubic and the cross-axis coupling: c3 in counts/(m/s^2)^3 and c_x in
 // counts/(m/s^2)^2, both on u = a^a in m/s^2 (the same u as the library's quadratic q). So
 // c3_x = 1e-4 adds 1e-4 * 23.54^3 = 1.30 counts = 38 mm/s^2 (k = 34.6) on x at 2.4 g, and
 // c_x = 0.03 adds 0.03 * (g/sqrt(3))^2 = 0.96 counts = 28 mm/s^2 on x at the (1,1,1) corner.
+// What a magnitude fit can see of the coupling: a^a_x grows by kappa_x u_y u_z with
+// kappa_x = c_x / k_x (1/(m/s^2)), so |a| grows by kappa_x u_x u_y u_z / |u| to first order;
+// the truth states kappa = c_x / k_x (the sum over the axes of such terms, one axis here). Of a
+// tilt theta the magnitude sees 1 - cos(theta), stated as tilt_loss.
 //
 // The bench. Static pose: "up" (unit, sensor frame) is the specific force's direction,
 // f = g up, turned by a small random placement error. Turntable: the table frame has X_t
@@ -87,6 +98,10 @@ struct Effects {
   Eigen::Vector3d cubic = Eigen::Vector3d::Zero();  // c3_j, counts/(m/s^2)^3
   double cross_x_yz = 0.0;                          // c_x: raw_x += c_x u_y u_z, counts/(m/s^2)^2
   double tilt_rad = 0.0;                            // turntable spin axis from the vertical
+  // Outside the library (also after issue 13 added the three above).
+  Eigen::Vector3d asym_scale = Eigen::Vector3d::Zero();  // asym_j: k_j (1 +- asym_j) for u_j >< 0
+  Eigen::Vector3d bias_jump = Eigen::Vector3d::Zero();   // jump_j counts, once, mid-session
+  Eigen::Vector3d turntable_bias = Eigen::Vector3d::Zero();  // vre_j counts while turning
 };
 
 enum class Kind { kStatic, kTurntable };
@@ -136,6 +151,7 @@ struct CaptureSetData {
   Bench bench;
   double t_ref_s = 0.0;     // mean over captures of the mean sample time
   double temp_ref_c = 0.0;  // mean over captures of the mean true temperature
+  double jump_t_s = 0.0;    // when the bias jump happens (mid-gap before the middle capture)
   std::vector<CaptureData> captures;
 };
 

@@ -25,6 +25,9 @@ CalibrationOutcome CalibrateCaptures(CalibrationRequest request) {
   out.captures = std::move(request.captures);
   ScreenCaptures(out.captures, request.screening);
   if (request.stability) ScreenStaticStability(out.captures, *request.stability);
+  if (request.check_turntable_runs)
+    CheckTurntableRuns(out.captures, request.gravity,
+                       {request.turntable_centripetal_tolerance, request.screening.adc_range});
 
   FitOptions fit;
   fit.gravity = request.gravity;
@@ -34,6 +37,9 @@ CalibrationOutcome CalibrateCaptures(CalibrationRequest request) {
   DiagnosisOptions diagnosis = request.diagnosis;
   if (!request.diagnose) diagnosis.max_effects = 0;
   out.diagnosis = Diagnose(used, fit, diagnosis);
+  DisagreementOptions disagreement = request.disagreement;
+  if (!request.diagnose) disagreement.refuse = false;
+  ResolveDisagreeingCaptures(out.captures, fit, diagnosis, disagreement, &out.diagnosis);
   return out;
 }
 

@@ -1,8 +1,11 @@
 // The calibration pipeline, one for every front end: the captures (a capture set, a recording's
 // static intervals, a wizard session's accepted captures) are screened (too short, NaN,
-// clipped; optionally the offline stillness check), the used ones fitted, the diagnosis run
-// (find the effect the model lacks, add it, before and after), and the calibration made from
-// the chosen model. `accelcal fit` and the wizard's fit, diagnosis and report steps all run it.
+// clipped, a turntable radius or speed no bench has; optionally the offline stillness check),
+// the turntable runs checked against their stated radius and speed (turntable_run_check.h), the
+// used ones fitted, the diagnosis run (find the effect the model lacks, add it, before and
+// after), a capture that disagrees with all the others left out or the fit refused
+// (disagreeing_captures.h), and the calibration made from the chosen model. `accelcal fit` and
+// the wizard's fit, diagnosis and report steps all run it.
 #pragma once
 
 #include <optional>
@@ -10,6 +13,8 @@
 #include <vector>
 
 #include "accelcal/acquire/capture_engine/offline_stability.h"
+#include "accelcal/app/disagreeing_captures.h"
+#include "accelcal/app/turntable_run_check.h"
 #include "accelcal/base/capture.h"
 #include "accelcal/base/gravity.h"
 #include "accelcal/calibration/calibration.h"
@@ -32,6 +37,10 @@ struct CalibrationRequest {
   // What the captures' readings are in (counts, or a logger's converted unit taken as counts):
   // recorded in the calibration so that apply reads later readings the same way.
   ReadingUnit reading_unit;
+  // The turntable runs against their stated conditions (adc_range: screening's).
+  bool check_turntable_runs = true;
+  double turntable_centripetal_tolerance = TurntableRunCheckOptions{}.centripetal_tolerance;
+  DisagreementOptions disagreement;   // refuse is set to false when !diagnose
 };
 
 struct CalibrationOutcome {

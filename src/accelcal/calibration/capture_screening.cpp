@@ -8,6 +8,7 @@
 
 #include "accelcal/base/text_scan.h"
 #include "accelcal/base/error.h"
+#include "accelcal/calibration/turntable_plausibility.h"
 
 namespace accelcal {
 namespace {
@@ -127,6 +128,10 @@ std::string ScreeningReason(const Capture& capture, const ScreeningOptions& opti
       options.adc_range ? KnownRangeClipping(capture, *options.adc_range)
                         : InferredRailClipping(capture, options.rail_fraction);
   reasons.insert(reasons.end(), clipping.begin(), clipping.end());
+  if (capture.kind == CaptureKind::kTurntable) {
+    if (std::string problem = TurntableConditionsProblem(capture.radius_m, capture.rpm); !problem.empty())
+      reasons.push_back(std::move(problem));
+  }
   return fmt::format("{}", fmt::join(reasons, "; "));
 }
 

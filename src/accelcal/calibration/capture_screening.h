@@ -24,6 +24,12 @@
 //         500 samples"
 //      The inference can miss a rail that is not a power of two, and could flag a noise-free
 //      signal that happens to sit at 0 counts: give the range when it is known.
+// 4. Implausible turntable conditions: a turntable capture whose stated radius or speed no bench
+//    turntable has (turntable_plausibility.h, the wizard's own bounds), e.g. a radius typed in
+//    mm as m, or radius and speed swapped.
+//      "stated radius 120 m is not a plausible turntable radius (expected 5 mm to 2 m) and speed
+//       0.1 rpm is not a plausible turntable speed (expected 1 to 3000 rpm): are the radius and
+//       the speed swapped?"
 //
 // Screening overwrites rejection_reason on every capture it is given.
 #pragma once

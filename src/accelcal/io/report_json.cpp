@@ -91,6 +91,8 @@ json ReportToJson(const ReportModel& m) {
           {"fitted_from", Text(m.fit_source)},
           {"gravity", {{"value_mps2", Num(m.gravity_mps2)}, {"description", m.gravity_text}}},
           {"parameters", Parameters(m.parameters)},
+          {"parameter_notes", m.parameter_notes},
+          {"diagnosis_conclusion", Text(m.diagnosis_conclusion)},
           {"fit",
            {{"termination", Text(m.termination)},
             {"optimizer", Text(m.optimizer)},

@@ -157,7 +157,9 @@ std::string Parameters(const ReportModel& m) {
   for (const ReportParameter& p : m.parameters)
     out += fmt::format("<tr><td>{}</td><td class=\"n\">{}</td><td class=\"n\">{}</td><td>{}</td></tr>\n", E(p.name),
                        Num(p.value, "{:.6f}"), Num(p.sigma, "{:.3g}"), Unit(p.unit));
-  return out + "</table></section>\n";
+  out += "</table>\n";
+  for (const std::string& note : m.parameter_notes) out += "<p class=\"note\">" + E(note) + "</p>\n";
+  return out + "</section>\n";
 }
 
 std::string ResidualPlot(const ReportModel& m) {
@@ -252,6 +254,7 @@ std::string Residuals(const ReportModel& m) {
 
 std::string Diagnosis(const ReportModel& m) {
   std::string out = "<section><h2>4. Diagnosis</h2>\n";
+  if (!m.diagnosis_conclusion.empty()) out += "<p>" + E(m.diagnosis_conclusion) + "</p>\n";
   if (m.effects.empty())
     return out + fmt::format("<p>No effect adopted: the calibration is the nine-parameter base model "
                              "(residual RMS {} m/s&sup2;; the captures&rsquo; noise explains {} m/s&sup2;).</p></section>\n",

@@ -129,6 +129,26 @@ std::vector<std::string> IncompleteReasons(const std::optional<SessionGaps>& gap
 
 }  // namespace
 
+std::vector<std::string> ParameterNotes(const std::vector<std::string>& effect_names) {
+  std::vector<std::string> notes = {
+      "What the nine parameters are: b is each axis's reading at zero specific force and K its "
+      "sensitivity; the three angles of T turn the sensor's axes into an orthogonal platform "
+      "frame whose x is the sensor's x axis and whose y lies in the sensor's x-y plane.",
+      "What they cannot resolve: the fit matches magnitudes |a|, and a rotation does not change "
+      "a magnitude. The sensor's orientation on its mount (a mounting rotation) is therefore not "
+      "measured, and a misalignment of another form (a lower-triangular one, axes referred to z "
+      "rather than x) is absorbed into magnitude-equivalent angles: the calibrated |a| is right, "
+      "but the angles are not the physical angles between the axes and the directions of a are "
+      "known only up to a rotation. Align the platform to the vehicle's frame separately when "
+      "directions matter."};
+  for (const std::string& name : effect_names)
+    if (name == "cross_axis_coupling")
+      notes.push_back("cross_axis_coupling: a magnitude fit sees only the sum kappa over the three "
+                      "axes of their coupling to the product of the other two inputs; the "
+                      "correction shares it equally (right for |a|, not resolved per axis).");
+  return notes;
+}
+
 std::string_view VerdictToString(Verdict v) {
   switch (v) {
     case Verdict::kPass: return "PASS";
@@ -167,6 +187,7 @@ ReportModel BuildReportModel(const ReportInputs& in) {
   m.fit_source = cal.source;
   m.tool = std::string("accelcal ") + kAccelcalVersion;
   m.parameters = Parameters(cal);
+  m.parameter_notes = ParameterNotes(cal.EffectNames());
   m.termination = cal.fit.termination == FitTermination::kNotRun
                       ? std::string() : std::string(FitTerminationToString(cal.fit.termination));
   m.optimizer = cal.fit.optimizer;
@@ -196,6 +217,7 @@ ReportModel BuildReportModel(const ReportInputs& in) {
   }
 
   for (const CalibrationEffect& e : cal.effects) m.effects.push_back(MakeReportEffect(e));
+  if (cal.diagnosis && cal.diagnosis->ran) m.diagnosis_conclusion = cal.diagnosis->conclusion;
   m.stages = Stages(cal, m.captures);
 
   m.noise = in.noise;

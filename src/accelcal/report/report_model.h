@@ -145,6 +145,10 @@ struct ReportModel {
   std::string fit_source;            // the calibration's "source"
   std::string tool;                  // "accelcal X.Y.Z" that made the report
   std::vector<ReportParameter> parameters;  // the nine, in ParameterIndex order
+  // What the nine parameters mean physically and what a magnitude fit cannot resolve (and, for
+  // an adopted effect it sees only in part, what of it is seen), one paragraph each; every
+  // renderer shows them beside the parameters.
+  std::vector<std::string> parameter_notes;
   // Fit statistics (the calibration's "fit"); NaN / empty when the file lacks them.
   std::string termination, optimizer;
   int captures_used = 0;
@@ -159,6 +163,7 @@ struct ReportModel {
   int captures_left_out = 0;
   std::vector<ResidualStage> stages; // base first; only the final one from a file alone
   std::vector<ReportEffect> effects; // adopted, in order
+  std::string diagnosis_conclusion;  // the diagnosis in a paragraph; empty when it did not run
   double temp_min_c = kNaN;          // over all samples of all captures; NaN: not recorded
   double temp_max_c = kNaN;
   std::optional<NoiseSection> noise;
@@ -189,6 +194,9 @@ ReportModel BuildReportModel(const ReportInputs& inputs);
 // any step; the latest step id wins when two steps hold one).
 void FillMetaFromInputs(const std::map<std::string, std::map<std::string, std::string>>& inputs,
                         ReportMeta* meta);
+
+// The notes of ReportModel::parameter_notes for a calibration with these adopted effects.
+std::vector<std::string> ParameterNotes(const std::vector<std::string>& effect_names);
 
 // Text for an absent value in every renderer.
 inline constexpr const char* kNotRecorded = "not recorded";

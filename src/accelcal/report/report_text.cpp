@@ -142,12 +142,15 @@ std::string Residuals(const ReportModel& m) {
 }
 
 std::string Diagnosis(const ReportModel& m) {
+  const std::string conclusion =
+      m.diagnosis_conclusion.empty() ? std::string() : Wrap("  Conclusion: ", Clean(m.diagnosis_conclusion), 4);
   if (m.effects.empty()) {
     std::string before = m.stages.empty() ? "-" : Num(m.stages.front().rms_mps2, "{:.6f}");
     return "  No effect adopted: the calibration is the nine-parameter base model.\n" +
-           fmt::format("  Residual RMS {} m/s^2 (noise explains {} m/s^2).\n", before, Num(m.noise_rms_mps2, "{:.6f}"));
+           fmt::format("  Residual RMS {} m/s^2 (noise explains {} m/s^2).\n", before, Num(m.noise_rms_mps2, "{:.6f}")) +
+           conclusion;
   }
-  std::string out = fmt::format("  Before (base model): RMS {} m/s^2.  After: RMS {} m/s^2.\n",
+  std::string out = conclusion + fmt::format("  Before (base model): RMS {} m/s^2.  After: RMS {} m/s^2.\n",
                                 Num(m.effects.front().rms_before_mps2, "{:.6f}"),
                                 Num(m.effects.back().rms_after_mps2, "{:.6f}"));
   for (const ReportEffect& e : m.effects) {
@@ -233,6 +236,7 @@ std::string RenderReportText(const ReportModel& m) {
   out += "  raw = K T^-1 a + b: bias b in counts, scale K in counts/(m/s^2),\n"
          "  misalignment angles of T in rad.\n\n";
   out += ParameterTable(m.parameters);
+  for (const std::string& note : m.parameter_notes) out += "\n" + Wrap("  ", note, 2);
   out += Heading(3, "Residuals");
   out += Residuals(m);
   out += Heading(4, "Diagnosis");

@@ -27,8 +27,9 @@ static const ACCELCAL_REAL accelcal_correction_mps2_per_count[3][3] = {
     {0.029325513196480937, -0.00011363636363636364, -8.670520231213873e-05},
     {0, 0.028409090909090908, -5.7803468208092484e-05},
     {0, 0, 0.028901734104046242}};
-/* quadratic_nonlinearity: K (counts per m/s^2) and q (counts per (m/s^2)^2) */
+/* the nonlinear effects: K (counts per m/s^2) */
 static const ACCELCAL_REAL accelcal_scale_counts_per_mps2[3] = {34.1, 35.2, 34.6};
+/* quadratic_nonlinearity: q (counts per (m/s^2)^2) */
 static const ACCELCAL_REAL accelcal_quadratic_counts_per_mps2_sq[3] = {0.02, -0.015, 0.01};
 /* temperature effects: reference temperature, degC */
 static const ACCELCAL_REAL accelcal_temp_ref_c = 25;

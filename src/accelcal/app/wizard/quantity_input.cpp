@@ -47,7 +47,7 @@ std::string RadiusSuggestion(double number) {
   for (const auto& [unit, factor] : {std::pair{"mm", 0.001}, std::pair{"cm", 0.01},
                                      std::pair{"m", 1.0}}) {
     const double m = number * factor;
-    if (m < kMinRadiusM || m > kMaxRadiusM) continue;
+    if (!IsPlausibleTurntableRadius(m)) continue;
     const double distance = std::abs(std::log10(m / 0.1));
     if (distance < best_distance) {
       best_distance = distance;
@@ -71,7 +71,7 @@ QuantityResult ParseRadius(std::string_view text) {
   else if (q.unit != "m" && !q.unit.empty())
     return {kNaN, fmt::format("unknown unit '{}' for a radius: use mm, cm or m", q.unit)};
   const double radius_m = q.number * factor;
-  if (radius_m < kMinRadiusM || radius_m > kMaxRadiusM)
+  if (!IsPlausibleTurntableRadius(radius_m))
     return {kNaN, fmt::format("{} is not a plausible turntable radius{}", AsTyped(q, "m"),
                               RadiusSuggestion(q.number))};
   return {radius_m, ""};
@@ -87,7 +87,7 @@ QuantityResult ParseRpm(std::string_view text) {
   else if (q.unit != "rpm" && !q.unit.empty())
     return {kNaN, fmt::format("unknown unit '{}' for a speed: use rpm, rps or rad/s", q.unit)};
   const double rpm = q.number * factor;
-  if (rpm < kMinRpm || rpm > kMaxRpm)
+  if (!IsPlausibleTurntableRpm(rpm))
     return {kNaN, fmt::format("{} ({:g} rpm) is not a plausible turntable speed (expected {:g} to "
                               "{:g} rpm)", AsTyped(q, "rpm"), rpm, kMinRpm, kMaxRpm)};
   return {rpm, ""};

@@ -10,6 +10,7 @@
 #include "accelcal/acquire/capture_engine/turntable_stability.h"
 #include "accelcal/base/capture_set.h"
 #include "accelcal/base/sensor_model.h"
+#include "accelcal/calibration/turntable_plausibility.h"
 
 namespace accelcal {
 
@@ -19,11 +20,8 @@ struct QuantityResult {
   bool ok() const { return error.empty(); }
 };
 
-// Plausible turntable radii, m, and speeds, rpm.
-inline constexpr double kMinRadiusM = 0.005;
-inline constexpr double kMaxRadiusM = 2.0;
-inline constexpr double kMinRpm = 1.0;
-inline constexpr double kMaxRpm = 3000.0;
+// The plausible radii and speeds (kMinRadiusM ... kMaxRpm) are those every turntable run is
+// screened with: calibration/turntable_plausibility.h.
 
 // "120 mm", "12 cm", "0.12 m", "0.12" (m). Result in m.
 QuantityResult ParseRadius(std::string_view text);

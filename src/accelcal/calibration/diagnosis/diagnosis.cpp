@@ -2,11 +2,15 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 
 #include <fmt/core.h>
+#include <fmt/ranges.h>
 
 #include "accelcal/base/chi_square.h"
+#include "accelcal/calibration/diagnosis/evidence.h"
 #include "accelcal/calibration/diagnosis/extended_model.h"
+#include "accelcal/calibration/diagnosis/leave_one_out.h"
 #include "accelcal/calibration/fit/least_squares.h"
 
 namespace accelcal {
@@ -22,9 +26,7 @@ ResidualStats StatsOf(const FitSummary& s) {
   return r;
 }
 
-bool Consistent(const ResidualStats& r, const DiagnosisOptions& o) {
-  return r.dof <= 0 || r.p_value >= o.consistency_p;
-}
+bool Consistent(const ResidualStats& r, double p) { return r.dof <= 0 || r.p_value >= p; }
 
 LeastSquaresOptions SolverOptions(const FitOptions& fit) {
   LeastSquaresOptions o = fit.solver;
@@ -39,28 +41,25 @@ Eigen::VectorXd StartFrom(const Eigen::VectorXd& previous, const ExtendedResidua
   return p;
 }
 
-// Leave-one-capture-out: refit without each capture (warm-started) and predict it.
-double LeaveOneOutRms(const ExtendedResidualModel& model, const std::vector<FitCapture>& captures,
-                      const Eigen::VectorXd& p_full, const LeastSquaresOptions& solver) {
-  double sum_sq = 0.0;
-  std::vector<FitCapture> rest;
-  for (size_t i = 0; i < captures.size(); ++i) {
-    rest.clear();
-    for (size_t j = 0; j < captures.size(); ++j)
-      if (j != i) rest.push_back(captures[j]);
-    const FitSummary s = SolveWeightedLeastSquares(model, rest, p_full, solver);
-    const Eigen::VectorXd& p = s.IsUsable() ? s.parameters : p_full;
-    const double r = model.Residual(p, captures[i], solver.gravity_mps2, nullptr, nullptr);
-    sum_sq += r * r;
-  }
-  return std::sqrt(sum_sq / static_cast<double>(captures.size()));
-}
-
 struct Trial {
   CandidateScore score;
   FitSummary fit;
   const Effect* effect = nullptr;
+  double loo_family_p = 1.0;  // of the worst left-out prediction (scaled by the fit's noise)
 };
+
+void ScoreLeftOut(const ExtendedResidualModel& model, const std::vector<FitCapture>& captures,
+                  const LeastSquaresOptions& solver, Trial* t) {
+  const LeaveOneOutResult loo = PredictLeftOut(model, captures, t->fit.parameters, solver);
+  t->score.loo_rms_mps2 = loo.rms_mps2;
+  if (loo.worst_index < 0) return;
+  // Noise underestimated by the captures' own statistics inflates every z alike: judge the worst
+  // against the spread the fit itself shows.
+  const double scale = std::sqrt(std::max(1.0, t->fit.chi2 / t->fit.dof));
+  t->score.loo_worst_z = loo.predictions[static_cast<size_t>(loo.worst_index)].z / scale;
+  t->score.loo_worst_id = loo.predictions[static_cast<size_t>(loo.worst_index)].id;
+  t->loo_family_p = WorstOfNormalsPValue(std::fabs(t->score.loo_worst_z), static_cast<int>(captures.size()));
+}
 
 Trial TryCandidate(const Effect* effect, const std::vector<const Effect*>& adopted,
                    const FitSummary& current, const std::vector<FitCapture>& captures,
@@ -95,74 +94,184 @@ Trial TryCandidate(const Effect* effect, const std::vector<const Effect*>& adopt
   const double noise_scale = std::max(1.0, t.fit.chi2 / t.fit.dof);
   const double delta = std::max(0.0, current.chi2 - t.fit.chi2) / noise_scale;
   t.score.lr_p_value = ChiSquareSurvival(delta, m);
-  if (options.leave_one_out) t.score.loo_rms_mps2 = LeaveOneOutRms(model, captures, t.fit.parameters, solver);
+  if (options.leave_one_out) ScoreLeftOut(model, captures, solver, &t);
   return t;
 }
 
-double Correlation(const std::vector<double>& x, const std::vector<double>& y) {
-  const double n = static_cast<double>(x.size());
-  double mx = 0, my = 0;
-  for (size_t i = 0; i < x.size(); ++i) { mx += x[i] / n; my += y[i] / n; }
-  double sxy = 0, sxx = 0, syy = 0;
-  for (size_t i = 0; i < x.size(); ++i) {
-    sxy += (x[i] - mx) * (y[i] - my);
-    sxx += (x[i] - mx) * (x[i] - mx);
-    syy += (y[i] - my) * (y[i] - my);
+// The ranking: BIC on the chi2 divided by one residual scale shared by the round's candidates,
+// c = max(1, the smallest chi2/dof among them) (the quasi-likelihood BIC with a common
+// overdispersion, Burnham & Anderson 2002, sec. 2.5), so that noise no candidate explains does
+// not make small differences look decisive. Each candidate's own scale would not do: every
+// candidate that explains the residuals only in part would get chi2 / scale = dof, and all of
+// them would tie.
+double ResidualScale(const std::vector<Trial>& trials, const std::vector<int>& ranked) {
+  double smallest = INFINITY;
+  for (int i : ranked) {
+    const FitSummary& f = trials[static_cast<size_t>(i)].fit;
+    smallest = std::min(smallest, f.chi2 / f.dof);
   }
-  return sxx > 0 && syy > 0 ? sxy / std::sqrt(sxx * syy) : 0.0;
+  return std::isfinite(smallest) ? std::max(1.0, smallest) : 1.0;
 }
 
-// How the residuals before the effect relate to its physical variable, by capture kind.
-std::string RegressorEvidence(const Effect& effect, const FitSummary& before,
-                              const std::vector<FitCapture>& captures) {
-  if (effect.RegressorName().empty()) return {};
-  std::vector<double> x, y;
-  int static_without = 0;
-  double static_rms = 0.0;
-  for (size_t i = 0; i < captures.size(); ++i) {
-    const double v = effect.Regressor(captures[i]);
-    const double r = before.residuals[i].residual_mps2;
-    if (std::isfinite(v)) {
-      x.push_back(v);
-      y.push_back(r);
-    } else if (captures[i].kind == CaptureKind::kStatic) {
-      ++static_without;
-      static_rms += r * r;
+double ScaledBic(const Trial& t, int n, double scale) {
+  return t.fit.chi2 / scale + t.fit.parameters.size() * std::log(static_cast<double>(n));
+}
+
+// Two candidates that explain the captures alike imply different calibrations when exactly one
+// of them corrects later readings (apply would differ), or when their nine parameters differ by
+// more than twice their combined 1-sigma. Empty when they do not.
+std::string NineParameterDifference(const Trial& a, const Trial& b);
+
+std::string MaterialDifference(const Trial& a, const Trial& b) {
+  if (std::string d = NineParameterDifference(a, b); !d.empty()) return d;
+  if (a.effect->CorrectsReadings() != b.effect->CorrectsReadings()) {
+    const Trial& corrects = a.effect->CorrectsReadings() ? a : b;
+    const Trial& other = a.effect->CorrectsReadings() ? b : a;
+    return fmt::format("{} would correct every later reading and {} would not",
+                       corrects.score.effect, other.score.effect);
+  }
+  return {};
+}
+
+// Empty when the two fits' nine parameters agree within twice their combined 1-sigma.
+std::string NineParameterDifference(const Trial& a, const Trial& b) {
+  int worst = -1;
+  double worst_sigmas = 0.0;
+  for (int i = 0; i < kNumBaseParameters; ++i) {
+    const double sigma = std::hypot(a.fit.uncertainty(i), b.fit.uncertainty(i));
+    const double sigmas = std::fabs(a.fit.parameters(i) - b.fit.parameters(i)) / sigma;
+    if (sigmas > worst_sigmas) {
+      worst_sigmas = sigmas;
+      worst = i;
     }
   }
-  if (x.size() < 3 || *std::max_element(x.begin(), x.end()) == *std::min_element(x.begin(), x.end()))
-    return {};
-  const double rho = Correlation(x, y);
-  std::string out = fmt::format("the residuals before it {} with {} (correlation {:+.2f} over {} captures)",
-                                rho >= 0 ? "grow" : "fall", effect.RegressorName(), rho, x.size());
-  if (static_without > 0)
-    out += fmt::format("; static captures, which have no {}, show an RMS of {:.4f} m/s^2",
-                       effect.RegressorName(), std::sqrt(static_rms / static_without));
-  return out;
+  if (worst_sigmas <= 2.0) return {};
+  return fmt::format("their {} differ by {:.1f} sigma", ParameterName(worst), worst_sigmas);
 }
 
-// Where the adopted effect changed the residuals: by capture kind, and how well that change
-// matches the residuals it explains.
-std::string Evidence(const Effect& effect, const FitSummary& before, const FitSummary& after,
-                     const std::vector<FitCapture>& captures) {
-  double max_static = 0.0, max_turntable = 0.0, sxy = 0.0, sxx = 0.0, syy = 0.0;
-  for (size_t i = 0; i < captures.size(); ++i) {
-    const double r = before.residuals[i].residual_mps2;
-    const double explained = r - after.residuals[i].residual_mps2;
-    double& max = captures[i].kind == CaptureKind::kStatic ? max_static : max_turntable;
-    max = std::max(max, std::fabs(explained));
-    sxy += r * explained;
-    sxx += explained * explained;
-    syy += r * r;
+// Which of two candidates the captures favour when neither is decisively better by BIC: `best`
+// is ranked first by ScaledBic, `other` is within 6 of it (short of "strong" on the Kass &
+// Raftery scale). +1: best; -1: other; 0: the captures cannot tell them apart.
+// - BIC within 2 ("not worth more than a bare mention"): cannot tell.
+// - BIC within 2..6: the prediction of the captures each did not see decides (the smaller
+//   leave-one-out RMS), as the issue asks of an adopted effect: a drift in time and a
+//   temperature warm-up can fit the captures alike, but the right one predicts the first and
+//   last poses from the others. Without leave-one-out, BIC decides.
+int PreferredOf(const Trial& best, const Trial& other, int n, double scale) {
+  const double delta = ScaledBic(other, n, scale) - ScaledBic(best, n, scale);
+  if (delta < 2.0) return 0;
+  if (delta >= 6.0 || other.score.loo_rms_mps2 < 0.0 || best.score.loo_rms_mps2 < 0.0) return +1;
+  return other.score.loo_rms_mps2 < best.score.loo_rms_mps2 ? -1 : +1;
+}
+
+// Why `loser` is not adopted: `winner` predicts the left-out captures better (PreferredOf).
+std::string PredictionVerdict(const Trial& winner, const Trial& loser) {
+  return fmt::format("{} fits these captures about as well, but {} predicts each capture from the "
+                     "others better (leave-one-out RMS {:.5f} against {:.5f} m/s^2)",
+                     loser.score.effect, winner.score.effect, winner.score.loo_rms_mps2,
+                     loser.score.loo_rms_mps2);
+}
+
+// The effect's own parameters in a fit of `model` (its index among the model's effects).
+std::vector<double> EffectParameters(const FitSummary& fit, const ExtendedResidualModel& model, int e) {
+  const int offset = model.Offset(e);
+  const int m = model.effects()[static_cast<size_t>(e)]->NumParameters();
+  return {fit.parameters.data() + offset, fit.parameters.data() + offset + m};
+}
+
+// Empty when the trial passes significance and the guard; else why not, in words.
+std::string WhyNotAdopted(const Trial& t, const std::vector<const Effect*>& adopted,
+                          const FitSummary& current, const std::vector<FitCapture>& captures,
+                          const EffectContext& ctx, int tried, const DiagnosisOptions& options) {
+  const CandidateScore& s = t.score;
+  const double family_p = std::min(1.0, s.lr_p_value * tried);
+  const double current_bic = current.chi2 + current.parameters.size() * std::log(double(captures.size()));
+  if (s.bic >= current_bic || family_p >= options.adoption_p)
+    return fmt::format("not significant (p = {:.3g} over {} candidates, needed < {:g})", family_p,
+                       tried, options.adoption_p);
+  if (options.leave_one_out && t.loo_family_p < options.prediction_p)
+    return fmt::format("it does not predict capture {} when that one is left out: off by {:.1f} "
+                       "times what noise explains (p = {:.2g} over {} captures)", s.loo_worst_id,
+                       std::fabs(s.loo_worst_z), t.loo_family_p, captures.size());
+  std::vector<const Effect*> effects = adopted;
+  effects.push_back(t.effect);
+  const ExtendedResidualModel model(effects, ctx);
+  const std::vector<double> theta = EffectParameters(t.fit, model, static_cast<int>(adopted.size()));
+  if (std::string why = t.effect->WhyImplausible(theta.data(), t.fit.Model(), captures); !why.empty())
+    return "implausible: " + why;
+  return {};
+}
+
+// Runs one round: scores every candidate and returns the index of the one to adopt (the best
+// by ScaledBic among those that pass WhyNotAdopted; when another that passes is within 6 of it
+// and implies a different calibration, PreferredOf decides between them, and when it cannot, the
+// captures cannot tell the two apart), or -1.
+int RunRound(const std::vector<const Effect*>& adopted, const FitSummary& current,
+             const std::vector<FitCapture>& captures, const FitOptions& fit_options,
+             const EffectContext& ctx, const DiagnosisOptions& options, DiagnosisRound* round,
+             std::vector<Trial>* trials, std::vector<std::string>* ambiguous) {
+  for (const Effect* e : AllEffects()) {
+    if (std::find(adopted.begin(), adopted.end(), e) != adopted.end()) continue;
+    trials->push_back(TryCandidate(e, adopted, current, captures, fit_options, ctx, options));
   }
-  const double share = syy > 0.0 ? 1.0 - (syy - 2 * sxy + sxx) / syy : 0.0;
-  std::string out = std::string(effect.Story());
-  if (std::string by_variable = RegressorEvidence(effect, before, captures); !by_variable.empty())
-    out += ": " + by_variable;
-  out += fmt::format("; adding it changes turntable residuals by up to {:.4f} m/s^2 and static ones "
-                     "by up to {:.4f}, and accounts for {:.0f} % of the residual sum of squares",
-                     max_turntable, max_static, 100.0 * std::clamp(share, 0.0, 1.0));
-  return out;
+  const int n = static_cast<int>(captures.size());
+  std::vector<int> ranked;
+  for (size_t i = 0; i < trials->size(); ++i)
+    if ((*trials)[i].score.skipped_reason.empty()) ranked.push_back(static_cast<int>(i));
+  const double scale = ResidualScale(*trials, ranked);
+  std::stable_sort(ranked.begin(), ranked.end(), [&](int a, int b) {
+    return ScaledBic((*trials)[static_cast<size_t>(a)], n, scale) <
+           ScaledBic((*trials)[static_cast<size_t>(b)], n, scale);
+  });
+  const int tried = static_cast<int>(ranked.size());
+  std::vector<int> passing;
+  for (int i : ranked) {
+    Trial& t = (*trials)[static_cast<size_t>(i)];
+    t.score.rejected_reason = WhyNotAdopted(t, adopted, current, captures, ctx, tried, options);
+    if (t.score.rejected_reason.empty()) passing.push_back(i);
+  }
+  int chosen = passing.empty() ? -1 : passing.front();
+  std::string tie;
+  for (size_t k = 1; chosen >= 0 && k < passing.size(); ++k) {
+    Trial& best = (*trials)[static_cast<size_t>(chosen)];
+    Trial& other = (*trials)[static_cast<size_t>(passing[k])];
+    if (ScaledBic(other, n, scale) - ScaledBic(best, n, scale) >= 6.0) break;
+    const std::string difference = MaterialDifference(best, other);
+    if (difference.empty()) continue;  // either one gives the same calibration
+    const int preferred = PreferredOf(best, other, n, scale);
+    if (preferred > 0) {
+      other.score.rejected_reason = PredictionVerdict(best, other);
+      continue;
+    }
+    if (preferred < 0) {
+      best.score.rejected_reason = PredictionVerdict(other, best);
+      chosen = passing[k];
+      continue;
+    }
+    tie = fmt::format("{} and {} explain the captures alike (BIC within {:.1f}) but {}: these captures "
+                      "cannot tell them apart", best.score.effect, other.score.effect,
+                      ScaledBic(other, n, scale) - ScaledBic(best, n, scale), difference);
+    *ambiguous = {best.score.effect, other.score.effect};
+    best.score.rejected_reason = tie;
+    other.score.rejected_reason = tie;
+    chosen = -1;
+  }
+  for (const Trial& t : *trials) round->candidates.push_back(t.score);
+  if (tried == 0) {
+    round->outcome = "no candidate effect can be identified from these captures";
+  } else if (!tie.empty()) {
+    round->outcome = tie;
+  } else if (chosen < 0) {
+    const CandidateScore& best = (*trials)[static_cast<size_t>(ranked.front())].score;
+    round->outcome = fmt::format("no candidate passes: the best ranked, {}, is {}", best.effect,
+                                 best.rejected_reason);
+  } else {
+    const CandidateScore& s = (*trials)[static_cast<size_t>(chosen)].score;
+    round->outcome = fmt::format("adopted {}: chi2/dof {:.2f} -> {:.2f}, p = {:.3g} over {} candidates",
+                                 s.effect, current.Chi2PerDof(), s.after.Chi2PerDof(),
+                                 std::min(1.0, s.lr_p_value * tried), tried);
+  }
+  return chosen;
 }
 
 AdoptedEffect Adopt(const Trial& best, const ExtendedResidualModel& model, int effect_index,
@@ -188,68 +297,6 @@ double NoiseRms(const FitSummary& s) {
   return s.residuals.empty() ? 0.0 : std::sqrt(sum / static_cast<double>(s.residuals.size()));
 }
 
-// The ranking: the leave-one-capture-out prediction error when it was computed (it judges each
-// candidate on captures it did not see, which separates near-collinear effects such as a
-// temperature warm-up and a drift in time better than the fit's own chi2), else BIC.
-bool RanksBefore(const CandidateScore& a, const CandidateScore& b) {
-  if (a.loo_rms_mps2 >= 0.0 && b.loo_rms_mps2 >= 0.0) return a.loo_rms_mps2 < b.loo_rms_mps2;
-  return a.bic < b.bic;
-}
-
-// Other candidates worth naming beside the adopted one: those within 6 of its BIC (closer than
-// "strong" evidence on the Kass & Raftery scale), and those that fit these captures more closely
-// by BIC but predicted the left-out captures worse.
-std::string RunnersUp(const std::vector<Trial>& trials, int best) {
-  const CandidateScore& b = trials[best].score;
-  std::string out;
-  for (size_t i = 0; i < trials.size(); ++i) {
-    const CandidateScore& c = trials[i].score;
-    if (static_cast<int>(i) == best || !c.skipped_reason.empty()) continue;
-    const double diff = c.bic - b.bic;
-    if (std::fabs(diff) < 6.0)
-      out += fmt::format("; {} explains the captures almost as well (BIC {:+.1f})", c.effect, diff);
-    else if (diff < 0.0 && c.loo_rms_mps2 >= 0.0)
-      out += fmt::format("; {} fits these captures more closely (BIC {:+.1f}) but predicts left-out "
-                         "captures worse ({:.5f} against {:.5f} m/s^2)",
-                         c.effect, diff, c.loo_rms_mps2, b.loo_rms_mps2);
-  }
-  return out;
-}
-
-// Runs one round: scores every candidate and returns the index of the one to adopt, or -1.
-int RunRound(const std::vector<const Effect*>& adopted, const FitSummary& current,
-             const std::vector<FitCapture>& captures, const FitOptions& fit_options,
-             const EffectContext& ctx, const DiagnosisOptions& options, DiagnosisRound* round,
-             std::vector<Trial>* trials) {
-  for (const Effect* e : AllEffects()) {
-    if (std::find(adopted.begin(), adopted.end(), e) != adopted.end()) continue;
-    trials->push_back(TryCandidate(e, adopted, current, captures, fit_options, ctx, options));
-    round->candidates.push_back(trials->back().score);
-  }
-  int best = -1, tried = 0;
-  for (size_t i = 0; i < trials->size(); ++i) {
-    if (!(*trials)[i].score.skipped_reason.empty()) continue;
-    ++tried;
-    if (best < 0 || RanksBefore((*trials)[i].score, (*trials)[best].score)) best = static_cast<int>(i);
-  }
-  if (best < 0) {
-    round->outcome = "no candidate effect can be identified from these captures";
-    return -1;
-  }
-  const CandidateScore& s = (*trials)[best].score;
-  const double family_p = std::min(1.0, s.lr_p_value * tried);
-  if (s.bic >= current.chi2 + current.parameters.size() * std::log(double(captures.size())) ||
-      family_p >= options.adoption_p) {
-    round->outcome = fmt::format("the best candidate, {}, is not significant (p = {:.3g} over {} "
-                                 "candidates, needed < {:g})", s.effect, family_p, tried,
-                                 options.adoption_p);
-    return -1;
-  }
-  round->outcome = fmt::format("adopted {}: chi2/dof {:.2f} -> {:.2f}, p = {:.3g} over {} candidates",
-                               s.effect, current.Chi2PerDof(), s.after.Chi2PerDof(), family_p, tried);
-  return best;
-}
-
 // Each adopted effect's parameters as the final fit has them (an effect adopted in a later round
 // moves the earlier ones' parameters: the round that adopted one saw a different model).
 void TakeParametersFromFinalFit(const std::vector<const Effect*>& adopted, DiagnosisReport* report) {
@@ -260,8 +307,127 @@ void TakeParametersFromFinalFit(const std::vector<const Effect*>& adopted, Diagn
       a.parameters[static_cast<size_t>(i)] = report->final_fit.parameters(offset + i);
       a.uncertainty[static_cast<size_t>(i)] = report->final_fit.uncertainty(offset + i);
     }
+    a.interpretation = adopted[e]->Interpretation(a.parameters.data());
     offset += adopted[e]->NumParameters();
   }
+}
+
+std::vector<double> Standardized(const FitSummary& fit) {
+  std::vector<double> z;
+  for (const CaptureResidual& r : fit.residuals) z.push_back(r.residual_mps2 / r.sigma_mps2);
+  return z;
+}
+
+// What a structure in the residuals asks to capture, in words.
+std::string AdviceFor(const std::string& variable) {
+  if (variable.find("time") != std::string::npos)
+    return "repeat the first pose at the end of the session (a drift shows as one pose reading "
+           "differently) and record the temperature on every capture";
+  if (variable == "temperature")
+    return "capture at temperatures that do not follow the session's time (warm or cool the "
+           "sensor between poses)";
+  if (variable.find("turntable") != std::string::npos || variable.find("centripetal") != std::string::npos)
+    return "turntable runs at more radii and speeds, on a levelled table, with the radius measured "
+           "to the sensor's package";
+  if (variable.find("corners") != std::string::npos)
+    return "more poses that load all three axes (corners), with both signs of u_x u_y u_z";
+  return fmt::format("more poses at other input levels of the axis the residuals follow ({})", variable);
+}
+
+// What to capture next when the residuals are not explained: what their structure asks for,
+// the captures that disagree most, and the effects these captures could not test.
+std::string NextCaptures(const DiagnosisReport& report, const std::vector<FitCapture>& captures) {
+  std::vector<std::string> parts;
+  if (report.structure.Found(0.05))
+    parts.push_back(AdviceFor(report.structure.tested[static_cast<size_t>(report.structure.strongest)].variable));
+  const std::vector<double> z = Standardized(report.base);
+  std::vector<size_t> order(z.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(), [&](size_t a, size_t b) { return std::fabs(z[a]) > std::fabs(z[b]); });
+  std::vector<std::string> worst;
+  for (size_t k = 0; k < std::min<size_t>(2, order.size()); ++k)
+    worst.push_back(fmt::format("{} ({:.1f} sigma)", captures[order[k]].id, z[order[k]]));
+  if (!worst.empty())
+    parts.push_back(fmt::format("re-take the captures that disagree most ({}) to tell a bad capture "
+                                "from an effect", fmt::join(worst, ", ")));
+  for (const std::string& name : report.ambiguous)
+    if (const Effect* e = FindEffect(name))
+      parts.push_back(fmt::format("to tell {} apart: {}", name, e->CapturePlan()));
+  if (!report.rounds.empty()) {
+    for (const CandidateScore& c : report.rounds.front().candidates) {
+      const Effect* e = FindEffect(c.effect);
+      if (e != nullptr && !c.skipped_reason.empty() && c.skipped_reason.rfind("its fit", 0) != 0)
+        parts.push_back(fmt::format("to test {}: {}", c.effect, e->CapturePlan()));
+    }
+  }
+  return fmt::format("{}", fmt::join(parts, "; "));
+}
+
+// Why the adopted set does not explain the residuals (step 4 of the header); empty when it does.
+std::string WhyNotExplained(const std::vector<FitCapture>& captures, const FitOptions& fit_options,
+                            const DiagnosisOptions& options, DiagnosisReport* report,
+                            const std::vector<const Effect*>& adopted) {
+  const ResidualStats last = StatsOf(report->final_fit);
+  if (!Consistent(last, options.consistency_p))
+    return fmt::format("their residuals still exceed noise (chi2/dof {:.2f}, p = {:.2g})",
+                       last.Chi2PerDof(), last.p_value);
+  if (report->structure.Found(options.structure_p)) return report->structure.Describe();
+  if (!options.leave_one_out) return {};
+  // The final model, judged against noise alone: each capture predicted from the others.
+  const ExtendedResidualModel model(adopted, report->context);
+  const LeaveOneOutResult loo =
+      PredictLeftOut(model, captures, report->final_fit.parameters, SolverOptions(fit_options));
+  if (loo.worst_index < 0) return {};
+  const double p = WorstOfNormalsPValue(loo.worst_abs_z, static_cast<int>(captures.size()));
+  if (p >= options.prediction_p) return {};
+  return fmt::format("they do not predict capture {} from the others ({:.1f} times what noise "
+                     "explains, p = {:.2g})", loo.predictions[static_cast<size_t>(loo.worst_index)].id,
+                     loo.worst_abs_z, p);
+}
+
+// Step 4 of the header: keep the adopted effects only when they explain the residuals.
+void JudgeExplained(const std::vector<FitCapture>& captures, const FitOptions& fit_options,
+                    const DiagnosisOptions& options, const std::vector<const Effect*>& adopted,
+                    DiagnosisReport* report) {
+  if (report->consistent && report->adopted.empty()) return;
+  std::string why_withdrawn;
+  if (!report->adopted.empty()) {
+    report->structure = FindResidualStructure(captures, Standardized(report->final_fit));
+    why_withdrawn = WhyNotExplained(captures, fit_options, options, report, adopted);
+    if (why_withdrawn.empty()) return;
+    if (report->ambiguous.size() == 2) {
+      // The last round found two effects that explain the rest alike: the effects adopted before
+      // it were adopted on their own evidence and stay (withdrawing them too would leave a worse
+      // model for an ambiguity that is not theirs); the rest stays unexplained.
+      report->unexplained = true;
+      report->next_captures = NextCaptures(*report, captures);
+      report->conclusion = fmt::format(
+          "{} added; the rest of the residuals (chi2/dof {:.2f}) is explained alike by {} and by "
+          "{}, which imply different calibrations: these captures cannot tell them apart, so "
+          "neither is added; next: {}", fmt::join(report->adopted_names(), " + "),
+          report->final_fit.Chi2PerDof(), report->ambiguous[0], report->ambiguous[1],
+          report->next_captures);
+      return;
+    }
+    for (const AdoptedEffect& a : report->adopted) report->withdrawn.push_back(a.name);
+    report->adopted.clear();
+    report->final_fit = report->base;
+    report->stages.resize(1);
+    report->consistent = false;
+  }
+  report->unexplained = true;
+  report->structure = FindResidualStructure(captures, Standardized(report->base));
+  report->next_captures = NextCaptures(*report, captures);
+  std::string text = "the residuals exceed noise and no effect of the library explains them";
+  if (!report->withdrawn.empty())
+    text += fmt::format(" ({} fitted better but {}: withdrawn, the base model kept)",
+                        fmt::join(report->withdrawn, " + "), why_withdrawn);
+  else if (report->ambiguous.size() == 2)
+    text += fmt::format(" alone ({} and {} explain them alike and imply different calibrations)",
+                        report->ambiguous[0], report->ambiguous[1]);
+  else if (report->structure.Found(options.structure_p))
+    text += " (" + report->structure.Describe() + ")";
+  report->conclusion = text + "; next: " + report->next_captures;
 }
 
 }  // namespace
@@ -269,6 +435,8 @@ void TakeParametersFromFinalFit(const std::vector<const Effect*>& adopted, Diagn
 std::string DiagnosisOptions::Validate() const {
   if (!(consistency_p > 0.0 && consistency_p < 1.0)) return "consistency_p must be in (0, 1)";
   if (!(adoption_p > 0.0 && adoption_p < 1.0)) return "adoption_p must be in (0, 1)";
+  if (!(prediction_p > 0.0 && prediction_p < 1.0)) return "prediction_p must be in (0, 1)";
+  if (!(structure_p > 0.0 && structure_p < 1.0)) return "structure_p must be in (0, 1)";
   if (max_effects < 0) return "max_effects must be >= 0";
   return {};
 }
@@ -299,7 +467,7 @@ DiagnosisReport Diagnose(const std::vector<FitCapture>& captures, const FitOptio
   while (true) {
     DiagnosisRound round;
     round.current = StatsOf(report.final_fit);
-    if (Consistent(round.current, options)) {
+    if (Consistent(round.current, options.consistency_p)) {
       round.outcome = fmt::format("the residuals are what noise explains (chi2/dof {:.2f}, p = {:.3g})",
                                   round.current.Chi2PerDof(), round.current.p_value);
       report.rounds.push_back(round);
@@ -312,59 +480,31 @@ DiagnosisReport Diagnose(const std::vector<FitCapture>& captures, const FitOptio
       break;
     }
     std::vector<Trial> trials;
-    const int best = RunRound(adopted, report.final_fit, captures, held_options, ctx, options, &round, &trials);
+    const int best = RunRound(adopted, report.final_fit, captures, held_options, ctx, options, &round,
+                              &trials, &report.ambiguous);
     report.rounds.push_back(round);
     if (best < 0) break;
-    adopted.push_back(trials[best].effect);
+    adopted.push_back(trials[static_cast<size_t>(best)].effect);
     const ExtendedResidualModel model(adopted, ctx);
-    report.adopted.push_back(Adopt(trials[best], model, static_cast<int>(adopted.size()) - 1,
-                                   report.final_fit, captures));
-    report.adopted.back().evidence += RunnersUp(trials, best);
-    report.final_fit = trials[best].fit;
+    report.adopted.push_back(Adopt(trials[static_cast<size_t>(best)], model,
+                                   static_cast<int>(adopted.size()) - 1, report.final_fit, captures));
+    report.adopted.back().evidence += RunnersUp(report.rounds.back().candidates, best);
+    report.final_fit = trials[static_cast<size_t>(best)].fit;
     report.stages.push_back(report.final_fit);
   }
   TakeParametersFromFinalFit(adopted, &report);
   const ResidualStats last = StatsOf(report.final_fit);
-  report.conclusion =
-      report.adopted.empty()
-          ? (report.consistent ? "the seed's model explains the captures: no effect added"
-                               : "the residuals exceed the noise but no effect of the library "
-                                 "explains them significantly")
-          : fmt::format("{} effect(s) added; residual RMS {:.5f} -> {:.5f} m/s^2 (noise explains "
+  if (report.adopted.empty())
+    report.conclusion = report.consistent ? "the seed's model explains the captures: no effect added"
+                                          : "the residuals exceed the noise (no effect looked for)";
+  else
+    report.conclusion = fmt::format("{} effect(s) added; residual RMS {:.5f} -> {:.5f} m/s^2 (noise explains "
                         "{:.5f}); {}",
                         report.adopted.size(), report.base.residual_rms_mps2, last.rms_mps2,
                         report.noise_rms_mps2,
-                        report.consistent ? "the residuals are now what noise explains"
-                                          : "the residuals still exceed the noise");
+                        "the residuals are now what noise explains");
+  if (options.max_effects > 0) JudgeExplained(captures, held_options, options, adopted, &report);
   return report;
-}
-
-std::string FormatDiagnosis(const DiagnosisReport& report) {
-  std::string out = "diagnosis: " + report.conclusion + "\n";
-  for (const AdoptedEffect& a : report.adopted) {
-    out += fmt::format("  + {}: RMS {:.5f} -> {:.5f} m/s^2, max {:.5f} -> {:.5f}, chi2/dof {:.2f} -> {:.2f}\n",
-                       a.name, a.before.rms_mps2, a.after.rms_mps2, a.before.max_abs_mps2,
-                       a.after.max_abs_mps2, a.before.Chi2PerDof(), a.after.Chi2PerDof());
-    for (size_t i = 0; i < a.parameters.size(); ++i)
-      out += fmt::format("      {:<10} {:>14.6g} +- {:<11.3g} {}\n", a.parameter_names[i],
-                         a.parameters[i], a.uncertainty[i], a.parameter_units[i]);
-    out += "      evidence: " + a.evidence + "\n";
-  }
-  for (size_t r = 0; r < report.rounds.size(); ++r) {
-    const DiagnosisRound& round = report.rounds[r];
-    out += fmt::format("  round {}: {}\n", r + 1, round.outcome);
-    for (const CandidateScore& c : round.candidates) {
-      if (!c.skipped_reason.empty()) {
-        out += fmt::format("      {:<24} skipped: {}\n", c.effect, c.skipped_reason);
-        continue;
-      }
-      out += fmt::format("      {:<24} chi2/dof {:>8.2f}  BIC {:>10.1f}  AICc {:>10.1f}{}  p {:.2g}\n",
-                         c.effect, c.after.Chi2PerDof(), c.bic, c.aicc,
-                         c.loo_rms_mps2 >= 0 ? fmt::format("  LOO {:.5f}", c.loo_rms_mps2) : "",
-                         c.lr_p_value);
-    }
-  }
-  return out;
 }
 
 }  // namespace accelcal

@@ -34,6 +34,9 @@ struct CorrectedCapture {
   Eigen::Vector3d raw_counts;  // the mean reading as the base model should see it
   double radius_m;             // turntable: the radius the reference should use
   double omega_rad_per_s;      // turntable: the speed the reference should use
+  // Turntable: the fraction of gravity along the spin axis the reference should use,
+  // |f| = sqrt((g along)^2 + (w^2 r)^2); 1 for a level table.
+  double gravity_along_axis = 1.0;
 };
 
 class Effect {
@@ -51,6 +54,14 @@ class Effect {
   virtual double ParameterScale(int i, const SensorModel& base, const EffectContext& ctx) const = 0;
   // Empty when the captures can identify the effect; otherwise why not, in words.
   virtual std::string WhyNotIdentifiable(const std::vector<FitCapture>& captures) const = 0;
+  // The captures that identify it, in words (README's effects table; what to capture next).
+  virtual std::string_view CapturePlan() const = 0;
+  // Empty when parameters `theta` are physically plausible for a bench calibration (the
+  // datasheet's or the procedure's bounds, stated in the message), given the base model and the
+  // captures they were fitted to; otherwise why not, in words. An effect whose fitted size no
+  // sensor or bench could have is a wrong explanation, however well it fits.
+  virtual std::string WhyImplausible(const double* theta, const SensorModel& base,
+                                     const std::vector<FitCapture>& captures) const = 0;
   // Applies the effect with parameters `theta` (NumParameters() values) to capture `c`.
   virtual void Correct(const double* theta, const SensorModel& base, const FitCapture& c,
                        const EffectContext& ctx, CorrectedCapture* out) const = 0;
@@ -58,6 +69,9 @@ class Effect {
   // "w^2 r", ...), and its value for a capture (NaN where it does not apply). Empty name: none
   // (the quadratic depends on each axis's input, not on one variable).
   virtual std::string_view RegressorName() const { return {}; }
+  // What parameters `theta` mean in the bench's terms, when that differs from the parameters
+  // themselves ("a spin axis tilted 2.00 deg from the vertical"); empty otherwise.
+  virtual std::string Interpretation(const double*) const { return {}; }
   virtual double Regressor(const FitCapture&) const { return kNaN; }
   // Corrections run in stage order, inverting the forward model from the outside in:
   // 0 additive shifts of the reading (temperature bias, drift), 1 scale changes, 2 the

@@ -46,7 +46,8 @@ double ExtendedResidualModel::Value(const Eigen::VectorXd& p, const FitCapture& 
   const CorrectedCapture cc = Corrected(p, c);
   const double reference =
       c.kind == CaptureKind::kTurntable
-          ? std::hypot(gravity_mps2, cc.omega_rad_per_s * cc.omega_rad_per_s * cc.radius_m)
+          ? std::hypot(gravity_mps2 * cc.gravity_along_axis,
+                       cc.omega_rad_per_s * cc.omega_rad_per_s * cc.radius_m)
           : gravity_mps2;
   return CalibratedMagnitude(p, cc.raw_counts, nullptr, nullptr) - reference;
 }

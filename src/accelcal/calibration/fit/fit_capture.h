@@ -12,9 +12,11 @@ struct FitCapture {
   int id = 0;
   CaptureKind kind = CaptureKind::kStatic;
   Eigen::Vector3d mean_counts = Eigen::Vector3d::Zero();
-  // Covariance of the mean reading, counts^2. The per-sample covariance is floored at the
-  // quantization variance (1/12 count^2 per axis) so a perfectly steady quantized signal does
-  // not get an infinite weight; then divided by the sample count (white-noise assumption).
+  // Covariance of the mean reading, counts^2. The per-sample covariance (of a turntable run: less
+  // its once-per-revolution swing at the stated speed, which averages out of the mean) is
+  // floored at the quantization variance (1/12 count^2 per axis) so a perfectly steady
+  // quantized signal does not get an infinite weight; then divided by the sample count
+  // (white-noise assumption).
   Eigen::Matrix3d mean_cov_counts2 = Eigen::Matrix3d::Identity();
   long n_samples = 0;
   double radius_m = kNaN;  // turntable only, as stated by the operator

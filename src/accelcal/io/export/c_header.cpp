@@ -49,6 +49,30 @@ std::string EffectCode(const std::string& name) {
   if (name == "temperature_scale")
     return "  /* temperature_scale: the sensitivity is k (1 + tc dT) */\n"
            "  for (j = 0; j < 3; ++j) d[j] /= (ACCELCAL_REAL)1 + accelcal_tc_scale_per_degc[j] * dt_c;\n";
+  if (name == "cubic_nonlinearity")
+    return "  /* cubic_nonlinearity: d = k u + c3 u^3, solved for u by Newton from d/k */\n"
+           "  for (j = 0; j < 3; ++j) {\n"
+           "    const ACCELCAL_REAL k = accelcal_scale_counts_per_mps2[j];\n"
+           "    const ACCELCAL_REAL c3 = accelcal_cubic_counts_per_mps2_cu[j];\n"
+           "    ACCELCAL_REAL u = d[j] / k;\n"
+           "    int it;\n"
+           "    for (it = 0; it < 4; ++it) {\n"
+           "      const ACCELCAL_REAL slope = k + 3 * c3 * u * u;\n"
+           "      if (!(slope * slope > (ACCELCAL_REAL)0.01 * k * k)) break;\n"
+           "      u -= (k * u + c3 * u * u * u - d[j]) / slope;\n"
+           "    }\n"
+           "    d[j] = k * u;\n"
+           "  }\n";
+  if (name == "cross_axis_coupling")
+    return "  /* cross_axis_coupling: each axis also reads kappa/3 times the product of the other two\n"
+           "     inputs (a magnitude fit sees only the sum kappa: shared equally) */\n"
+           "  {\n"
+           "    ACCELCAL_REAL u[3];\n"
+           "    for (j = 0; j < 3; ++j) u[j] = d[j] / accelcal_scale_counts_per_mps2[j];\n"
+           "    d[0] -= accelcal_scale_counts_per_mps2[0] * accelcal_cross_kappa_per_mps2 / 3 * u[1] * u[2];\n"
+           "    d[1] -= accelcal_scale_counts_per_mps2[1] * accelcal_cross_kappa_per_mps2 / 3 * u[2] * u[0];\n"
+           "    d[2] -= accelcal_scale_counts_per_mps2[2] * accelcal_cross_kappa_per_mps2 / 3 * u[0] * u[1];\n"
+           "  }\n";
   // quadratic_nonlinearity: d = k u + q u^2; u is the root near d / k, in the form that stays
   // accurate as q -> 0.
   return "  /* quadratic_nonlinearity: d = k u + q u^2, solved for u (root near d/k) */\n"
@@ -65,6 +89,8 @@ ExportResult ExportCHeader(const Calibration& cal, const ExportContext& context)
   const std::vector<std::string> effects = SensorEffectNames(cal);
   const bool temperature = Has(effects, "temperature_bias") || Has(effects, "temperature_scale");
   const bool quadratic = Has(effects, "quadratic_nonlinearity");
+  const bool cubic = Has(effects, "cubic_nonlinearity");
+  const bool cross = Has(effects, "cross_axis_coupling");
   const SensorModel& m = cal.model;
   const Eigen::Matrix3d M = CorrectionMatrix(m);
 
@@ -100,12 +126,22 @@ ExportResult ExportCHeader(const Calibration& cal, const ExportContext& context)
                   Triple(m.scale_counts_per_mps2), ExportNumber(m.a_yz_rad), ExportNumber(m.a_zy_rad),
                   ExportNumber(m.a_zx_rad), Triple(M.row(0).transpose()), Triple(M.row(1).transpose()),
                   Triple(M.row(2).transpose())));
-  if (quadratic) {
-    put(fmt::format("/* quadratic_nonlinearity: K (counts per m/s^2) and q (counts per (m/s^2)^2) */\n"
-                    "static const ACCELCAL_REAL accelcal_scale_counts_per_mps2[3] = {};\n"
+  if (quadratic || cubic || cross)
+    put(fmt::format("/* the nonlinear effects: K (counts per m/s^2) */\n"
+                    "static const ACCELCAL_REAL accelcal_scale_counts_per_mps2[3] = {};\n",
+                    Triple(m.scale_counts_per_mps2)));
+  if (quadratic)
+    put(fmt::format("/* quadratic_nonlinearity: q (counts per (m/s^2)^2) */\n"
                     "static const ACCELCAL_REAL accelcal_quadratic_counts_per_mps2_sq[3] = {};\n",
-                    Triple(m.scale_counts_per_mps2), Triple(EffectTriple(cal, "quadratic_nonlinearity", "q"))));
-  }
+                    Triple(EffectTriple(cal, "quadratic_nonlinearity", "q"))));
+  if (cubic)
+    put(fmt::format("/* cubic_nonlinearity: c3 (counts per (m/s^2)^3) */\n"
+                    "static const ACCELCAL_REAL accelcal_cubic_counts_per_mps2_cu[3] = {};\n",
+                    Triple(EffectTriple(cal, "cubic_nonlinearity", "c3"))));
+  if (cross)
+    put(fmt::format("/* cross_axis_coupling: kappa (per m/s^2) */\n"
+                    "static const ACCELCAL_REAL accelcal_cross_kappa_per_mps2 = {};\n",
+                    ExportNumber(EffectParameterValue(cal, "cross_axis_coupling", "kappa"))));
   if (temperature) {
     put(fmt::format("/* temperature effects: reference temperature, degC */\n"
                     "static const ACCELCAL_REAL accelcal_temp_ref_c = {};\n",

