@@ -279,6 +279,11 @@ TEST(CalibrationFit, SixFacesGiveBiasAndScaleWithTheAnglesHeld) {
   const FitSummary s = FitCalibration(set, Options());
   ASSERT_TRUE(s.IsUsable()) << s.FullReport();
   ASSERT_EQ(s.held.size(), 3u) << s.FullReport();
+  // Six fitted parameters, six captures: no degrees of freedom, and no "-1.00" printed for them
+  // (issue 17 item 12).
+  EXPECT_EQ(s.dof, 0);
+  EXPECT_EQ(s.BriefReport().find("-1.00"), std::string::npos) << s.BriefReport();
+  EXPECT_NE(s.BriefReport().find("no degrees of freedom"), std::string::npos) << s.BriefReport();
   for (const HeldParameter& h : s.held) {
     EXPECT_GE(h.index, kMisYZ);
     EXPECT_EQ(s.parameters(h.index), 0.0);

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
+#include <random>
 #include <sstream>
 
 #include <gtest/gtest.h>
@@ -200,6 +201,51 @@ TEST(ReportModel, FromACalibrationFileAlone) {
   for (const json& c : j["captures"])
     if (c["used"].get<bool>()) { sum += std::pow(c["sigma_mps2"].get<double>(), 2); ++n; }
   EXPECT_NEAR(m.noise_rms_mps2, std::sqrt(sum / n), 1e-15);
+}
+
+// Issue 14: a reduced model (six faces: the angles held at 0) is marked in every report form,
+// not only listed among the warnings.
+TEST(ReportModel, HeldParametersAreMarkedInTheTableTextHtmlAndJson) {
+  SensorModel truth;
+  truth.bias_counts = {2051.3, 2037.8, 2069.2};
+  truth.scale_counts_per_mps2 = {34.91, 35.42, 34.17};
+  std::mt19937_64 rng(3);
+  std::normal_distribution<double> noise(0.0, 1.5);
+  CalibrationRequest request;
+  for (const Eigen::Vector3d& up : {Eigen::Vector3d(0, 0, 1), Eigen::Vector3d(0, 0, -1), Eigen::Vector3d(1, 0, 0),
+                                    Eigen::Vector3d(-1, 0, 0), Eigen::Vector3d(0, 1, 0), Eigen::Vector3d(0, -1, 0)}) {
+    Capture c;
+    c.id = static_cast<int>(request.captures.size()) + 1;
+    c.kind = CaptureKind::kStatic;
+    const Eigen::Vector3d raw = truth.Raw(9.80665 * up);
+    for (int i = 0; i < 500; ++i) {
+      Sample s;
+      s.t_s = c.id * 100.0 + i * 0.01;
+      s.raw_counts = raw + Eigen::Vector3d(noise(rng), noise(rng), noise(rng));
+      c.samples.push_back(s);
+    }
+    request.captures.push_back(c);
+  }
+  request.source_name = "six faces";
+  const CalibrationOutcome outcome = CalibrateCaptures(request);
+  ASSERT_TRUE(outcome.usable()) << outcome.diagnosis.base.message;
+  ReportInputs in;
+  in.calibration = outcome.MakeCalibration(true);
+  ASSERT_EQ(in.calibration.held.size(), 3u);
+  const ReportModel m = BuildReportModel(in);
+  ASSERT_EQ(m.parameters.size(), 9u);
+  for (size_t i = 0; i < 9; ++i) EXPECT_EQ(m.parameters[i].held, i >= 6) << m.parameters[i].name;
+  const std::string report_text = RenderReportText(m);
+  // The parameter table (the warnings above it name the held parameters too).
+  const std::string text = report_text.substr(report_text.find("  Parameter "));
+  const std::string held_row = text.substr(text.find(m.parameters[6].name));
+  EXPECT_EQ(held_row.substr(0, held_row.find('\n')).find("held") != std::string::npos, true) << held_row;
+  const std::string fitted_row = text.substr(text.find(m.parameters[0].name));
+  EXPECT_EQ(fitted_row.substr(0, fitted_row.find('\n')).find("held"), std::string::npos);
+  EXPECT_TRUE(Contains(RenderReportHtml(m), "<td class=\"n\">held</td>"));
+  const json j = json::parse(ReportJsonText(m));
+  EXPECT_TRUE(j["parameters"][6]["held"].get<bool>());
+  EXPECT_FALSE(j["parameters"][0]["held"].get<bool>());
 }
 
 TEST(ReportModel, EffectFieldsOfTheWrongTypeAreRefusedNamingTheField) {

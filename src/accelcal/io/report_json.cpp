@@ -15,7 +15,7 @@ json Num(double v) { return JsonNumber(v); }
 json Parameters(const std::vector<ReportParameter>& params) {
   json a = json::array();
   for (const ReportParameter& p : params)
-    a.push_back({{"name", p.name}, {"unit", p.unit}, {"value", Num(p.value)}, {"sigma", Num(p.sigma)}});
+    a.push_back({{"name", p.name}, {"unit", p.unit}, {"value", Num(p.value)}, {"sigma", Num(p.sigma)}, {"held", p.held}});
   return a;
 }
 

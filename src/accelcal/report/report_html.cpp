@@ -156,7 +156,7 @@ std::string Parameters(const ReportModel& m) {
                     "<th>Unit</th></tr>\n";
   for (const ReportParameter& p : m.parameters)
     out += fmt::format("<tr><td>{}</td><td class=\"n\">{}</td><td class=\"n\">{}</td><td>{}</td></tr>\n", E(p.name),
-                       Num(p.value, "{:.6f}"), Num(p.sigma, "{:.3g}"), Unit(p.unit));
+                       Num(p.value, "{:.6f}"), p.held ? "held" : Num(p.sigma, "{:.3g}"), Unit(p.unit));
   out += "</table>\n";
   for (const std::string& note : m.parameter_notes) out += "<p class=\"note\">" + E(note) + "</p>\n";
   return out + "</section>\n";

@@ -26,7 +26,8 @@ std::vector<ReportParameter> Parameters(const Calibration& cal) {
   const Eigen::Matrix<double, kNumBaseParameters, 1> value = cal.model.ToVector();
   const Eigen::Matrix<double, kNumBaseParameters, 1> sigma = cal.uncertainty.ToVector();
   for (int i = 0; i < kNumBaseParameters; ++i)
-    out.push_back({std::string(ParameterName(i)), std::string(ParameterUnit(i)), value(i), sigma(i)});
+    out.push_back({std::string(ParameterName(i)), std::string(ParameterUnit(i)), value(i), sigma(i),
+                   cal.FindHeld(i) != nullptr});
   return out;
 }
 

@@ -78,7 +78,8 @@ struct ReportCapture {
 struct ReportParameter {
   std::string name, unit;
   double value = kNaN;
-  double sigma = kNaN;  // 1-sigma
+  double sigma = kNaN;  // 1-sigma; NaN when held
+  bool held = false;    // held at `value`, not fitted (a reduced model: Calibration::held says why)
 };
 
 // The residuals of every capture under one model: the base model, then after each adopted effect.

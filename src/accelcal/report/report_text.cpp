@@ -108,7 +108,7 @@ std::string ParameterTable(const std::vector<ReportParameter>& params) {
   std::string out = "  Parameter            Value       1-sigma  Unit\n";
   for (const ReportParameter& p : params)
     out += fmt::format("  {:<12} {:>14} {:>13}  {}\n", Clean(p.name), Num(p.value, "{:.6f}"),
-                       Num(p.sigma, "{:.3g}"), Clean(p.unit));
+                       p.held ? "held" : Num(p.sigma, "{:.3g}"), Clean(p.unit));
   return out;
 }
 

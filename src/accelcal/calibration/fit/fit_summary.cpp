@@ -33,9 +33,13 @@ SensorModel FitSummary::Model() const {
 
 std::string FitSummary::BriefReport() const {
   if (!IsUsable()) return fmt::format("fit {}: {}", FitTerminationToString(termination), message);
-  return fmt::format("fit converged: {} captures, residual RMS {:.4f} m/s^2, chi2/dof {:.2f}, "
+  // With as many fitted parameters as captures there are no degrees of freedom: the residuals
+  // say nothing about the noise, and no ratio is printed (never the -1 that marks it inside).
+  const std::string chi2_per_dof = dof > 0 ? fmt::format("{:.2f}", Chi2PerDof())
+                                           : std::string("- (no degrees of freedom left)");
+  return fmt::format("fit converged: {} captures, residual RMS {:.4f} m/s^2, chi2/dof {}, "
                      "condition {:.3g}{}{}",
-                     num_captures, residual_rms_mps2, Chi2PerDof(), condition_number,
+                     num_captures, residual_rms_mps2, chi2_per_dof, condition_number,
                      held.empty() ? "" : fmt::format(", {} held", held.size()),
                      warnings.empty() ? "" : fmt::format(", {} warning(s)", warnings.size()));
 }
