@@ -13,7 +13,11 @@ namespace accelcal::ui {
 int RunTui(WizardDriver& driver);
 
 // Plain prompts on `out`, one answer per line from `in`; an empty answer takes the default.
-// For pipes, scripts and terminals without curses (ui/line_mode.cpp).
-int RunLineMode(WizardDriver& driver, std::istream& in, std::ostream& out);
+// For pipes, scripts and terminals without curses (ui/line_mode.cpp). `interrupt_fd`: the
+// file descriptor `in` reads, when it is a terminal: while the wizard is busy (settling,
+// capturing) a line typed there is read at once (`q` quits; anything else is ignored). -1 (a
+// pipe, a script): lines are read only when a question is asked, so scripted answers keep
+// their order.
+int RunLineMode(WizardDriver& driver, std::istream& in, std::ostream& out, int interrupt_fd = -1);
 
 }  // namespace accelcal::ui

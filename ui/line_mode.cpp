@@ -1,5 +1,7 @@
 // The plain line mode: prompts on a stream, one answer per line. For pipes, scripts and
 // terminals without curses; `yes '' | accelcal wizard --plain` takes every default.
+#include <poll.h>
+
 #include <cmath>
 #include <istream>
 #include <ostream>
@@ -126,7 +128,35 @@ class Printer {
 
 }  // namespace
 
-int RunLineMode(WizardDriver& driver, std::istream& in, std::ostream& out) {
+namespace {
+
+// True when a line can be read from `in` without waiting (its buffer holds data, or its file
+// descriptor is readable: a terminal hands over whole lines).
+bool LineWaiting(std::istream& in, int fd) {
+  if (fd < 0) return false;
+  if (in.rdbuf()->in_avail() > 0) return true;
+  pollfd p{fd, POLLIN, 0};
+  return ::poll(&p, 1, 0) > 0 && (p.revents & (POLLIN | POLLHUP)) != 0;
+}
+
+// While busy: `q` quits at once; other lines are ignored (said once), so that an Enter pressed
+// during a capture does not answer the next question. False at the end of input.
+bool ReadWhileBusy(WizardDriver& driver, std::istream& in, std::ostream& out, bool* told) {
+  std::string answer;
+  if (!std::getline(in, answer)) return false;
+  if (TrimLine(answer) == "q") {
+    driver.Handle({IntentKind::kQuit, ""});
+  } else if (!*told) {
+    *told = true;
+    out << "  (busy: only q is read until the wizard asks)\n";
+  }
+  return true;
+}
+
+}  // namespace
+
+int RunLineMode(WizardDriver& driver, std::istream& in, std::ostream& out, int interrupt_fd) {
+  bool told_busy = false;
   Printer printer(out);
   out << driver.View().procedure << '\n' << "session: " << driver.View().session << '\n';
   while (true) {
@@ -134,6 +164,8 @@ int RunLineMode(WizardDriver& driver, std::istream& in, std::ostream& out) {
     printer.Show(v);
     if (v.finished) return 0;
     if (Busy(v)) {
+      if (LineWaiting(in, interrupt_fd) && !ReadWhileBusy(driver, in, out, &told_busy))
+        interrupt_fd = -1;  // end of input: the wizard goes on, and quits at its next question
       driver.Poll(0.1);
       continue;
     }

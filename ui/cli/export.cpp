@@ -30,10 +30,16 @@ void RunExport(const ExportCommandOptions& o) {
   if (set.captures.empty() && !DescribeRecords(*store).empty())
     throw Error(fmt::format("session {} has no accepted captures: it holds records ({}), which are "
                             "not capture sets", path, DescribeRecords(*store)));
+  if (set.captures.empty() && !store->DamagedCaptures().empty())
+    throw Error(fmt::format("session {}: nothing to export: {}", path,
+                            store->DamagedCaptures().front().Describe()));
   if (set.captures.empty()) throw Error(fmt::format("session {} has no accepted captures yet", path));
+  // A capture damaged in the file is never written: it is left out, and said so.
+  const std::vector<DamagedCapture> damaged = store->DamagedCaptures();
   WriteCaptureSetFile(o.output_path, set);
   std::cout << fmt::format("{} captures of session {} written to {}\n", set.captures.size(), path,
                            o.output_path);
+  for (const DamagedCapture& d : damaged) std::cerr << "not written: " << d.Describe() << "\n";
 }
 
 }  // namespace

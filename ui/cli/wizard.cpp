@@ -17,6 +17,7 @@
 #include "accelcal/app/wizard/wizard_engine.h"
 #include "cli/commands.h"
 #include "cli/output.h"
+#include "cli/terminal_answers.h"
 #include "cli/gravity_options.h"
 #include "cli/wizard_journal.h"
 #include "frontend.h"
@@ -38,6 +39,10 @@ std::string DefaultOperator(bool sim) {
 int RunWizard(const WizardCommandOptions& options) {
   const Procedure procedure = LoadProcedure(
       options.procedure_path.empty() ? ShippedProcedurePath("seed_calibration.toml") : options.procedure_path);
+  // `--source -`: stdin carries the samples, so the answers come from the terminal (refused
+  // here, before anything is opened or written, when there is none).
+  std::unique_ptr<TerminalAnswers> tty;
+  if (options.source == "-") tty = std::make_unique<TerminalAnswers>();
   SourceOptions source_options;
   source_options.sim.speed = options.speed;
   source_options.seed = options.seed;
@@ -57,8 +62,15 @@ int RunWizard(const WizardCommandOptions& options) {
   WizardEngine engine(procedure, *source, *journal, wizard);
 
   const bool terminal = ::isatty(STDIN_FILENO) == 1 && ::isatty(STDOUT_FILENO) == 1;
-  const int status = terminal && !options.plain ? ui::RunTui(engine)
-                                                : ui::RunLineMode(engine, std::cin, std::cout);
+  int status = 0;
+  if (tty) {
+    status = ui::RunLineMode(engine, tty->in(), std::cout, tty->fd());  // stdin is the samples'
+  } else if (terminal && !options.plain) {
+    status = ui::RunTui(engine);
+  } else {
+    // On a terminal, q is read while the wizard captures; a pipe's lines wait for questions.
+    status = ui::RunLineMode(engine, std::cin, std::cout, ::isatty(STDIN_FILENO) == 1 ? STDIN_FILENO : -1);
+  }
   // Done only when the procedure ran to its end; a session left with q stays open to resume.
   if (status == 0 && engine.completed()) journal->MarkDone();
   return status;

@@ -13,6 +13,7 @@ ReportInputs ReportInputsFromJournal(const SessionJournal& journal, const std::s
   ReportInputs in;
   in.calibration = CalibrationFromJsonText(*result, source_name);
   for (JournalCapture& c : journal.Captures()) in.captures.push_back(std::move(c.capture));
+  for (const DamagedCapture& d : journal.DamagedCaptures()) in.damaged_captures.push_back(d.Describe());
   FillMetaFromInputs(journal.Inputs(), &in.meta);
   ReadAnalysesFromResultText(*result, source_name, &in);
   return in;

@@ -1,6 +1,7 @@
 // What a report of a session needs, read from its journal: the recorded calibration (strictly
 // read: InputError naming the session when damaged; Error when there is none yet), its
-// captures, device/operator/place from the inputs, and the result's "allan"/"noise" analyses.
+// intact captures (and what is damaged in the file, ReportInputs::damaged_captures),
+// device/operator/place from the inputs, and the result's "allan"/"noise" analyses.
 // Limits and the rest of the meta are the caller's.
 #pragma once
 

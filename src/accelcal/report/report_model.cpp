@@ -230,7 +230,8 @@ ReportModel BuildReportModel(const ReportInputs& in) {
     m.verdict = all_pass ? Verdict::kPass : Verdict::kFail;
   }
   m.gaps = in.gaps;
-  m.incomplete = IncompleteReasons(in.gaps, cal);
+  m.incomplete = in.damaged_captures;
+  for (std::string& why : IncompleteReasons(in.gaps, cal)) m.incomplete.push_back(std::move(why));
   if (all_pass && !m.incomplete.empty()) m.verdict = Verdict::kIncomplete;
   return m;
 }

@@ -126,7 +126,8 @@ struct SessionGaps {
 };
 
 // PASS: every limit met and nothing required missing. FAIL: a limit not met. INCOMPLETE: the
-// limits met (or none stated), but a required step, a required identification or the local
+// limits met (or none stated), but a capture damaged in the session file, a required step, a
+// required identification or the local
 // gravity (a turntable speed or radius scale found while gravity is the standard value: the
 // data cannot tell the two apart) is missing. NO LIMITS STATED: complete, but nothing to judge.
 enum class Verdict { kPass, kFail, kNoLimits, kIncomplete };
@@ -186,6 +187,9 @@ struct ReportInputs {
   std::optional<AllanSection> allan;
   std::optional<NoiseSection> noise;
   std::optional<SessionGaps> gaps;  // a wizard session's (its result carries them)
+  // The session's captures found damaged in its file (DamagedCapture::Describe), left out of
+  // `captures`: the report cannot show them, so its verdict is INCOMPLETE.
+  std::vector<std::string> damaged_captures;
 };
 
 // Gathers everything; derives nothing the calibration already states.

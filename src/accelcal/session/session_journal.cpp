@@ -7,8 +7,14 @@
 
 #include "accelcal/base/error.h"
 #include "accelcal/base/duration_text.h"
+#include "accelcal/base/safe_text.h"
 
 namespace accelcal {
+
+std::string DamagedCapture::Describe() const {
+  return fmt::format("the capture of step '{}' (\"{}\") is damaged in the session file ({}): left out",
+                     ShortDisplayText(step_id, 80), ShortDisplayText(label, 80), problem);
+}
 
 void CheckRecordChunk(const std::string& step_id, const RecordChunk& chunk,
                       const RecordSummary& so_far) {

@@ -30,6 +30,19 @@ struct JournalCapture {
   Capture capture;  // with its raw samples
 };
 
+// A stored capture that fails its check on read (its checksum does not match what it holds, or
+// its samples do not decode): the file was damaged after it was written. It is left out of
+// Captures(); DamagedCaptures() names it.
+struct DamagedCapture {
+  std::string step_id;
+  std::string label;    // as stored (it may be the damaged part)
+  std::string problem;  // "its checksum does not match what it holds"
+
+  // "the capture of step 'face_3' (\"Z up\") is damaged in the session file (its checksum
+  // does not match what it holds): left out"
+  std::string Describe() const;
+};
+
 // A hole in a record: no samples between t_start_s (the last sample before it) and t_end_s (the
 // first sample after it), on the record's clock, s.
 struct RecordGap {
@@ -91,15 +104,19 @@ class SessionJournal {
   // record's last one.
   virtual void AppendRecordChunk(const std::string& step_id, const RecordChunk& chunk) = 0;
 
-  // What was recorded (for resuming and for reports), in the order recorded.
+  // What was recorded (for resuming and for reports), in the order recorded. A capture that
+  // fails its check on read (session_store.h) is left out here and named by DamagedCaptures().
   virtual std::vector<JournalCapture> Captures() const = 0;
+  virtual std::vector<DamagedCapture> DamagedCaptures() const { return {}; }
   virtual std::map<std::string, std::map<std::string, std::string>> Inputs() const = 0;
   virtual std::map<std::string, std::string> DoneSteps() const = 0;  // step id -> outcome
   virtual std::optional<std::string> Result() const = 0;  // the latest RecordResult text
   // The record of `step_id` so far (an empty summary when it has none).
   virtual RecordSummary RecordSummaryOf(const std::string& step_id) const = 0;
   // Calls `visit` with each chunk of the record of `step_id`, in order (one chunk in memory at
-  // a time: a 12-hour record at 100 Hz is 170 MB of samples).
+  // a time: a 12-hour record at 100 Hz is 170 MB of samples). A chunk that fails its check on
+  // read is left out: the next chunk carries the hole as its gap_before, whose reason names the
+  // damage (so every reader of a record sees it as a gap, never as data).
   virtual void VisitRecordChunks(const std::string& step_id,
                                  const std::function<void(const RecordChunk&)>& visit) const = 0;
   // The steps that have record chunks, in the order their first chunk was recorded.

@@ -186,7 +186,13 @@ void SessionStore::MarkDone() {
   transaction.Commit();
 }
 
-std::vector<JournalCapture> SessionStore::Captures() const { return detail::ReadCaptureRows(*db_); }
+std::vector<JournalCapture> SessionStore::Captures() const {
+  return detail::ReadCaptureRows(*db_).intact;
+}
+
+std::vector<DamagedCapture> SessionStore::DamagedCaptures() const {
+  return detail::ReadCaptureRows(*db_).damaged;
+}
 
 std::map<std::string, std::map<std::string, std::string>> SessionStore::Inputs() const {
   std::map<std::string, std::map<std::string, std::string>> out;

@@ -5,6 +5,10 @@
 // committed when the call returns, so a kill -9 (or a power loss) at any instant loses nothing
 // that was recorded; a transaction cut short leaves no trace.
 //
+// Integrity: every capture and record chunk carries a checksum of what it holds (schema version
+// 4, detail/row_checksum.h), written with it and verified on every read: a row damaged in the
+// file afterwards is left out and named (DamagedCaptures(), a record's gap), never read as data.
+//
 // One writer: a read-write Open takes an advisory lock (detail/session_lock.h) that the OS
 // releases when the process dies, so a second wizard is refused while the first lives and a
 // session left by a killed one opens at once. Read-only opens take no lock and work while a
@@ -83,6 +87,7 @@ class SessionStore final : public SessionJournal {
   void AppendRecordChunk(const std::string& step_id, const RecordChunk& chunk) override;
 
   std::vector<JournalCapture> Captures() const override;
+  std::vector<DamagedCapture> DamagedCaptures() const override;
   std::map<std::string, std::map<std::string, std::string>> Inputs() const override;
   std::map<std::string, std::string> DoneSteps() const override;
   std::optional<std::string> Result() const override;

@@ -1,23 +1,35 @@
 #include "accelcal/app/wizard/step_acquisition.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
+
+#include <fmt/core.h>
 
 namespace accelcal {
 
+double SteadyNowS() {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
 StepAcquisition::StepAcquisition(double quiet_period_s) : quiet_period_s_(quiet_period_s) {}
 
-void StepAcquisition::MeasureNoiseFloor() {
+void StepAcquisition::MeasureNoiseFloor(double wall_now_s, double timeout_s) {
   Stop();
+  timeout_s_ = timeout_s;
+  last_sample_wall_s_ = wall_now_s;
   quiet_samples_.clear();
   quiet_ = CaptureStats();
 }
 
 void StepAcquisition::StartCapture(const CaptureRequest& request, const CaptureEngineOptions& options,
-                                   const CaptureContext& context) {
+                                   const CaptureContext& context, double wall_now_s) {
   Stop();
   capture_ = std::make_unique<CaptureEngine>(request, options, context);
+  timeout_s_ = request.timeout_s;
+  capture_wall_start_s_ = last_sample_wall_s_ = wall_now_s;
   reason_.clear();
+  ended_silent_ = false;
 }
 
 void StepAcquisition::StartRecord(std::unique_ptr<RecordStepWriter> record, bool settle) {
@@ -48,12 +60,37 @@ Capture StepAcquisition::TakeCapture() {
   return c;
 }
 
-AcquisitionEvent StepAcquisition::Feed(const std::vector<Sample>& chunk) {
+AcquisitionEvent StepAcquisition::Feed(const std::vector<Sample>& chunk, double wall_now_s) {
   if (chunk.empty()) return AcquisitionEvent::kNone;
+  if (std::any_of(chunk.begin(), chunk.end(), [](const Sample& x) {
+        return std::isfinite(x.t_s) && x.raw_counts.allFinite();
+      }))
+    last_sample_wall_s_ = wall_now_s;
   if (quiet_) return FeedQuiet(chunk);
   if (capture_) return FeedCapture(chunk);
   if (record_) return FeedRecord(chunk);
   return AcquisitionEvent::kNone;
+}
+
+AcquisitionEvent StepAcquisition::Watch(double wall_now_s) {
+  const double silent_s = wall_now_s - last_sample_wall_s_;
+  if (quiet_ && silent_s > timeout_s_) {
+    reason_ = fmt::format("no samples for {:.0f} s: the noise floor cannot be measured", silent_s);
+    quiet_.reset();
+    return AcquisitionEvent::kNoiseFloorSilent;
+  }
+  if (!capture_) return AcquisitionEvent::kNone;
+  const bool capturing = capture_->Snapshot().state == CaptureState::kCapturing;
+  const bool too_long = wall_now_s - capture_wall_start_s_ > timeout_s_ && !capturing;
+  if (!(silent_s > timeout_s_) && !too_long) return AcquisitionEvent::kNone;
+  const std::string problem = silent_s >= 1.0
+                                  ? fmt::format("no samples for {:.0f} s", silent_s)
+                                  : capture_->Snapshot().reason;
+  ended_silent_ = silent_s >= 1.0;
+  reason_ = fmt::format("no stable capture within {:.3g} s (wall clock): {}", timeout_s_,
+                        problem.empty() ? "no data long enough to judge" : problem);
+  capture_.reset();
+  return AcquisitionEvent::kCaptureRejected;
 }
 
 AcquisitionEvent StepAcquisition::FeedQuiet(const std::vector<Sample>& chunk) {

@@ -23,7 +23,12 @@ enum class AcquisitionEvent {
   kCaptureRejected,     // rejected or timed out: reason() says why; the capture is over
   kCaptureAccepted,     // TakeCapture() hands it over
   kRecordComplete,      // the record covers its duration
+  kNoiseFloorSilent,    // the quiet period had no sample for its timeout (Watch): reason() says
 };
+
+// The computer's monotonic clock (std::chrono::steady_clock), s: the wall clock of
+// StepAcquisition::Watch.
+double SteadyNowS();
 
 class StepAcquisition {
  public:
@@ -31,18 +36,27 @@ class StepAcquisition {
   explicit StepAcquisition(double quiet_period_s);
 
   // Starts a quiet period for the noise floor (its samples: quiet_samples(), judged by the
-  // wizard's NoiseFloorGuard).
-  void MeasureNoiseFloor();
+  // wizard's NoiseFloorGuard); Watch ends it when no sample comes for timeout_s of wall time.
+  void MeasureNoiseFloor(double wall_now_s, double timeout_s);
   // Starts a capture (judged against the context's noise floor).
   void StartCapture(const CaptureRequest& request, const CaptureEngineOptions& options,
-                    const CaptureContext& context);
+                    const CaptureContext& context, double wall_now_s);
   // Starts streaming `record`; with `settle`, its first kRecordSettleS of samples are dropped
   // (the hand letting go of a freshly placed sensor).
   void StartRecord(std::unique_ptr<RecordStepWriter> record, bool settle);
   // Stops what runs: a record commits the chunk being filled; a capture in progress is dropped.
   void Stop();
 
-  AcquisitionEvent Feed(const std::vector<Sample>& chunk);
+  // `wall_now_s`: SteadyNowS(), for the wall-clock timeout of Watch.
+  AcquisitionEvent Feed(const std::vector<Sample>& chunk, double wall_now_s);
+  // The timeouts on the wall clock, called at every poll (data or not). The capture engine
+  // counts its timeout in sample time, which stops when the link goes silent (connected,
+  // sending nothing or only unreadable lines): a capture that is not capturing timeout_s of
+  // wall time after it started, or that has had no finite sample for timeout_s, is over
+  // (kCaptureRejected; reason() names the silence: "no stable capture within 20 s (wall
+  // clock): no samples for 20 s"); a quiet period without a finite sample for its timeout_s is
+  // over (kNoiseFloorSilent). Nothing to do otherwise (kNone).
+  AcquisitionEvent Watch(double wall_now_s);
 
   bool measuring_noise_floor() const { return quiet_.has_value(); }
   bool capturing() const { return capture_ != nullptr; }
@@ -57,6 +71,8 @@ class StepAcquisition {
   CaptureSnapshot capture_snapshot() const { return capture_->Snapshot(); }
   // Why the last capture was rejected or is retrying.
   const std::string& reason() const { return reason_; }
+  // The last capture ended on the wall clock with no samples coming (Watch): a link problem.
+  bool ended_silent() const { return ended_silent_; }
   // The turntable checks' verdict of the last capture that ended (accepted or rejected).
   const TurntableVerdict& last_turntable() const { return last_turntable_; }
   // The accepted capture (after kCaptureAccepted); the capture is over.
@@ -78,11 +94,15 @@ class StepAcquisition {
   std::vector<Sample> quiet_samples_;
   TurntableVerdict last_turntable_;
   std::unique_ptr<CaptureEngine> capture_;
+  double timeout_s_ = kNaN;             // the capture's (request) or the quiet period's, s
+  double capture_wall_start_s_ = kNaN;  // wall clock at StartCapture, s
+  double last_sample_wall_s_ = kNaN;    // wall clock at the last finite sample (or the start), s
   std::optional<Capture> accepted_;
   std::unique_ptr<RecordStepWriter> record_;
   bool settling_ = false;
   double settle_until_s_ = kNaN;  // source t at which a settling record starts, s
   std::string reason_;
+  bool ended_silent_ = false;
 };
 
 }  // namespace accelcal

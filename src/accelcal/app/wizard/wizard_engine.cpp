@@ -263,6 +263,11 @@ void WizardEngine::Poll(double timeout_s) {
     resume_lines_.push_back(clock_.note());
   }
   UpdateLive(chunk);
+  // The capture's timeout on the wall clock too: a silent link sends no sample time.
+  if (phase_ == Phase::kCapture || phase_ == Phase::kQuiet) {
+    const AcquisitionEvent watched = acq_.Watch(SteadyNowS());
+    if (watched != AcquisitionEvent::kNone) return OnAcquisition(watched);
+  }
   if (chunk.empty()) {
     if (source_.status().link == LinkState::kEnded &&
         (phase_ == Phase::kCapture || phase_ == Phase::kQuiet || phase_ == Phase::kRecord)) {
@@ -275,7 +280,7 @@ void WizardEngine::Poll(double timeout_s) {
     return;
   }
   if (phase_ == Phase::kQuiet || phase_ == Phase::kCapture || phase_ == Phase::kRecord)
-    OnAcquisition(acq_.Feed(chunk));
+    OnAcquisition(acq_.Feed(chunk, SteadyNowS()));
 }
 
 // ---- intents --------------------------------------------------------------------------------

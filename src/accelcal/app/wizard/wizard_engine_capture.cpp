@@ -157,7 +157,7 @@ void WizardEngine::StartCaptureEngine() {
   o.turntable.centripetal_tolerance = procedure_.turntable_tolerance;
   o.turntable.max_tilt_deg = procedure_.turntable_tilt_tolerance_deg;
   o.screening.adc_range = procedure_.adc_range;
-  acq_.StartCapture(MakeRequest(), o, MakeContext());
+  acq_.StartCapture(MakeRequest(), o, MakeContext(), SteadyNowS());
   problem_.clear();
   hint_.clear();
   phase_ = Phase::kCapture;
@@ -219,6 +219,11 @@ void WizardEngine::OnAcquisition(AcquisitionEvent event) {
       hint_.clear();
       break;
     case AcquisitionEvent::kRecordComplete: FinishRecord(); break;
+    case AcquisitionEvent::kNoiseFloorSilent:
+      problem_ = acq_.reason();
+      hint_ = "check the cable or the sample server; Enter measures again, q leaves";
+      phase_ = Phase::kQuietReady;
+      break;
     case AcquisitionEvent::kNone: break;
   }
 }
@@ -226,6 +231,10 @@ void WizardEngine::OnAcquisition(AcquisitionEvent event) {
 void WizardEngine::OnCaptureRejected() {
   problem_ = acq_.reason();
   phase_ = Phase::kProblem;
+  if (acq_.ended_silent()) {
+    hint_ = "check the cable or the sample server; Enter tries again, q leaves";
+    return;
+  }
   if (step().kind != StepKind::kTurntable) {
     hint_ = fmt::format("put the prism with {} and let go; Enter tries again", MakeRequest().expected.name);
     return;
@@ -292,7 +301,7 @@ void WizardEngine::HandleCaptureIntent(const Intent& intent) {
   switch (phase_) {
     case Phase::kQuietReady:
       if (accept || intent.kind == IntentKind::kRetry) {
-        acq_.MeasureNoiseFloor();
+        acq_.MeasureNoiseFloor(SteadyNowS(), step().timeout_s);
         phase_ = Phase::kQuiet;
       }
       return;

@@ -3,6 +3,7 @@
 #include <fmt/core.h>
 
 #include "accelcal/base/error.h"
+#include "accelcal/session/detail/row_checksum.h"
 #include "accelcal/session/detail/sample_blob.h"
 
 namespace accelcal::detail {
@@ -13,77 +14,115 @@ constexpr const char* kInsert =
     "rejection_reason, n, mean_x_counts, mean_y_counts, mean_z_counts, comoment_xx_counts2, "
     "comoment_xy_counts2, comoment_xz_counts2, comoment_yy_counts2, comoment_yz_counts2, "
     "comoment_zz_counts2, t_first_s, "
-    "t_last_s, mean_temp_c, samples, recorded_utc) "
-    "VALUES (?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?)";
+    "t_last_s, mean_temp_c, samples, recorded_utc, checksum) "
+    "VALUES (?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?)";
 
-constexpr const char* kSelect =
-    "SELECT step_id, capture_id, kind, label, radius_m, rpm, up_axis, rejection_reason, n, "
-    "samples FROM captures ORDER BY seq";
+// Column 0 is seq, columns 1..23 those of kCaptureChecksumColumns, column 24 the checksum. A
+// file older than version 4 (read read-only, as it is) has no checksum, and versions 1 and 2
+// named the co-moments otherwise: its select fills the columns it does not read with NULL.
+constexpr int kFirst = 1;
+constexpr int kStepId = 1, kCaptureId = 2, kKind = 3, kLabel = 4, kRadius = 5, kRpm = 6,
+              kUpAxis = 7, kRejection = 8, kN = 9, kSamples = 22;
+constexpr int kChecksum = kFirst + kCaptureChecksumColumnCount;
 
-bool StepHasCapture(SqliteDb& db, const std::string& step_id) {
-  SqliteStatement query(db, "SELECT 1 FROM captures WHERE step_id = ?");
-  query.Bind(1, step_id);
-  return query.Step();
+std::string SelectSql(bool has_checksum, const std::string& where) {
+  if (has_checksum)
+    return fmt::format("SELECT seq, {}, checksum FROM captures {} ORDER BY seq",
+                       kCaptureChecksumColumns, where);
+  return fmt::format("SELECT seq, step_id, capture_id, kind, label, radius_m, rpm, up_axis, "
+                     "rejection_reason, n, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL, "
+                     "NULL, NULL, NULL, samples, recorded_utc, NULL FROM captures {} ORDER BY seq",
+                     where);
 }
 
-void BindStats(SqliteStatement& insert, const CaptureStats& stats) {
-  insert.Bind(9, static_cast<std::int64_t>(stats.n));
-  for (int i = 0; i < 3; ++i) insert.Bind(10 + i, stats.mean_counts(i));
+void AddStats(ChecksummedInsert& insert, const CaptureStats& stats) {
+  insert.Add(static_cast<std::int64_t>(stats.n));
+  for (int i = 0; i < 3; ++i) insert.Add(stats.mean_counts(i));
   const Eigen::Matrix3d& c = stats.comoment_counts2;
-  insert.Bind(13, c(0, 0)).Bind(14, c(0, 1)).Bind(15, c(0, 2));
-  insert.Bind(16, c(1, 1)).Bind(17, c(1, 2)).Bind(18, c(2, 2));
-  insert.Bind(19, stats.t_first_s).Bind(20, stats.t_last_s).Bind(21, stats.mean_temp_c);
+  insert.Add(c(0, 0)).Add(c(0, 1)).Add(c(0, 2)).Add(c(1, 1)).Add(c(1, 2)).Add(c(2, 2));
+  insert.Add(stats.t_first_s).Add(stats.t_last_s).Add(stats.mean_temp_c);
 }
 
-Capture CaptureFromRow(const SqliteStatement& row, const std::string& path) {
+// Throws accelcal::Error (without the path: the caller names the row) when the row cannot be a
+// capture.
+Capture CaptureFromRow(const SqliteStatement& row) {
   Capture c;
-  c.id = static_cast<int>(row.ColumnInt(1));
-  const std::string kind = row.ColumnText(2);
+  c.id = static_cast<int>(row.ColumnInt(kCaptureId));
+  const std::string kind = row.ColumnText(kKind);
   const std::optional<CaptureKind> parsed = StringToCaptureKind(kind);
-  if (!parsed) throw Error(fmt::format("session {}: capture with unknown kind '{}'", path, kind));
+  if (!parsed) throw Error(fmt::format("unknown kind '{}'", kind));
   c.kind = *parsed;
-  c.label = row.ColumnText(3);
-  c.radius_m = row.ColumnDouble(4);
-  c.rpm = row.ColumnDouble(5);
-  if (!row.ColumnIsNull(6)) c.up_axis = StringToSensorAxis(row.ColumnText(6));
-  c.rejection_reason = row.ColumnText(7);
-  c.samples = DecodeSamples(row.ColumnBlob(9));
-  const std::int64_t n = row.ColumnInt(8);
+  c.label = row.ColumnText(kLabel);
+  c.radius_m = row.ColumnDouble(kRadius);
+  c.rpm = row.ColumnDouble(kRpm);
+  if (!row.ColumnIsNull(kUpAxis)) c.up_axis = StringToSensorAxis(row.ColumnText(kUpAxis));
+  c.rejection_reason = row.ColumnText(kRejection);
+  c.samples = DecodeSamples(row.ColumnBlob(kSamples));
+  const std::int64_t n = row.ColumnInt(kN);
   if (static_cast<std::int64_t>(c.samples.size()) != n)
-    throw Error(fmt::format("session {}: step '{}' is damaged: {} samples stored, {} expected",
-                            path, row.ColumnText(0), c.samples.size(), n));
+    throw Error(fmt::format("{} samples stored, {} expected", c.samples.size(), n));
   return c;
+}
+
+// Reads the current row into `out`: intact or damaged.
+void ReadRow(const SqliteStatement& row, bool has_checksum, CaptureRows* out) {
+  DamagedCapture damaged{row.ColumnText(kStepId), row.ColumnText(kLabel), ""};
+  if (has_checksum)
+    damaged.problem = ChecksumProblem(row, kFirst, kCaptureChecksumColumnCount, kChecksum);
+  if (damaged.problem.empty()) {
+    try {
+      out->intact.push_back({damaged.step_id, CaptureFromRow(row)});
+      return;
+    } catch (const Error& e) {
+      damaged.problem = e.what();
+    }
+  }
+  out->damaged.push_back(std::move(damaged));
+}
+
+CaptureRows ReadRows(SqliteDb& db, const std::string& where, const std::string& step_id) {
+  const bool has_checksum = HasRowChecksums(db);
+  CaptureRows out;
+  SqliteStatement rows(db, SelectSql(has_checksum, where));
+  if (!step_id.empty()) rows.Bind(1, step_id);
+  while (rows.Step()) ReadRow(rows, has_checksum, &out);
+  return out;
+}
+
+// Throws when `step_id` has an intact capture; deletes a damaged one (it is taken again).
+void MakeRoomFor(SqliteDb& db, const std::string& step_id) {
+  const CaptureRows existing = ReadRows(db, "WHERE step_id = ?", step_id);
+  if (!existing.intact.empty())
+    throw Error(fmt::format("session {}: step '{}' already has an accepted capture", db.path(),
+                            step_id));
+  if (!existing.damaged.empty())
+    SqliteStatement(db, "DELETE FROM captures WHERE step_id = ?").Bind(1, step_id).Run();
 }
 
 }  // namespace
 
 void InsertCaptureRow(SqliteDb& db, const std::string& step_id, const Capture& capture,
                       const std::string& recorded_utc) {
-  if (StepHasCapture(db, step_id))
-    throw Error(fmt::format("session {}: step '{}' already has an accepted capture", db.path(),
-                            step_id));
-  SqliteStatement insert(db, kInsert);
-  insert.Bind(1, step_id).Bind(2, capture.id).Bind(3, std::string(CaptureKindToString(capture.kind)));
-  insert.Bind(4, capture.label).Bind(5, capture.radius_m).Bind(6, capture.rpm);
+  MakeRoomFor(db, step_id);
+  SqliteStatement statement(db, kInsert);
+  ChecksummedInsert insert(statement);  // the columns in kCaptureChecksumColumns' order
+  insert.Add(step_id).Add(capture.id).Add(std::string(CaptureKindToString(capture.kind)));
+  insert.Add(capture.label).Add(capture.radius_m).Add(capture.rpm);
   if (capture.up_axis) {
-    insert.Bind(7, std::string(SensorAxisToString(*capture.up_axis)));
+    insert.Add(std::string(SensorAxisToString(*capture.up_axis)));
   } else {
-    insert.BindNull(7);
+    insert.AddNull();
   }
-  insert.Bind(8, capture.rejection_reason);
+  insert.Add(capture.rejection_reason);
   // n counts every sample stored (the blob), including non-finite ones the stats skip.
   CaptureStats stats = capture.stats();
   stats.n = static_cast<long>(capture.samples.size());
-  BindStats(insert, stats);
-  insert.BindBlob(22, EncodeSamples(capture.samples)).Bind(23, recorded_utc);
-  insert.Run();
+  AddStats(insert, stats);
+  insert.AddBlob(EncodeSamples(capture.samples)).Add(recorded_utc);
+  insert.BindChecksum();
+  statement.Run();
 }
 
-std::vector<JournalCapture> ReadCaptureRows(SqliteDb& db) {
-  std::vector<JournalCapture> out;
-  SqliteStatement rows(db, kSelect);
-  while (rows.Step()) out.push_back({rows.ColumnText(0), CaptureFromRow(rows, db.path())});
-  return out;
-}
+CaptureRows ReadCaptureRows(SqliteDb& db) { return ReadRows(db, "", ""); }
 
 }  // namespace accelcal::detail

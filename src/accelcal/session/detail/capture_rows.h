@@ -9,12 +9,19 @@
 
 namespace accelcal::detail {
 
-// Inserts inside the caller's transaction. Throws accelcal::Error when `step_id` already has a
-// capture (the UNIQUE constraint backs this up).
 void InsertCaptureRow(SqliteDb& db, const std::string& step_id, const Capture& capture,
                       const std::string& recorded_utc);
-// All captures in recording order. Throws accelcal::Error when a row is damaged (its sample
-// count differs from n).
-std::vector<JournalCapture> ReadCaptureRows(SqliteDb& db);
+// Inserts inside the caller's transaction, with the row's checksum (row_checksum.h). Throws
+// accelcal::Error when `step_id` already has an intact capture (the UNIQUE constraint backs this
+// up); a damaged one (CaptureRows::damaged) is replaced, so that a resumed wizard can take it
+// again.
+struct CaptureRows {
+  std::vector<JournalCapture> intact;   // in recording order
+  std::vector<DamagedCapture> damaged;  // in recording order
+};
+// Every capture, checked: a row whose checksum (version 4 and later) does not match, whose
+// sample count differs from n, or whose samples do not decode is damaged. Rows of a file older
+// than version 4 (read-only opens) have no checksum: only the sample count is checked.
+CaptureRows ReadCaptureRows(SqliteDb& db);
 
 }  // namespace accelcal::detail

@@ -1,8 +1,11 @@
 #include "accelcal/session/detail/record_rows.h"
 
+#include <cmath>
+
 #include <fmt/core.h>
 
 #include "accelcal/base/error.h"
+#include "accelcal/session/detail/row_checksum.h"
 #include "accelcal/session/detail/sample_blob.h"
 #include "accelcal/session/detail/session_schema.h"
 
@@ -17,13 +20,16 @@ bool HasRecordTables(SqliteDb& db) { return HasTable(db, "record_chunks"); }
 void InsertRecordChunk(SqliteDb& db, const std::string& step_id, const RecordChunk& chunk,
                        const std::string& recorded_utc) {
   CheckRecordChunk(step_id, chunk, ReadRecordSummary(db, step_id));
-  SqliteStatement insert(db, "INSERT INTO record_chunks (step_id, chunk_index, n, t_first_s, "
-                             "t_last_s, wall_end_s, samples, recorded_utc) VALUES (?,?,?,?,?,?,?,?)");
-  insert.Bind(1, step_id).Bind(2, static_cast<std::int64_t>(chunk.index));
-  insert.Bind(3, static_cast<std::int64_t>(chunk.samples.size()));
-  insert.Bind(4, chunk.samples.front().t_s).Bind(5, chunk.samples.back().t_s);
-  insert.Bind(6, chunk.wall_end_s).BindBlob(7, EncodeSamples(chunk.samples)).Bind(8, recorded_utc);
-  insert.Run();
+  SqliteStatement statement(db, "INSERT INTO record_chunks (step_id, chunk_index, n, t_first_s, "
+                                "t_last_s, wall_end_s, samples, recorded_utc, checksum) "
+                                "VALUES (?,?,?,?,?,?,?,?,?)");
+  ChecksummedInsert insert(statement);  // the columns in kChunkChecksumColumns' order
+  insert.Add(step_id).Add(static_cast<std::int64_t>(chunk.index));
+  insert.Add(static_cast<std::int64_t>(chunk.samples.size()));
+  insert.Add(chunk.samples.front().t_s).Add(chunk.samples.back().t_s).Add(chunk.wall_end_s);
+  insert.AddBlob(EncodeSamples(chunk.samples)).Add(recorded_utc);
+  insert.BindChecksum();
+  statement.Run();
   if (!chunk.gap_before) return;
   SqliteStatement gap(db, "INSERT INTO record_gaps (step_id, before_chunk, t_start_s, t_end_s, "
                           "reason, recorded_utc) VALUES (?,?,?,?,?,?)");
@@ -59,26 +65,71 @@ RecordSummary ReadRecordSummary(SqliteDb& db, const std::string& step_id) {
   return s;
 }
 
+namespace {
+
+// Columns 0..7 are those of kChunkChecksumColumns, 8 the checksum (NULL in a file older than
+// version 4, read as it is), 9..11 the gap before the chunk.
+constexpr int kIndex = 1, kN = 2, kWallEnd = 5, kSamples = 6, kChecksum = 8, kGapStart = 9;
+
+std::string SelectSql(bool has_checksum) {
+  return fmt::format("SELECT c.step_id, c.chunk_index, c.n, c.t_first_s, c.t_last_s, c.wall_end_s, "
+                     "c.samples, c.recorded_utc, {}, g.t_start_s, g.t_end_s, g.reason "
+                     "FROM record_chunks c LEFT JOIN record_gaps g ON g.step_id = c.step_id AND "
+                     "g.before_chunk = c.chunk_index WHERE c.step_id = ? ORDER BY c.chunk_index",
+                     has_checksum ? "c.checksum" : "NULL");
+}
+
+// The chunk of the current row, or what is wrong with it.
+std::string ReadChunk(const SqliteStatement& row, bool has_checksum, RecordChunk* chunk) {
+  if (has_checksum) {
+    if (std::string problem = ChecksumProblem(row, 0, kChunkChecksumColumnCount, kChecksum);
+        !problem.empty())
+      return problem;
+  }
+  chunk->index = static_cast<long>(row.ColumnInt(kIndex));
+  chunk->wall_end_s = row.ColumnDouble(kWallEnd);
+  try {
+    chunk->samples = DecodeSamples(row.ColumnBlob(kSamples));
+  } catch (const Error& e) {
+    return e.what();
+  }
+  if (static_cast<std::int64_t>(chunk->samples.size()) != row.ColumnInt(kN) || chunk->samples.empty())
+    return fmt::format("{} samples stored, {} expected", chunk->samples.size(), row.ColumnInt(kN));
+  if (!row.ColumnIsNull(kGapStart))
+    chunk->gap_before = RecordGap{row.ColumnDouble(kGapStart), row.ColumnDouble(kGapStart + 1),
+                                  row.ColumnText(kGapStart + 2)};
+  return "";
+}
+
+// The hole that damaged chunks leave before `chunk`, merged with the gap it already has.
+void AddDamageGap(const std::string& damage, double last_good_t_s, RecordChunk* chunk) {
+  const double t_end_s = chunk->samples.front().t_s;
+  RecordGap gap{std::isfinite(last_good_t_s) ? last_good_t_s : t_end_s, t_end_s, damage};
+  if (chunk->gap_before) gap.reason += "; " + chunk->gap_before->reason;
+  chunk->gap_before = gap;
+}
+
+}  // namespace
+
 void VisitRecordRows(SqliteDb& db, const std::string& step_id,
                      const std::function<void(const RecordChunk&)>& visit) {
   if (!HasRecordTables(db)) return;
-  SqliteStatement rows(db,
-                       "SELECT c.chunk_index, c.n, c.wall_end_s, c.samples, g.t_start_s, "
-                       "g.t_end_s, g.reason FROM record_chunks c LEFT JOIN record_gaps g "
-                       "ON g.step_id = c.step_id AND g.before_chunk = c.chunk_index "
-                       "WHERE c.step_id = ? ORDER BY c.chunk_index");
+  const bool has_checksum = HasRowChecksums(db);
+  SqliteStatement rows(db, SelectSql(has_checksum));
   rows.Bind(1, step_id);
+  std::string damage;  // of the chunks left out since the last one visited
+  double last_good_t_s = std::nan("");
   while (rows.Step()) {
     RecordChunk chunk;
-    chunk.index = static_cast<long>(rows.ColumnInt(0));
-    chunk.wall_end_s = rows.ColumnDouble(2);
-    chunk.samples = DecodeSamples(rows.ColumnBlob(3));
-    if (static_cast<std::int64_t>(chunk.samples.size()) != rows.ColumnInt(1))
-      throw Error(fmt::format("session {}: record '{}' chunk {} is damaged: {} samples stored, "
-                              "{} expected", db.path(), step_id, chunk.index, chunk.samples.size(),
-                              rows.ColumnInt(1)));
-    if (!rows.ColumnIsNull(4))
-      chunk.gap_before = RecordGap{rows.ColumnDouble(4), rows.ColumnDouble(5), rows.ColumnText(6)};
+    const std::string problem = ReadChunk(rows, has_checksum, &chunk);
+    if (!problem.empty()) {
+      damage += fmt::format("{}chunk {} is damaged in the session file ({}): left out",
+                            damage.empty() ? "" : "; ", rows.ColumnInt(kIndex), problem);
+      continue;
+    }
+    if (!damage.empty()) AddDamageGap(damage, last_good_t_s, &chunk);
+    damage.clear();
+    last_good_t_s = chunk.samples.back().t_s;
     visit(chunk);
   }
 }

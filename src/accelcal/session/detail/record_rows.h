@@ -10,14 +10,15 @@
 
 namespace accelcal::detail {
 
-// Inserts the chunk (and its gap_before) inside the caller's transaction, after checking it
-// against what the record holds (CheckRecordChunk).
+// Inserts the chunk (and its gap_before) inside the caller's transaction, with its checksum,
+// after checking it against what the record holds (CheckRecordChunk).
 void InsertRecordChunk(SqliteDb& db, const std::string& step_id, const RecordChunk& chunk,
                        const std::string& recorded_utc);
 // The record of `step_id` so far, from the rows' columns (no sample is decoded).
 RecordSummary ReadRecordSummary(SqliteDb& db, const std::string& step_id);
-// Each chunk in order, decoded one at a time. Throws accelcal::Error when a row is damaged
-// (its sample count differs from n, or its blob is not whole samples).
+// Each chunk in order, decoded one at a time, checked: a chunk whose checksum (version 4) does
+// not match, whose sample count differs from n or whose blob is not whole samples is left out,
+// and the next one carries the hole as its gap_before, the damage in its reason.
 void VisitRecordRows(SqliteDb& db, const std::string& step_id,
                      const std::function<void(const RecordChunk&)>& visit);
 // Steps with record chunks, by their first chunk's order of insertion.

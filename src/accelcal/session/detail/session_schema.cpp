@@ -2,11 +2,13 @@
 
 #include <filesystem>
 #include <fstream>
+#include <utility>
 
 #include <fmt/core.h>
 
 #include "accelcal/base/error.h"
 #include "accelcal/base/utc_time.h"
+#include "accelcal/session/detail/row_checksum.h"
 
 namespace accelcal::detail {
 namespace {
@@ -29,7 +31,7 @@ CREATE TABLE captures (
   comoment_xx_counts2 REAL, comoment_xy_counts2 REAL, comoment_xz_counts2 REAL,
   comoment_yy_counts2 REAL, comoment_yz_counts2 REAL, comoment_zz_counts2 REAL,
   t_first_s REAL, t_last_s REAL, mean_temp_c REAL,
-  samples BLOB NOT NULL, recorded_utc TEXT NOT NULL);
+  samples BLOB NOT NULL, recorded_utc TEXT NOT NULL, checksum INTEGER);
 CREATE TABLE inputs (step_id TEXT NOT NULL, key TEXT NOT NULL, value TEXT NOT NULL,
   recorded_utc TEXT NOT NULL, PRIMARY KEY (step_id, key));
 CREATE TABLE steps_done (step_id TEXT PRIMARY KEY, outcome TEXT NOT NULL, recorded_utc TEXT NOT NULL);
@@ -37,12 +39,14 @@ CREATE TABLE results (seq INTEGER PRIMARY KEY AUTOINCREMENT, calibration_json TE
   recorded_utc TEXT NOT NULL);
 )sql";
 
+// (The checksum columns came in version 4: MigrateToChecksums adds them to older files.)
+
 // Added in version 2: the chunks and gaps of record steps.
 constexpr const char* kRecordTables = R"sql(
 CREATE TABLE record_chunks (
   step_id TEXT NOT NULL, chunk_index INTEGER NOT NULL CHECK (chunk_index >= 0),
   n INTEGER NOT NULL CHECK (n > 0), t_first_s REAL NOT NULL, t_last_s REAL NOT NULL,
-  wall_end_s REAL NOT NULL, samples BLOB NOT NULL, recorded_utc TEXT NOT NULL,
+  wall_end_s REAL NOT NULL, samples BLOB NOT NULL, recorded_utc TEXT NOT NULL, checksum INTEGER,
   PRIMARY KEY (step_id, chunk_index));
 CREATE TABLE record_gaps (
   step_id TEXT NOT NULL, before_chunk INTEGER NOT NULL, t_start_s REAL NOT NULL,
@@ -60,6 +64,18 @@ ALTER TABLE captures RENAME COLUMN cov_yy_counts2 TO comoment_yy_counts2;
 ALTER TABLE captures RENAME COLUMN cov_yz_counts2 TO comoment_yz_counts2;
 ALTER TABLE captures RENAME COLUMN cov_zz_counts2 TO comoment_zz_counts2;
 )sql";
+
+// Version 4: a checksum per capture and per record chunk (row_checksum.h), computed here for
+// the rows an older accelcal wrote. (Tables created by this build's migration from version 1
+// already have the column.)
+void MigrateToChecksums(SqliteDb& db) {
+  for (const auto& [table, columns] :
+       {std::pair{"captures", kCaptureChecksumColumns}, std::pair{"record_chunks", kChunkChecksumColumns}}) {
+    if (!HasColumn(db, table, "checksum"))
+      db.Exec(fmt::format("ALTER TABLE {} ADD COLUMN checksum INTEGER", table));
+    StoreAllRowChecksums(db, table, columns);
+  }
+}
 
 }  // namespace
 
@@ -137,6 +153,7 @@ void MigrateSessionSchema(SqliteDb& db) {
   if (version >= kSessionSchemaVersion) return;  // rolled back: nothing was written
   if (version < 2 && !HasTable(db, "record_chunks")) db.Exec(kRecordTables);
   if (version < 3) db.Exec(kRenameComoments);
+  if (version < 4) MigrateToChecksums(db);
   db.Exec(fmt::format("PRAGMA user_version = {}", kSessionSchemaVersion));
   transaction.Commit();
 }

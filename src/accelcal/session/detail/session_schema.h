@@ -7,20 +7,23 @@
 //   captures   seq (recording order), step_id UNIQUE, capture_id, kind, label, radius_m, rpm,
 //              up_axis, rejection_reason, n, mean_{x,y,z}_counts,
 //              comoment_{xx,xy,xz,yy,yz,zz}_counts2 (sum of (x - mean)(y - mean), version 3),
-//              t_first_s, t_last_s, mean_temp_c, samples (BLOB, see sample_blob.h), recorded_utc
+//              t_first_s, t_last_s, mean_temp_c, samples (BLOB, see sample_blob.h), recorded_utc,
+//              checksum (of every other column, row_checksum.h; version 4)
 //   inputs     (step_id, key) PRIMARY KEY, value, recorded_utc
 //   steps_done step_id PRIMARY KEY, outcome, recorded_utc
 //   results    seq, calibration_json (the calibration file's JSON text), recorded_utc
 //   record_chunks  (step_id, chunk_index) PRIMARY KEY, n, t_first_s, t_last_s, wall_end_s,
-//              samples (BLOB, see sample_blob.h), recorded_utc: a record step's samples, one
-//              row per chunk (version 2)
+//              samples (BLOB, see sample_blob.h), recorded_utc, checksum (version 4): a record
+//              step's samples, one row per chunk (version 2)
 //   record_gaps    (step_id, before_chunk) PRIMARY KEY, t_start_s, t_end_s, reason,
 //              recorded_utc: the hole just before chunk `before_chunk` (version 2)
 //
 // An older version is migrated by the first read-write open, in one transaction: version 1 gets
 // the two record tables; versions 1 and 2 get the co-moment columns' names (they were called
-// cov_*, for values that were always the co-moment). A read-only open of an older file reads it
-// as it is (a version-1 file has no records).
+// cov_*, for values that were always the co-moment); versions 1 to 3 get the checksum columns,
+// filled for the rows they hold (row_checksum.h). A read-only open of an older file reads it
+// as it is (a version-1 file has no records; rows
+// of a file older than version 4 have no checksum to verify).
 //
 // NaN (no radius, no temperature) is stored as NULL. Times are UTC ISO 8601 text.
 #pragma once
@@ -31,7 +34,7 @@
 
 namespace accelcal::detail {
 
-inline constexpr int kSessionSchemaVersion = 3;
+inline constexpr int kSessionSchemaVersion = 4;
 inline constexpr int kSessionApplicationId = 0x41434331;  // "ACC1"
 
 // Creates the tables and the session row in a new, empty database (one transaction).

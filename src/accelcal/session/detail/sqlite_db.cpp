@@ -121,6 +121,27 @@ bool SqliteStatement::ColumnIsNull(int index) const {
   return sqlite3_column_type(stmt_, index) == SQLITE_NULL;
 }
 
+SqliteStatement::ColumnKind SqliteStatement::ColumnKindOf(int index) const {
+  switch (sqlite3_column_type(stmt_, index)) {
+    case SQLITE_INTEGER: return ColumnKind::kInteger;
+    case SQLITE_FLOAT: return ColumnKind::kReal;
+    case SQLITE_TEXT: return ColumnKind::kText;
+    case SQLITE_BLOB: return ColumnKind::kBlob;
+    default: return ColumnKind::kNull;
+  }
+}
+
+std::string_view SqliteStatement::ColumnBytes(int index) const {
+  const ColumnKind kind = ColumnKindOf(index);
+  if (kind != ColumnKind::kText && kind != ColumnKind::kBlob) return {};
+  // The pointer first, then the size (sqlite.org/c3ref/column_blob.html, "safest policy").
+  const void* data = kind == ColumnKind::kText ? static_cast<const void*>(sqlite3_column_text(stmt_, index))
+                                               : sqlite3_column_blob(stmt_, index);
+  const int size = sqlite3_column_bytes(stmt_, index);
+  if (!data || size <= 0) return {};
+  return std::string_view(static_cast<const char*>(data), static_cast<size_t>(size));
+}
+
 SqliteTransaction::SqliteTransaction(SqliteDb& db) : db_(db) { db_.Exec("BEGIN IMMEDIATE"); }
 
 SqliteTransaction::~SqliteTransaction() {

@@ -8,6 +8,7 @@
 
 #include <cstdint>
 #include <string>
+#include <string_view>
 #include <vector>
 
 struct sqlite3;
@@ -67,6 +68,11 @@ class SqliteStatement {
   std::string ColumnText(int index) const;
   std::vector<unsigned char> ColumnBlob(int index) const;
   bool ColumnIsNull(int index) const;
+  // The stored type of a column in this row, and the bytes of a text or blob column (valid until
+  // the next Step; empty for the others). For checksums over what SQLite gives back.
+  enum class ColumnKind { kNull, kInteger, kReal, kText, kBlob };
+  ColumnKind ColumnKindOf(int index) const;
+  std::string_view ColumnBytes(int index) const;
 
  private:
   SqliteDb& db_;  // borrowed; outlives the statement
