@@ -14,7 +14,9 @@ git -C "$work/src" checkout -q "$rev"
 export CCACHE_DISABLE=1
 cd "$work/src"
 # What the revision's scripts pass; the build type is RelWithDebInfo in both eras.
-cmake -S . -B "$work/b" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DACCELCAL_BUILD_BENCH=OFF >/dev/null
+unity=()
+grep -q ACCELCAL_UNITY CMakeLists.txt && unity=(-DACCELCAL_UNITY=ON)   # as run.sh and test.sh
+cmake -S . -B "$work/b" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DACCELCAL_BUILD_BENCH=OFF "${unity[@]}" >/dev/null
 timed() {  # $1: label, rest: the command
   local label=$1; shift
   /usr/bin/time -f "$label: %e s wall, %U s user, %S s sys" "$@" >/dev/null

@@ -11,10 +11,10 @@ cd "$(dirname "$0")/.."
 # The benchmarks are built by scripts/bench.sh (Release), not here: tests only.
 if [ "${1:-}" = "--sanitize" ]; then
   BUILD_DIR=build-sanitize BUILD_TYPE=RelWithDebInfo ./scripts/build.sh -DACCELCAL_SANITIZE=ON \
-    -DACCELCAL_BUILD_BENCH=OFF "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1 -DNDEBUG"
+    -DACCELCAL_BUILD_BENCH=OFF -DACCELCAL_UNITY=ON "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1 -DNDEBUG"
   (cd build-sanitize && ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
      ctest --output-on-failure -j"$(nproc)")
 else
-  BUILD_DIR=build ./scripts/build.sh -DACCELCAL_BUILD_BENCH=OFF
+  BUILD_DIR=build ./scripts/build.sh -DACCELCAL_BUILD_BENCH=OFF -DACCELCAL_UNITY=ON
   (cd build && ctest --output-on-failure -j"$(nproc)")
 fi
