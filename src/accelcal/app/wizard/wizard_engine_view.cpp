@@ -186,6 +186,7 @@ void WizardEngine::SetInputView(WizardView& v) const {
   const bool radius = phase_ == Phase::kRadius;
   v.screen = WizardScreen::kInput;
   v.prompt = fmt::format("Turntable run with {}.", step().pose_name);
+  if (!input_note_.empty()) v.prompt += " " + input_note_;
   v.input = InputRequest{
       radius ? "radius" : "rpm",
       radius ? "Radius from the spin axis to the sensor (e.g. 120 mm)"
