@@ -190,7 +190,7 @@ void WizardEngine::SetInputView(WizardView& v) const {
   v.input = InputRequest{
       radius ? "radius" : "rpm",
       radius ? "Radius from the spin axis to the sensor (e.g. 120 mm)"
-             : "Table speed (e.g. 120 rpm, 2 rps, 12.57 rad/s)",
+             : "Table speed (e.g. 120 rpm, 2 rps or 2 Hz, 12.57 rad/s)",
       radius ? fmt::format("{:g} mm", radius_m_ * 1000.0) : fmt::format("{:g} rpm", rpm_),
       input_error_};
   v.keys = WithNavigation({{"Enter", "accept"}});
