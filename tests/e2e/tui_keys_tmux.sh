@@ -84,6 +84,7 @@ screen | grep -q 'answer \[50 mm\]: _' || fail "Esc did not clear the answer"
 # A speed typed at the radius sets the speed (never "unknown unit 'rpm' for a radius").
 send -l '600 rpm'; send Enter
 wait_for "Speed set to 600 rpm; now the radius"
+keep speed_at_radius
 screen | grep -q "unknown unit" && fail "unknown unit at the radius"
 send Enter  # the radius's default, 50 mm
 wait_for "Table speed"
