@@ -12,6 +12,7 @@
 
 #include "accelcal/base/duration_text.h"
 #include "frontend.h"
+#include "line_mode_help.h"
 
 namespace accelcal::ui {
 namespace {
@@ -177,6 +178,10 @@ int RunLineMode(WizardDriver& driver, std::istream& in, std::ostream& out, int i
       continue;
     }
     out << '\n';
+    if (IsHelpRequest(TrimLine(answer))) {
+      PrintLineModeHelp(v, out);  // the question is asked again
+      continue;
+    }
     driver.Handle(ToIntent(TrimLine(answer), v));
     driver.Poll(0.0);
   }

@@ -214,9 +214,12 @@ TEST(WizardEngineTest, TurntableInputsAreRefusedWithTheReasonThenAccepted) {
   rig.engine.Handle({IntentKind::kSubmitText, "1.5 m"});
   rig.engine.Handle({IntentKind::kSubmitText, "300 rpm"});
   ASSERT_TRUE(rig.engine.View().input.has_value());
-  EXPECT_EQ(rig.engine.View().input->key, "radius");
+  // Issue 15: the cursor stays on the speed, where the technician types next; a radius typed
+  // there (its unit says so) corrects the radius.
+  EXPECT_EQ(rig.engine.View().input->key, "rpm");
   EXPECT_NE(rig.engine.View().input->error.find("range"), std::string::npos);
   rig.engine.Handle({IntentKind::kSubmitText, "120 mm"});
+  EXPECT_EQ(rig.engine.View().input->key, "rpm");
   rig.engine.Handle({IntentKind::kSubmitText, "2 rps"});
   EXPECT_EQ(rig.engine.View().screen, WizardScreen::kMountTurntable);
   AcceptUntil(rig.engine, [](const WizardView& view) { return view.input.has_value(); });
@@ -224,6 +227,51 @@ TEST(WizardEngineTest, TurntableInputsAreRefusedWithTheReasonThenAccepted) {
   ASSERT_EQ(captures.back().step_id, "tt_x_050");
   EXPECT_DOUBLE_EQ(captures.back().capture.radius_m, 0.12);
   EXPECT_DOUBLE_EQ(captures.back().capture.rpm, 120.0);
+}
+
+// Issue 15's entry traps: after "600 rpm at ... lower the speed or the radius" the cursor was in
+// the radius field, "300 rpm" there got "unknown unit 'rpm' for a radius", the refused 600 rpm
+// became the default, "0,12" was not understood and blanks were "not a speed".
+TEST(WizardEngineTest, TurntableEntryTraps) {
+  Rig rig(SeedProcedure());
+  AcceptUntil(rig.engine, [](const WizardView& v) { return v.input && v.input->key == "radius"; });
+  auto input = [&rig] { return *rig.engine.View().input; };
+  rig.engine.Handle({IntentKind::kSubmitText, "   "});  // blanks: the default, as empty
+  ASSERT_EQ(input().key, "rpm");
+  EXPECT_EQ(input().error, "");
+  rig.engine.Handle({IntentKind::kSubmitText, "600 rpm"});
+  ASSERT_TRUE(rig.engine.View().input.has_value());
+  EXPECT_EQ(input().key, "rpm");  // the cursor where the technician types next
+  EXPECT_NE(input().error.find("lower the speed or the radius"), std::string::npos) << input().error;
+  EXPECT_EQ(input().default_text, "120 rpm");  // never the refused 600
+  // A radius typed at the speed corrects the radius; the cursor stays on the speed.
+  rig.engine.Handle({IntentKind::kSubmitText, "3 cm"});
+  EXPECT_EQ(input().key, "rpm");
+  EXPECT_EQ(input().error, "");
+  EXPECT_NE(rig.engine.View().prompt.find("Radius set to 30 mm"), std::string::npos);
+  rig.engine.Handle({IntentKind::kBack, ""});
+  ASSERT_EQ(input().key, "radius");
+  EXPECT_EQ(input().default_text, "30 mm");
+  // A speed typed at the radius corrects the speed, never "unknown unit 'rpm' for a radius".
+  rig.engine.Handle({IntentKind::kSubmitText, "200 rpm"});
+  EXPECT_EQ(input().key, "radius");
+  EXPECT_EQ(input().error, "");
+  EXPECT_NE(rig.engine.View().prompt.find("Speed set to 200 rpm"), std::string::npos);
+  rig.engine.Handle({IntentKind::kSubmitText, "0,04"});  // a decimal comma
+  ASSERT_EQ(input().key, "rpm");
+  EXPECT_EQ(input().default_text, "200 rpm");
+  rig.engine.Handle({IntentKind::kSubmitText, " \t"});
+  const WizardView v = rig.engine.View();
+  EXPECT_EQ(v.screen, WizardScreen::kMountTurntable);
+  EXPECT_NE(v.prompt.find("40 mm"), std::string::npos) << v.prompt;
+  EXPECT_NE(v.prompt.find("200 rpm"), std::string::npos) << v.prompt;
+}
+
+// Blanks at the welcome take the default, as an empty answer does (line mode trims them).
+TEST(WizardEngineTest, BlankWelcomeAnswerTakesTheDefault) {
+  Rig rig(SeedProcedure());
+  rig.engine.Handle({IntentKind::kSubmitText, "  "});
+  EXPECT_EQ(rig.journal->Inputs().at("welcome").at("device"), "SN1");
 }
 
 TEST(WizardEngineTest, WrongFaceIsShownAndTheRetryTakesTheRightOne) {

@@ -30,6 +30,19 @@ std::optional<KeyOutcome> Scroll(const WizardView& view, EditState& state, int k
   return KeyOutcome{KeyResult::kRedraw, std::nullopt};
 }
 
+// Keys that mean the same on every screen, text field or not; nothing for other keys.
+std::optional<KeyOutcome> AnywhereKey(EditState& state, int key) {
+  switch (key) {
+    case kKeyF1:
+    case '?':
+      state.help = true;
+      return KeyOutcome{KeyResult::kRedraw, std::nullopt};
+    case kKeyCtrlN: return Send(IntentKind::kSkip);
+    case kKeyCtrlX: return Send(IntentKind::kQuit);
+    default: return std::nullopt;
+  }
+}
+
 KeyOutcome EditKey(EditState& state, int key) {
   switch (key) {
     case kKeyEnter: {
@@ -37,13 +50,15 @@ KeyOutcome EditKey(EditState& state, int key) {
       state.text.clear();
       return Send(IntentKind::kSubmitText, std::move(text));
     }
-    case kKeyEscape: state.text.clear(); return {KeyResult::kRedraw, std::nullopt};
+    case kKeyEscape:
+      if (state.text.empty()) return Send(IntentKind::kBack);
+      state.text.clear();
+      return {KeyResult::kRedraw, std::nullopt};
     case kKeyBackspace:
       if (!state.text.empty()) state.text.pop_back();
       return {KeyResult::kRedraw, std::nullopt};
     default: break;
   }
-  if (key == 'q' && state.text.empty()) return Send(IntentKind::kQuit);
   if (IsPrintable(key)) {
     state.text += static_cast<char>(key);
     return {KeyResult::kRedraw, std::nullopt};
@@ -69,9 +84,22 @@ KeyOutcome CommandKey(int key) {
 KeyOutcome HandleKey(const WizardView& view, EditState& state, int key) {
   if (key == kKeyNone) return {};
   if (key == kKeyResize) return {KeyResult::kRedraw, std::nullopt};
+  if (state.help) {
+    state.help = false;  // the key only closes the help
+    return {KeyResult::kRedraw, std::nullopt};
+  }
   if (auto scrolled = Scroll(view, state, key)) return *scrolled;
   if (view.finished) return {KeyResult::kExit, std::nullopt};
+  if (auto anywhere = AnywhereKey(state, key)) return *anywhere;
   return view.input ? EditKey(state, key) : CommandKey(key);
+}
+
+std::string KeyName(const std::string& hint_key, bool text_field) {
+  if (!text_field || hint_key == "Enter") return hint_key;
+  if (hint_key == "s") return "Ctrl-N";
+  if (hint_key == "b") return "Esc";
+  if (hint_key == "q") return "Ctrl-X";
+  return "";
 }
 
 void SyncEditState(const WizardView& view, EditState& state) {
@@ -82,6 +110,7 @@ void SyncEditState(const WizardView& view, EditState& state) {
   state.context = std::move(context);
   state.text.clear();
   state.scroll = 0;
+  state.help = false;
 }
 
 }  // namespace accelcal::ui

@@ -4,6 +4,7 @@
 
 #include <fmt/core.h>
 
+#include "tui/help_overlay.h"
 #include "tui/render_blocks.h"
 #include "tui/text_util.h"
 
@@ -83,6 +84,13 @@ ScreenModel Render(const WizardView& view, const RenderState& state, int width, 
   screen.PutLine(0, 0, HeaderLine(view, width));
   if (height == 1) return screen;
   const int middle_rows = height - 2;  // between the header and the keys
+  if (state.help) {
+    std::vector<Line> help = HelpBlock(view, width);
+    help.resize(std::min(help.size(), static_cast<size_t>(middle_rows)));
+    for (size_t i = 0; i < help.size(); ++i) screen.PutLine(static_cast<int>(i) + 1, 0, help[i]);
+    screen.PutLine(height - 1, 0, {{"any key", Role::kTitle}, {" close the help", Role::kNormal}});
+    return screen;
+  }
 
   // A record's panel takes the rows the other blocks leave.
   std::vector<Block> others = MiddleBlocks(view, state, width, false, 0);
@@ -109,7 +117,8 @@ ScreenModel Render(const WizardView& view, const RenderState& state, int width, 
   }
   row = height - 1 - static_cast<int>(status.size());
   for (const Line& line : status) screen.PutLine(row++, 0, line);
-  screen.PutLine(height - 1, 0, KeysLine(view, scrollable && !view.lines.empty()));
+  screen.PutLine(height - 1, 0,
+                 KeysLine(view, scrollable && !view.lines.empty(), !state.edit_text.empty()));
   return screen;
 }
 

@@ -118,6 +118,7 @@ void WizardEngine::EnterStep(int index) {
   problem_.clear();
   hint_.clear();
   input_error_.clear();
+  input_note_.clear();
   lines_.clear();
   if (current_ >= static_cast<int>(procedure_.steps.size())) {
     phase_ = Phase::kDone;

@@ -161,6 +161,8 @@ class WizardEngine final : public WizardDriver {
   Eigen::Vector3d MeasuredUp(const Capture& c) const;
   void OnCaptureRejected();
   void HandleTurntableInput(const Intent& intent);
+  void CorrectOtherTurntableField(const std::string& text, bool to_radius);
+  void CheckTurntablePlanAndPlace(double rpm);
   void HandleResult(const Intent& intent);
   void HandleCaptureIntent(const Intent& intent);
   void Show(StepOutcome outcome);
@@ -194,6 +196,7 @@ class WizardEngine final : public WizardDriver {
   Phase phase_ = Phase::kWelcome;
   int welcome_field_ = 0;
   std::string input_error_;
+  std::string input_note_;  // what a typed value set in the other turntable field
   std::string problem_;
   std::string hint_;
   std::vector<std::string> lines_;

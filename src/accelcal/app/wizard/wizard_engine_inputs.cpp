@@ -59,7 +59,7 @@ void WizardEngine::HandleWelcome(const Intent& intent) {
   if (intent.kind != IntentKind::kSubmitText && intent.kind != IntentKind::kAccept) return;
   const WelcomeField field = Welcome(welcome_field_);
   std::string value = intent.kind == IntentKind::kSubmitText ? intent.text : "";
-  if (value.empty()) value = field.default_value;
+  if (IsBlank(value)) value = field.default_value;  // blanks only: the default, as for ""
   if (std::string why = CheckWelcomeAnswer(field.key, value); !why.empty()) {
     input_error_ = why;
     return;
@@ -76,12 +76,24 @@ void WizardEngine::HandleWelcome(const Intent& intent) {
   AdvanceFrom(0);
 }
 
+// A value goes to the field its unit names, wherever the cursor is: "300 rpm" typed at the
+// radius corrects the speed (the technician read "lower the speed" and typed a speed). The cursor
+// stays; a note says what was taken. Blank text is empty: the field's default.
 void WizardEngine::HandleTurntableInput(const Intent& intent) {
   if (intent.kind == IntentKind::kSkip) return AskSkip();
-  if (intent.kind == IntentKind::kBack) return GoBack();
+  if (intent.kind == IntentKind::kBack) {
+    input_error_.clear();  // the refusal was about the field left
+    input_note_.clear();
+    return GoBack();
+  }
   if (intent.kind != IntentKind::kAccept && intent.kind != IntentKind::kSubmitText) return;
   const bool radius = phase_ == Phase::kRadius;
-  const std::string text = intent.kind == IntentKind::kSubmitText ? intent.text : "";
+  const std::string text =
+      intent.kind == IntentKind::kSubmitText && !IsBlank(intent.text) ? intent.text : "";
+  input_note_.clear();
+  const TurntableField unit_field = FieldOfUnit(text);
+  if (unit_field != TurntableField::kNone && (unit_field == TurntableField::kRadius) != radius)
+    return CorrectOtherTurntableField(text, unit_field == TurntableField::kRadius);
   const double fallback = radius ? radius_m_ : rpm_;
   const QuantityResult q = text.empty() ? QuantityResult{fallback, ""}
                                         : (radius ? ParseRadius(text) : ParseRpm(text));
@@ -90,14 +102,34 @@ void WizardEngine::HandleTurntableInput(const Intent& intent) {
     return;
   }
   input_error_.clear();
-  (radius ? radius_m_ : rpm_) = q.value;
   if (radius) {
+    radius_m_ = q.value;
     phase_ = Phase::kRpm;
     return;
   }
+  CheckTurntablePlanAndPlace(q.value);
+}
+
+void WizardEngine::CorrectOtherTurntableField(const std::string& text, bool to_radius) {
+  const QuantityResult q = to_radius ? ParseRadius(text) : ParseRpm(text);
+  if (!q.ok()) {
+    input_error_ = q.error;
+    return;
+  }
+  input_error_.clear();
+  (to_radius ? radius_m_ : rpm_) = q.value;
+  input_note_ = to_radius
+                    ? fmt::format("Radius set to {:g} mm; now the speed.", q.value * 1000.0)
+                    : fmt::format("Speed set to {:g} rpm; now the radius.", q.value);
+}
+
+// The plan (radius_m_ with `rpm`) against the accelerometer's range. A refused speed never
+// becomes the default: the default goes back to the procedure's, and the cursor stays on the
+// speed, where the technician types next (or types a radius there: see above).
+void WizardEngine::CheckTurntablePlanAndPlace(double rpm) {
   TurntableSetup setup;
   setup.radius_m = radius_m_;
-  setup.rpm = rpm_;
+  setup.rpm = rpm;
   setup.radial_axis = SensorAxisVector(step().radial_axis);
   setup.up_axis = SensorAxisVector(step().up_axis);
   TurntableStabilityOptions o;
@@ -106,9 +138,10 @@ void WizardEngine::HandleTurntableInput(const Intent& intent) {
                                                      procedure_.adc_range, o);
   if (!why.empty()) {
     input_error_ = why;
-    phase_ = Phase::kRadius;
+    rpm_ = step().rpm;
     return;
   }
+  rpm_ = rpm;
   EnterPlace();
 }
 

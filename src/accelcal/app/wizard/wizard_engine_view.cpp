@@ -186,10 +186,11 @@ void WizardEngine::SetInputView(WizardView& v) const {
   const bool radius = phase_ == Phase::kRadius;
   v.screen = WizardScreen::kInput;
   v.prompt = fmt::format("Turntable run with {}.", step().pose_name);
+  if (!input_note_.empty()) v.prompt += " " + input_note_;
   v.input = InputRequest{
       radius ? "radius" : "rpm",
       radius ? "Radius from the spin axis to the sensor (e.g. 120 mm)"
-             : "Table speed (e.g. 120 rpm, 2 rps, 12.57 rad/s)",
+             : "Table speed (e.g. 120 rpm, 2 rps or 2 Hz, 12.57 rad/s)",
       radius ? fmt::format("{:g} mm", radius_m_ * 1000.0) : fmt::format("{:g} rpm", rpm_),
       input_error_};
   v.keys = WithNavigation({{"Enter", "accept"}});
