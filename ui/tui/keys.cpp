@@ -71,6 +71,11 @@ KeyOutcome HandleKey(const WizardView& view, EditState& state, int key) {
   if (key == kKeyResize) return {KeyResult::kRedraw, std::nullopt};
   if (auto scrolled = Scroll(view, state, key)) return *scrolled;
   if (view.finished) return {KeyResult::kExit, std::nullopt};
+  // The figures behind a message (std, limits, sigmas): one key away, never on the main line.
+  if (!view.input && !view.detail.empty() && (key == 'd' || key == 'D')) {
+    state.details = !state.details;
+    return {KeyResult::kRedraw, std::nullopt};
+  }
   return view.input ? EditKey(state, key) : CommandKey(key);
 }
 

@@ -45,6 +45,7 @@ struct EditState {
   int scroll = 0;
   int page = 10;        // rows the text lines get, for PgUp/PgDn (set by the loop)
   std::string context;  // what the state belongs to
+  bool details = false; // `d` shows the figures behind the capture's message
 };
 
 struct KeyOutcome {

@@ -20,6 +20,7 @@ namespace accelcal::ui {
 struct RenderState {
   std::string edit_text;
   int scroll = 0;
+  bool details = false;  // `d`: the figures behind the capture's message are shown
 };
 
 ScreenModel Render(const WizardView& view, const RenderState& state, int width, int height);

@@ -1,0 +1,122 @@
+#!/usr/bin/env bash
+# Issue 15, the capture flow in the TUI: a whole session on the clumsy bench
+# (scenarios/clumsy_bump.toml: a knock during the tilted pose +x+y+z), driven through tmux at
+# 100x30. Every distinct screen is kept; the session must have shown the knock in plain words
+# (the figures only behind `d`), the settling as a wait, the seconds left of a capture and the
+# countdown to its give-up, the session's estimate, each accepted capture confirmed with its
+# figures, and the final verdict screen; after the TUI exits, the verdict and the numbers stay on
+# the terminal. A second run is left with q: the terminal says how to resume.
+# Waits on screen content, never on fixed sleeps alone (the deadlines only guard against a hang).
+# Usage: bash tui_clumsy_session.sh ACCELCAL SOURCE_DIR SHARED_DATA_DIR
+# ACCELCAL_SCREENSHOTS=DIR keeps the ANSI captures of the key screens there (for a look by eye).
+set -u
+ACCELCAL=$(cd "$(dirname "$1")" && pwd)/$(basename "$1")
+SOURCE_DIR=$2
+
+fail() { echo "FAIL: $*"; [ -n "${last_screen:-}" ] && printf '%s\n' "--- screen:" "$last_screen"; exit 1; }
+command -v tmux >/dev/null || { echo "SKIP: tmux not installed"; exit 77; }
+
+work=$(mktemp -d)
+sock="accelcal_flow_$$"
+tmx() { tmux -L "$sock" "$@"; }
+trap 'tmx kill-server 2>/dev/null; rm -rf "$work"' EXIT
+shots=${ACCELCAL_SCREENSHOTS:-}
+[ -n "$shots" ] && mkdir -p "$shots"
+
+# The seed procedure with 3 s captures (the checks are the same; the test time is not).
+sed -e 's/^capture_duration_s = 10 /capture_duration_s = 3 /' \
+  "$SOURCE_DIR/procedures/seed_calibration.toml" > "$work/short.toml"
+grep -q '^capture_duration_s = 3 ' "$work/short.toml" || fail "short procedure: no capture_duration_s"
+
+start() {  # NAME SPEED
+  cat > "$work/$1.sh" <<EOS
+cd "$work"
+"$ACCELCAL" wizard --source sim --speed $2 --scenario "$SOURCE_DIR/scenarios/clumsy_bump.toml" \
+  --procedure "$work/short.toml" --session "$work/$1.db"
+echo "EXIT=\$?" > "$work/$1.exit"
+sleep 120
+EOS
+  tmx new-session -d -s "$1" -x 100 -y 30 "bash '$work/$1.sh'"
+}
+
+screen_of() { last_screen=$(tmx capture-pane -p -t "$1" 2>/dev/null); }
+# One flat line of the screen: wrapped text reads as one.
+flat() { printf '%s' "$last_screen" | tr -s ' \n' '  '; }
+shot() {  # NAME: the screen with its colours, once
+  [ -n "$shots" ] && [ ! -s "$shots/$1.ansi" ] && tmx capture-pane -e -p -t full > "$shots/$1.ansi"
+  return 0
+}
+
+# --- 1. The whole session. Enter only to a screen that offers it; `d` once on the knock.
+start full 5
+deadline=$((SECONDS + 150))
+seen_knock=0 seen_figures=0 seen_wait=0 seen_left=0 seen_giveup=0 seen_estimate=0 seen_done=0 final=0
+while [ $SECONDS -lt $deadline ]; do
+  sleep 0.2
+  [ -s "$work/full.exit" ] && fail "the wizard left before its final screen: $(cat "$work/full.exit")"
+  screen_of full
+  f=$(flat)
+  case "$f" in *"[WAIT]"*"still settling after you let go: wait"*) seen_wait=1; shot settling ;; esac
+  case "$f" in *"s left of this capture; gives up in "*) seen_left=1; shot capturing ;; esac
+  case "$f" in *"gives up in "*) seen_giveup=1 ;; esac
+  case "$f" in *"(estimate)"*) seen_estimate=1 ;; esac
+  case "$f" in *"[DONE] "*" done: 3.0 s, |a| ~"*" m/s^2, noise "*" counts"*) seen_done=1; shot confirmed ;; esac
+  case "$f" in *"sigma) at t ="*) [ $seen_figures = 1 ] || fail "the figures on the screen before d was pressed" ;; esac
+  case "$f" in
+    *"the bench was knocked: don't touch it; measuring again"*)
+      seen_knock=1; shot knocked
+      if [ $seen_figures = 0 ]; then
+        tmx send-keys -t full d
+        sleep 0.3; screen_of full
+        case "$(flat)" in *"detail "*"spike: "*"sigma"*) seen_figures=1; shot knocked_figures ;; esac
+        tmx send-keys -t full d
+      fi ;;
+  esac
+  case "$f" in *"[PASS] Verdict: PASS"*"any key leave"*) final=1; shot verdict; break ;; esac
+  case "$f" in *"any key leave"*) fail "the final screen has no PASS verdict" ;; esac
+  printf '%s' "$last_screen" | grep -q '  Enter [a-z]' && tmx send-keys -t full Enter 2>/dev/null
+done
+[ $final = 1 ] || fail "the session did not reach its verdict screen in 150 s"
+[ $seen_knock = 1 ] || fail "the knock was never said in words"
+[ $seen_figures = 1 ] || fail "d never showed the knock's figures"
+[ $seen_wait = 1 ] || fail "the settling after letting go was never shown as a wait"
+[ $seen_left = 1 ] || fail "no capture showed its seconds left"
+[ $seen_giveup = 1 ] || fail "no countdown to the give-up"
+[ $seen_estimate = 1 ] || fail "no estimate of the session's time"
+[ $seen_done = 1 ] || fail "no accepted capture was confirmed with its figures"
+f=$(flat)
+for text in "Calibration complete: PASS." "bias (counts)" "scale (counts/m/s^2)" "misalignment (mrad)" \
+            "residual RMS" "Report: $work/full.db.report.html"; do
+  case "$f" in *"$text"*) ;; *) fail "the verdict screen lacks '$text'" ;; esac
+done
+echo "full: verdict screen reached"
+
+# Any key leaves; the summary stays on the terminal.
+tmx send-keys -t full q
+for i in $(seq 1 100); do [ -s "$work/full.exit" ] && break; sleep 0.1; done
+[ "$(cat "$work/full.exit")" = "EXIT=0" ] || fail "exit status: $(cat "$work/full.exit")"
+screen_of full
+f=$(flat)
+for text in "Calibration complete: PASS." "Verdict: PASS" "bias (counts)" "Report: $work/full.db.report.txt"; do
+  case "$f" in *"$text"*) ;; *) fail "after exit the terminal lacks '$text'" ;; esac
+done
+[ -n "$shots" ] && tmx capture-pane -e -p -t full > "$shots/after_exit.ansi"
+echo "full: the summary stays on the terminal"
+
+# --- 2. q in the middle: the terminal says how to resume.
+start quit 0
+deadline=$((SECONDS + 30))
+while [ $SECONDS -lt $deadline ]; do
+  sleep 0.2; screen_of quit
+  printf '%s' "$last_screen" | grep -q 'q save and quit' && break
+done
+tmx send-keys -t quit q
+for i in $(seq 1 100); do [ -s "$work/quit.exit" ] && break; sleep 0.1; done
+[ "$(cat "$work/quit.exit" 2>/dev/null)" = "EXIT=0" ] || fail "quit: exit status: $(cat "$work/quit.exit" 2>/dev/null)"
+screen_of quit
+case "$(flat)" in
+  *"Saved. Everything accepted is in session $work/quit.db; run the wizard on it again to resume."*) ;;
+  *) fail "after q the terminal does not say how to resume" ;;
+esac
+echo "quit: the terminal says how to resume"
+echo "PASS"
