@@ -111,7 +111,7 @@ TEST(TimeEstimate, TheSessionIsTheRemainingStepsAndTheirHandling) {
   EXPECT_DOUBLE_EQ(RemainingEstimateS(p, static_cast<int>(p.steps.size()), none_done), 0.0);
   EXPECT_EQ(FormatEstimate(14.2 * 60), "about 14 min");
   EXPECT_EQ(FormatEstimate(42), "about 40 s");
-  EXPECT_EQ(CaptureTimeText(10, 3.2, 52.5, 840),
+  EXPECT_EQ(CaptureTimeText(10, 3.6, 52.6, 840),
             "4 s left of this capture; gives up in 53 s; session: about 14 min left (estimate)");
   EXPECT_EQ(CaptureTimeText(10, kNaN, 60, kNaN),
             "this capture takes 10 s once the sensor is still; gives up in 60 s");

@@ -48,7 +48,7 @@ std::string SessionPart(double session_left_s) {
   return fmt::format("session: {} left (estimate)", FormatEstimate(session_left_s));
 }
 
-std::string Seconds(double s) { return fmt::format("{:.0f} s", std::ceil(std::max(s, 0.0))); }
+std::string Seconds(double s) { return fmt::format("{:.0f} s", std::round(std::max(s, 0.0))); }
 
 }  // namespace
 

@@ -292,7 +292,7 @@ void WizardEngine::SetCaptureView(WizardView& v) const {
   v.prompt = fmt::format("{} {} (attempt {}): {}", CaptureStateToString(snap.state), step().pose_name,
                          std::max(1, snap.attempts),
                          capturing ? fmt::format("{:.0f} %, {:.0f} s left; {}", snap.progress * 100.0,
-                                                 std::ceil(v.capture_left_s), said.text)
+                                                 std::round(v.capture_left_s), said.text)
                                    : said.text);
   v.progress = snap.progress;
   v.waiting = said.waiting;
