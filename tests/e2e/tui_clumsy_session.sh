@@ -42,11 +42,15 @@ EOS
   tmx new-session -d -s "$1" -x 100 -y 30 "bash '$work/$1.sh'"
 }
 
-screen_of() { last_screen=$(tmx capture-pane -p -t "$1" 2>/dev/null); }
+# The screen with its colours (kept for a screenshot) and as text, from one capture.
+screen_of() {
+  last_ansi=$(tmx capture-pane -e -p -t "$1" 2>/dev/null)
+  last_screen=$(printf '%s' "$last_ansi" | sed 's/\x1b\[[0-9;]*m//g')
+}
 # One flat line of the screen: wrapped text reads as one.
 flat() { printf '%s' "$last_screen" | tr -s ' \n' '  '; }
 shot() {  # NAME: the screen with its colours, once
-  [ -n "$shots" ] && [ ! -s "$shots/$1.ansi" ] && tmx capture-pane -e -p -t full > "$shots/$1.ansi"
+  [ -n "$shots" ] && [ ! -s "$shots/$1.ansi" ] && printf '%s\n' "$last_ansi" > "$shots/$1.ansi"
   return 0
 }
 
@@ -112,7 +116,7 @@ f=$(flat)
 for text in "Calibration complete: PASS." "Verdict: PASS" "bias (counts)" "Report: $work/full.report.txt"; do
   case "$f" in *"$text"*) ;; *) fail "after exit the terminal lacks '$text'" ;; esac
 done
-[ -n "$shots" ] && tmx capture-pane -e -p -t full > "$shots/after_exit.ansi"
+[ -n "$shots" ] && printf '%s\n' "$last_ansi" > "$shots/after_exit.ansi"
 echo "full: the summary stays on the terminal"
 
 # --- 2. q in the middle: the terminal says how to resume.
