@@ -143,6 +143,14 @@ TEST(TuiCaptureFlow, KnockInWordsFiguresOneKeyAway100x30) {
   EXPECT_TRUE(Contains(shown.Text(), "135.1 sigma"));
   HandleKey(view, edit, 'd');
   EXPECT_FALSE(edit.details);
+  // It holds across screens, even one without figures (a key pressed as the screen changed);
+  // in a text field `d` is typed.
+  EXPECT_EQ(HandleKey(testing::StaticPoseView(), edit, 'd').result, KeyResult::kRedraw);
+  EXPECT_TRUE(edit.details);
+  EditState typing;
+  HandleKey(testing::WelcomeView(), typing, 'd');
+  EXPECT_EQ(typing.text, "d");
+  EXPECT_FALSE(typing.details);
 }
 
 TEST(TuiCaptureFlow, CapturingSaysItsSecondsLeft80x24) {

@@ -72,7 +72,9 @@ KeyOutcome HandleKey(const WizardView& view, EditState& state, int key) {
   if (auto scrolled = Scroll(view, state, key)) return *scrolled;
   if (view.finished) return {KeyResult::kExit, std::nullopt};
   // The figures behind a message (std, limits, sigmas): one key away, never on the main line.
-  if (!view.input && !view.detail.empty() && (key == 'd' || key == 'D')) {
+  // A toggle that holds from screen to screen, so a key pressed as the screen changes still
+  // counts (the keys line offers it only where there are figures).
+  if (!view.input && (key == 'd' || key == 'D')) {
     state.details = !state.details;
     return {KeyResult::kRedraw, std::nullopt};
   }
