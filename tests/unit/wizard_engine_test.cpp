@@ -306,17 +306,23 @@ TEST(WizardEngineTest, ABumpIsRetriedByItself) {
   Rig rig(ShortStaticProcedure(9), Fast(1.0));
   AcceptUntil(rig.engine, TitleIs("+z up"));
   PassNoiseFloor(rig.engine);
-  std::vector<std::string> problems;
+  // Issue 15: a retry is said in words on the capture screen, its figures on the detail line;
+  // it is no longer a problem (until then: problem "spike: ..." on every retry).
+  bool knocked = false;
   for (int pose = 0; pose < 3; ++pose) {
     rig.engine.Handle({IntentKind::kAccept, ""});
-    const std::vector<std::string> seen = PollUntilQuestion(rig.engine);
-    problems.insert(problems.end(), seen.begin(), seen.end());
+    for (int i = 0; i < 5000 && Busy(rig.engine.View()); ++i) {
+      rig.engine.Poll(0.0);
+      const WizardView v = rig.engine.View();
+      EXPECT_TRUE(v.problem.empty()) << v.problem;
+      if (v.stability_text == "the bench was knocked: don't touch it; measuring again" &&
+          v.detail.find("spike") != std::string::npos)
+        knocked = true;
+    }
   }
   EXPECT_GE(rig.sim.bumps_scheduled(), 3);
   EXPECT_EQ(rig.journal->Captures().size(), 3u);
-  bool spike = false;
-  for (const std::string& p : problems) spike = spike || p.find("spike") != std::string::npos;
-  EXPECT_TRUE(spike) << "no retry after a bump was shown";
+  EXPECT_TRUE(knocked) << "no retry after a bump was shown";
 }
 
 TEST(WizardEngineTest, AnUnusableFitBlocksTheWizard) {

@@ -91,6 +91,13 @@ KeyOutcome HandleKey(const WizardView& view, EditState& state, int key) {
   if (auto scrolled = Scroll(view, state, key)) return *scrolled;
   if (view.finished) return {KeyResult::kExit, std::nullopt};
   if (auto anywhere = AnywhereKey(state, key)) return *anywhere;
+  // The figures behind a message (std, limits, sigmas): one key away, never on the main line.
+  // A toggle that holds from screen to screen, so a key pressed as the screen changes still
+  // counts (the keys line offers it only where there are figures).
+  if (!view.input && (key == 'd' || key == 'D')) {
+    state.details = !state.details;
+    return {KeyResult::kRedraw, std::nullopt};
+  }
   return view.input ? EditKey(state, key) : CommandKey(key);
 }
 

@@ -53,6 +53,7 @@ struct EditState {
   int page = 10;        // rows the text lines get, for PgUp/PgDn (set by the loop)
   std::string context;  // what the state belongs to
   bool help = false;    // the help overlay is shown (any key closes it)
+  bool details = false; // `d` shows the figures behind the capture's message
 };
 
 struct KeyOutcome {

@@ -5,6 +5,7 @@
 #include <fmt/core.h>
 
 #include "tui/help_overlay.h"
+#include "tui/capture_blocks.h"
 #include "tui/render_blocks.h"
 #include "tui/text_util.h"
 
@@ -51,9 +52,13 @@ std::vector<Block> MiddleBlocks(const WizardView& view, const RenderState& state
   }
   return {
       {7, TitleBlock(view, width)},
+      {9, VerdictBlock(view, width)},
+      {6, NoticeBlock(view, width)},
       {5, PromptBlock(view, width)},
       {4, std::move(panel)},
       {8, ProblemBlock(view, width)},
+      {6, DetailBlock(view, state, width)},
+      {5, TimeBlock(view, width)},
       {9, InputBlock(view, state, width)},
   };
 }

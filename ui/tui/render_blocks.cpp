@@ -58,6 +58,8 @@ Line StabilityLine(const WizardView& view) {
   const std::string gauge = " " + Bar(s, kBarCells) + " " + FormatNumber(s, 2, 4);
   if (std::isnan(s)) return Labelled("stable", "[ -- ]" + gauge, Role::kDim);
   const bool still = s < 1.0;
+  // Settling after the hand let go is a wait, not a warning.
+  if (!still && view.waiting) return Labelled("stable", "[WAIT]" + gauge, Role::kPrompt);
   return Labelled("stable", (still ? "[ OK ]" : "[WARN]") + gauge,
                   still ? Role::kPass : Role::kWarn);
 }
@@ -235,6 +237,7 @@ Line KeysLine(const WizardView& view, bool scrollable, bool typed) {
     }
     add("?", "help");
   }
+  if (!view.finished && !view.detail.empty()) add("d", "figures");
   if (scrollable) add("PgUp/PgDn", "scroll");
   return line;
 }

@@ -176,12 +176,16 @@ StepOutcome CalibrationSteps::Report(bool adopt_effects, const ReportMeta& meta,
       out.lines.push_back(line);
   for (const std::string& why : verdict.incomplete)
     for (const std::string& line : WrapWords("  INCOMPLETE: " + why, 78)) out.lines.push_back(line);
-  if (outputs_ == nullptr) return out;
-  try {
-    for (const std::string& path : outputs_->WriteReports(in)) out.lines.push_back("Report written to " + path);
-  } catch (const Error& e) {
-    out.lines.push_back(std::string("The report was not written: ") + e.what());
+  std::vector<std::string> paths;
+  if (outputs_ != nullptr) {
+    try {
+      paths = outputs_->WriteReports(in);
+      for (const std::string& path : paths) out.lines.push_back("Report written to " + path);
+    } catch (const Error& e) {
+      out.lines.push_back(std::string("The report was not written: ") + e.what());
+    }
   }
+  final_summary_ = BuildFinalSummary(verdict, paths);
   return out;
 }
 

@@ -10,6 +10,7 @@
 
 #include "accelcal/acquire/capture_engine/noise_floor.h"
 #include "accelcal/app/calibration_pipeline.h"
+#include "accelcal/app/wizard/final_summary.h"
 #include "accelcal/app/wizard/session_model.h"
 #include "accelcal/app/wizard/wizard_outputs.h"
 #include "accelcal/base/gravity.h"
@@ -43,6 +44,9 @@ class CalibrationSteps {
   // The analysis step `step` of an earlier record; `outcome` gets its figures in one line.
   StepOutcome Analysis(const ProcedureStep& step, std::string* outcome);
 
+  // The verdict and headline numbers of the last Report (final_summary.h); nullptr before one.
+  const FinalSummary* final_summary() const { return final_summary_ ? &*final_summary_ : nullptr; }
+
   // The current pipeline outcome (after Fit or Diagnosis); nullptr before.
   const CalibrationOutcome* outcome() const { return outcome_ ? &*outcome_ : nullptr; }
 
@@ -63,6 +67,7 @@ class CalibrationSteps {
   std::optional<CalibrationOutcome> outcome_;
   size_t outcome_captures_ = 0;  // the number of accepted captures outcome_ was computed from
   std::optional<NoiseFloor> lowered_floor_;
+  std::optional<FinalSummary> final_summary_;
 };
 
 }  // namespace accelcal

@@ -288,6 +288,7 @@ void WizardEngine::Poll(double timeout_s) {
 
 void WizardEngine::Handle(const Intent& intent) {
   if (phase_ == Phase::kDone) return;
+  notice_.clear();  // a confirmation stays until the next key
   if (intent.kind == IntentKind::kQuit) {
     Quit();
     return;

@@ -184,6 +184,10 @@ class WizardEngine final : public WizardDriver {
   void SetDoneView(WizardView& v) const;
   void SetCaptureView(WizardView& v) const;
   void SetRecordView(WizardView& v) const;
+  // Time and confirmations of the capture flow (wizard_engine_flow.cpp).
+  void SetTimeView(WizardView& v) const;
+  double SessionLeftS(bool current_started) const;
+  void ConfirmCapture(const Capture& capture);
 
   Procedure procedure_;
   SampleSource& source_;    // borrowed: outlives the engine
@@ -200,6 +204,8 @@ class WizardEngine final : public WizardDriver {
   std::string problem_;
   std::string hint_;
   std::vector<std::string> lines_;
+  std::string detail_;  // the figures behind problem_ (a capture that ended unaccepted)
+  std::string notice_;  // the last accepted capture, confirmed until the next key
   bool resumed_ = false;
   std::vector<std::string> resume_lines_;  // what the journal held at construction
   bool progressed_ = false;                // this run has recorded a step or capture

@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "accelcal/acquire/source/bench_control.h"
+#include "accelcal/app/wizard/capture_messages.h"
 #include "accelcal/app/wizard/leveling.h"
 #include "accelcal/app/wizard/wizard_engine.h"
 
@@ -160,6 +161,7 @@ void WizardEngine::StartCaptureEngine() {
   acq_.StartCapture(MakeRequest(), o, MakeContext(), SteadyNowS());
   problem_.clear();
   hint_.clear();
+  detail_.clear();
   phase_ = Phase::kCapture;
 }
 
@@ -211,8 +213,9 @@ void WizardEngine::OnAcquisition(AcquisitionEvent event) {
     case AcquisitionEvent::kCaptureAccepted: OnCaptureAccepted(); break;
     case AcquisitionEvent::kCaptureRejected: OnCaptureRejected(); break;
     case AcquisitionEvent::kCaptureRetrying:
-      problem_ = acq_.reason();
-      hint_ = "retrying by itself once the sensor is still again";
+      // Said in words on the capture screen (capture_messages.h): not a failure to stop on.
+      problem_.clear();
+      hint_.clear();
       break;
     case AcquisitionEvent::kCapturing:
       problem_.clear();
@@ -229,7 +232,9 @@ void WizardEngine::OnAcquisition(AcquisitionEvent event) {
 }
 
 void WizardEngine::OnCaptureRejected() {
-  problem_ = acq_.reason();
+  const CaptureMessage said = DescribeEnded(acq_.reason(), step().timeout_s);
+  problem_ = said.text;
+  detail_ = said.detail;
   phase_ = Phase::kProblem;
   if (acq_.ended_silent()) {
     hint_ = "check the cable or the sample server; Enter tries again, q leaves";
@@ -267,6 +272,7 @@ void WizardEngine::OnCaptureAccepted() {
   // Recorded before moving on: a crash after this line loses nothing.
   progressed_ = true;
   model_.RecordCapture(model_.NextCaptureStepId(s.id), capture);
+  ConfirmCapture(capture);
   clock_.MarkCapture(capture.stats().t_last_s, model_);
   if (capture.kind == CaptureKind::kStatic) {
     captured_.push_back({capture.id, capture.label, MeasuredUp(capture)});

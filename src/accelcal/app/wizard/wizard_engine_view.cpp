@@ -5,7 +5,9 @@
 #include <algorithm>
 #include <cmath>
 
+#include "accelcal/app/wizard/capture_messages.h"
 #include "accelcal/app/wizard/leveling.h"
+#include "accelcal/app/wizard/time_estimate.h"
 #include "accelcal/app/wizard/wizard_engine.h"
 
 namespace accelcal {
@@ -45,6 +47,8 @@ WizardView WizardEngine::View() const {
   v.status = source_.Describe() + ": " + source_.status().BriefReport();
   SetStepView(v);
   SetPhaseView(v);
+  SetTimeView(v);
+  v.notice = notice_;
   // Leveling: the live tilt (apparent: the bias is not known yet) until the reversal gives it.
   if (current_ >= 0 && current_ < static_cast<int>(procedure_.steps.size()) &&
       step().kind == StepKind::kLevel && phase_ != Phase::kLevelResult && live_counts_.allFinite())
@@ -231,8 +235,14 @@ void WizardEngine::SetDoneView(WizardView& v) const {
   if (quit_) {
     v.prompt = fmt::format("Saved. Everything accepted is in session {}; run the wizard on it again "
                            "to resume.", options_.session_name);
-  } else {
-    v.prompt = calibrates ? "Calibration complete." : "Procedure complete: every step is recorded.";
+    return;
+  }
+  v.prompt = calibrates ? "Calibration complete." : "Procedure complete: every step is recorded.";
+  // The verdict and the headline numbers of this run's report (final_summary.h).
+  if (const FinalSummary* summary = steps_.final_summary()) {
+    v.verdict = std::string(VerdictToString(summary->verdict));
+    v.prompt = fmt::format("Calibration complete: {}.", v.verdict);
+    v.lines = summary->lines;
   }
 }
 
@@ -266,23 +276,30 @@ void WizardEngine::SetCaptureView(WizardView& v) const {
   v.keys = {{"r", "retry"}, {"s", "skip"}, {"b", "back"}, {"q", "save and quit"}};
   if (phase_ == Phase::kProblem) {
     v.prompt = "The capture was not accepted.";
+    v.detail = detail_;
     v.keys.insert(v.keys.begin(), KeyHint{"Enter", "try again"});
     return;
   }
   const CaptureSnapshot snap = acq_.capture_snapshot();
-  v.prompt =
-      fmt::format("{} {} (attempt {}): {}", CaptureStateToString(snap.state), step().pose_name,
-                  std::max(1, snap.attempts),
-                  snap.state == CaptureState::kCapturing
-                      ? fmt::format("{:.0f} %", snap.progress * 100.0)
-                      : (snap.reason.empty() ? "waiting for the sensor to be still" : snap.reason));
+  const bool turntable = step().kind == StepKind::kTurntable;
+  const CaptureMessage said = DescribeCapture(snap, turntable);
+  const bool capturing = snap.state == CaptureState::kCapturing;
+  // Time: the capture's seconds left once it captures, the give-up's countdown (sample time,
+  // as the capture engine counts it), and the session's estimate.
+  v.capture_left_s = capturing ? step().duration_s * (1.0 - snap.progress) : kNaN;
+  v.give_up_in_s = std::max(step().timeout_s - snap.elapsed_s, 0.0);
+  v.session_left_s = (capturing ? v.capture_left_s : step().duration_s) + SessionLeftS(true);
+  v.time_text = CaptureTimeText(step().duration_s, v.capture_left_s, v.give_up_in_s, v.session_left_s);
+  v.prompt = fmt::format("{} {} (attempt {}): {}", CaptureStateToString(snap.state), step().pose_name,
+                         std::max(1, snap.attempts),
+                         capturing ? fmt::format("{:.0f} %, {:.0f} s left; {}", snap.progress * 100.0,
+                                                 std::round(v.capture_left_s), said.text)
+                                   : said.text);
   v.progress = snap.progress;
-  if (step().kind == StepKind::kTurntable) {
-    v.stability_text = snap.turntable.ok ? "turning steadily" : snap.turntable.reason;
-  } else {
-    v.stability = snap.stability.WorstRatio();
-    v.stability_text = snap.stability.stable ? "still" : snap.stability.reason;
-  }
+  v.waiting = said.waiting;
+  v.detail = said.detail;
+  if (!turntable) v.stability = snap.stability.WorstRatio();
+  v.stability_text = capturing ? (turntable ? "turning steadily" : "still") : said.text;
 }
 
 }  // namespace accelcal

@@ -113,6 +113,24 @@ struct WizardView {
   std::optional<InputRequest> input;
   std::vector<std::string> lines; // fit, diagnosis or report text (80 columns)
   std::vector<KeyHint> keys;      // the keys that mean something now
+
+  // The capture flow in the technician's terms (capture_messages.h, time_estimate.h,
+  // final_summary.h). `stability_text` and `problem` say in plain words what the bench needs;
+  // the statistics behind them are here, for a detail line (line mode) or one key away (TUI).
+  std::string detail;             // "spike: z jumped -231 counts (135.1 sigma) at t = 9.64 s"; may be empty
+  bool waiting = false;           // the normal settling after letting go: a wait, not a warning
+  // Time: this capture's seconds left (NaN before it captures), the countdown to its give-up
+  // (NaN: none), the session's estimated time left (NaN: none), and all three in words.
+  double capture_left_s = kNaN;
+  double give_up_in_s = kNaN;
+  double session_left_s = kNaN;
+  std::string time_text;          // "4 s left of this capture; gives up in 52 s; session: about 14 min left (estimate)"
+  // An accepted capture confirmed with its figures, shown on the next screen until a key:
+  // "+z up done: 10.0 s, |a| ~10.12 m/s^2 by the datasheet, noise 1.6 counts". Empty when none.
+  std::string notice;
+  // The final screen: the report's verdict ("PASS", "FAIL", "INCOMPLETE", "NO LIMITS STATED");
+  // `lines` then hold the summary (limits failed, headline numbers, report paths). Empty before.
+  std::string verdict;
   std::string status;             // the source's brief status ("sim: up, 100.0 Hz, ...")
   bool finished = false;          // nothing more to do; the front end may exit
 };
