@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cctype>
 
+#include "tui/text_util.h"
+
 namespace accelcal::ui {
 
 namespace {
@@ -15,7 +17,7 @@ bool IsPrintable(int key) { return key >= 32 && key < 127; }
 
 // Scrolling works on every screen; returns nothing for other keys.
 std::optional<KeyOutcome> Scroll(const WizardView& view, EditState& state, int key) {
-  const int last = std::max(static_cast<int>(view.lines.size()) - 1, 0);
+  const int last = std::max(static_cast<int>(WrapLines(view.lines, state.width).size()) - 1, 0);
   int to = state.scroll;
   switch (key) {
     case kKeyUp: to -= 1; break;
@@ -60,6 +62,7 @@ KeyOutcome CommandKey(int key) {
     case 's': return Send(IntentKind::kSkip);
     case 'b': return Send(IntentKind::kBack);
     case 'n': return Send(IntentKind::kAnswerNo);
+    case 'd': return Send(IntentKind::kDetails);
     default: return {};
   }
 }
