@@ -31,6 +31,7 @@ Intent ToIntent(const std::string& answer, const WizardView& v) {
   if (answer == "s") return {IntentKind::kSkip, ""};
   if (answer == "b") return {IntentKind::kBack, ""};
   if (answer == "n" && !v.input) return {IntentKind::kAnswerNo, ""};
+  if (answer == "d" && !v.input) return {IntentKind::kDetails, ""};
   if (v.input) return {IntentKind::kSubmitText, answer};
   return {IntentKind::kAccept, ""};
 }

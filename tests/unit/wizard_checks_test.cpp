@@ -180,7 +180,7 @@ TEST(WizardChecks, AWrongTurntableMountingIsRefusedNamingTheRadialAxis) {
     return false;
   });
   ASSERT_EQ(rig.journal->Captures().size(), 1u);
-  EXPECT_NE(hint.find("mount the sensor +x radial, +z up as asked"), std::string::npos) << hint;
+  EXPECT_NE(hint.find("stop the table, mount the sensor +x radial, +z up as asked"), std::string::npos) << hint;
   // What was finally accepted has the centripetal load on x, as asked.
   const Eigen::Vector3d f = sim::DefaultScenario().sensor.model.Calibrate(
       rig.journal->Captures()[0].capture.stats().mean_counts);

@@ -167,12 +167,18 @@ TEST(WizardEngineTest, SkipRecordsTheStepAndBackReturnsToIt) {
   EXPECT_EQ(rig.journal->Captures()[0].step_id, "pose_pz");
 }
 
-TEST(WizardEngineTest, BackDoesNotReplaceAnAcceptedCapture) {
+// Issue 15: b on an accepted capture offers to take it again (wizard_redo_test.cpp); it replaces
+// nothing unless asked (before, b said "nothing to go back to").
+TEST(WizardEngineTest, BackOffersAnAcceptedCaptureAgainAndReplacesNothingUnlessAsked) {
   Rig rig(SeedProcedure());
   AcceptUntil(rig.engine, TitleIs("-z up"));
   rig.engine.Handle({IntentKind::kBack, ""});
+  EXPECT_EQ(rig.engine.View().step_title, "+z up");
+  EXPECT_NE(rig.engine.View().prompt.find("Take '+z up' again?"), std::string::npos);
+  rig.engine.Handle({IntentKind::kAnswerNo, ""});
   EXPECT_EQ(rig.engine.View().step_title, "-z up");
-  EXPECT_NE(rig.engine.View().problem.find("nothing to go back to"), std::string::npos);
+  ASSERT_EQ(rig.journal->Captures().size(), 1u);
+  EXPECT_FALSE(rig.journal->Captures()[0].superseded());
 }
 
 TEST(WizardEngineTest, RetryRestartsARunningCapture) {
@@ -352,7 +358,9 @@ TEST(WizardEngineTest, DiagnosisAdoptsTheEffectOnEnter) {
   Rig rig(SeedProcedure(), Fast(), QuadraticScenario());
   AcceptUntil(rig.engine, [](const WizardView& v) { return v.screen == WizardScreen::kDiagnosis; });
   const WizardView v = rig.engine.View();
-  ASSERT_NE(v.prompt.find("Adopt"), std::string::npos) << v.prompt;
+  // Issue 15: in plain words, the recommended choice on Enter (was "Adopt ...? Enter adopts").
+  ASSERT_NE(v.prompt.find("add it to the calibration (recommended), or keep the basic model?"), std::string::npos)
+      << v.prompt;
   rig.engine.Handle({IntentKind::kAccept, ""});
   EXPECT_EQ(rig.journal->DoneSteps().at("diagnosis").rfind("adopted", 0), 0u);
   AcceptUntil(rig.engine, Never);

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cctype>
 
+#include "tui/text_util.h"
+
 namespace accelcal::ui {
 
 namespace {
@@ -15,7 +17,7 @@ bool IsPrintable(int key) { return key >= 32 && key < 127; }
 
 // Scrolling works on every screen; returns nothing for other keys.
 std::optional<KeyOutcome> Scroll(const WizardView& view, EditState& state, int key) {
-  const int last = std::max(static_cast<int>(view.lines.size()) - 1, 0);
+  const int last = std::max(static_cast<int>(WrapLines(view.lines, state.width).size()) - 1, 0);
   int to = state.scroll;
   switch (key) {
     case kKeyUp: to -= 1; break;
@@ -75,6 +77,7 @@ KeyOutcome CommandKey(int key) {
     case 's': return Send(IntentKind::kSkip);
     case 'b': return Send(IntentKind::kBack);
     case 'n': return Send(IntentKind::kAnswerNo);
+    case 'd': return Send(IntentKind::kDetails);
     default: return {};
   }
 }
@@ -94,7 +97,10 @@ KeyOutcome HandleKey(const WizardView& view, EditState& state, int key) {
   // The figures behind a message (std, limits, sigmas): one key away, never on the main line.
   // A toggle that holds from screen to screen, so a key pressed as the screen changes still
   // counts (the keys line offers it only where there are figures).
-  if (!view.input && (key == 'd' || key == 'D')) {
+  // Where the engine offers d itself (the statistics behind the diagnosis), it goes to the engine.
+  const bool engine_d = std::any_of(view.keys.begin(), view.keys.end(),
+                                    [](const KeyHint& hint) { return hint.key == "d"; });
+  if (!view.input && !engine_d && (key == 'd' || key == 'D')) {
     state.details = !state.details;
     return {KeyResult::kRedraw, std::nullopt};
   }

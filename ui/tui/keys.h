@@ -51,6 +51,7 @@ struct EditState {
   std::string text;
   int scroll = 0;
   int page = 10;        // rows the text lines get, for PgUp/PgDn (set by the loop)
+  int width = 0;        // the screen's width, to count the wrapped text lines (set by the loop)
   std::string context;  // what the state belongs to
   bool help = false;    // the help overlay is shown (any key closes it)
   bool details = false; // `d` shows the figures behind the capture's message

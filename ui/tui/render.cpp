@@ -110,11 +110,13 @@ ScreenModel Render(const WizardView& view, const RenderState& state, int width, 
   }
   Shrink(blocks, middle_rows);
   const int free_rows = middle_rows - Rows(blocks);
-  const bool scrollable = static_cast<int>(view.lines.size()) > free_rows;
+  // Lines wider than the screen are wrapped, never cut at the right edge.
+  const std::vector<std::string> lines = WrapLines(view.lines, width);
+  const bool scrollable = static_cast<int>(lines.size()) > free_rows;
   // The status sits just above the keys; the text lines take the rows in between.
   const std::vector<Line> status = std::move(blocks.back().lines);
   blocks.pop_back();
-  blocks.push_back(Block{0, LinesArea(view.lines, state.scroll, free_rows)});
+  blocks.push_back(Block{0, LinesArea(lines, state.scroll, free_rows)});
 
   int row = 1;
   for (const Block& b : blocks) {
@@ -123,7 +125,7 @@ ScreenModel Render(const WizardView& view, const RenderState& state, int width, 
   row = height - 1 - static_cast<int>(status.size());
   for (const Line& line : status) screen.PutLine(row++, 0, line);
   screen.PutLine(height - 1, 0,
-                 KeysLine(view, scrollable && !view.lines.empty(), !state.edit_text.empty()));
+                 KeysLine(view, scrollable && !lines.empty(), !state.edit_text.empty()));
   return screen;
 }
 

@@ -102,6 +102,7 @@ std::vector<Line> ReadingBlock(const WizardView& view) {
     rows.push_back(Labelled("tilt", fmt::format("x {} deg  y {} deg",
                                                 FormatNumber(view.tilt_deg.x(), 2, 6),
                                                 FormatNumber(view.tilt_deg.y(), 2, 6))));
+    if (!view.tilt_note.empty()) rows.push_back(Labelled("", Asciify(view.tilt_note), Role::kDim));
   }
   rows.push_back(StabilityLine(view));
   if (!view.stability_text.empty()) {

@@ -27,6 +27,7 @@ int RunTuiLoop(WizardDriver& driver, TuiTerminal& terminal) {
     const int width = terminal.Width();
     const int height = terminal.Height();
     edit.page = std::max(height / 2, 1);
+    edit.width = width;
     ScreenModel screen =
         Render(view, RenderState{edit.text, edit.scroll, edit.help, edit.details}, width, height);
     if (NeedsRedraw(drawn, screen)) {

@@ -72,4 +72,9 @@ std::string DescribeRecords(const SessionJournal& journal) {
   return out;
 }
 
+std::vector<JournalCapture> CurrentCaptures(std::vector<JournalCapture> all) {
+  std::erase_if(all, [](const JournalCapture& c) { return c.superseded(); });
+  return all;
+}
+
 }  // namespace accelcal

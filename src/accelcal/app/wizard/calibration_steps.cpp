@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "accelcal/app/analyze_recording.h"
+#include "accelcal/app/wizard/diagnosis_words.h"
 #include "accelcal/analysis/noise_analysis.h"
 #include "accelcal/base/error.h"
 #include "accelcal/io/calibration_file.h"
@@ -92,7 +93,9 @@ void CalibrationSteps::set_noise_floor(const std::optional<NoiseFloor>& lowered)
 const CalibrationOutcome& CalibrationSteps::Run() {
   if (outcome_ && outcome_captures_ == model_.captures().size()) return *outcome_;
   CalibrationRequest request;
-  for (const JournalCapture& c : model_.captures()) request.captures.push_back(c.capture);
+  // A capture taken again (redo) is superseded: out of the fit.
+  for (const JournalCapture& c : model_.captures())
+    if (!c.superseded()) request.captures.push_back(c.capture);
   request.source_name = session_name_;
   request.gravity = gravity_;
   request.screening.adc_range = procedure_.adc_range;
@@ -129,10 +132,15 @@ StepOutcome CalibrationSteps::Fit() {
 StepOutcome CalibrationSteps::Diagnosis() {
   const CalibrationOutcome& o = Run();
   StepOutcome out;
-  out.lines = SplitLines(FormatDiagnosis(o.diagnosis));
+  // Plain words on the screen (diagnosis_words.h); the statistics one key away.
+  out.details = SplitLines(FormatDiagnosis(o.diagnosis));
+  if (o.usable()) out.lines = DiagnosisInPlainWords(o.diagnosis, gravity_.gravity_mps2).lines;
   if (const std::string note = GravityAmbiguityNote(gravity_, o.diagnosis.adopted_names()); !note.empty()) {
     out.lines.push_back("");
-    for (const std::string& line : WrapWords("Gravity: " + note, 78)) out.lines.push_back(line);
+    for (const std::string& line : WrapWords("Gravity: " + WithPlainEffectNames(note, o.diagnosis.adopted_names()), 78))
+      out.lines.push_back(line);
+    out.details.push_back("");
+    for (const std::string& line : WrapWords("Gravity: " + note, 78)) out.details.push_back(line);
   }
   if (!o.usable()) {
     out.problem = "the fit is not usable: " + o.diagnosis.base.message;
@@ -165,7 +173,8 @@ StepOutcome CalibrationSteps::Report(bool adopt_effects, const ReportMeta& meta,
   in.calibration = cal;
   in.meta = meta;
   FillMetaFromInputs(model_.inputs(), &in.meta);  // what was typed wins over the defaults
-  for (const JournalCapture& c : model_.captures()) in.captures.push_back(c.capture);
+  for (const JournalCapture& c : model_.captures())
+    if (!c.superseded()) in.captures.push_back(c.capture);
   in.limits = procedure_.limits;
   in.gaps = gaps;
   const ReportModel verdict = BuildReportModel(in);

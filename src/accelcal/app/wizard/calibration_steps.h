@@ -22,6 +22,9 @@ namespace accelcal {
 // What a step has to say: its text, and what went wrong (empty when nothing) with what to do.
 struct StepOutcome {
   std::vector<std::string> lines;
+  // The statistics behind `lines`, shown on request (the diagnosis's BIC / AICc / LOO tables);
+  // empty when the step has none.
+  std::vector<std::string> details;
   std::string problem;
   std::string hint;
 };

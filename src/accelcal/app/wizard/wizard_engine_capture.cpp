@@ -10,6 +10,7 @@
 #include "accelcal/acquire/source/bench_control.h"
 #include "accelcal/app/wizard/capture_messages.h"
 #include "accelcal/app/wizard/leveling.h"
+#include "accelcal/app/wizard/pose_setting.h"
 #include "accelcal/app/wizard/wizard_engine.h"
 
 namespace accelcal {
@@ -82,7 +83,8 @@ void WizardEngine::OnQuietMeasured() {
 void WizardEngine::RecheckNoiseFloor(const Capture& latest) {
   std::vector<const Capture*> used;
   for (const JournalCapture& c : model_.captures())
-    if (c.capture.kind == CaptureKind::kStatic && model_.LeftOutReason(c).empty()) used.push_back(&c.capture);
+    if (c.capture.kind == CaptureKind::kStatic && model_.LeftOutReason(c).empty() && !c.superseded())
+      used.push_back(&c.capture);
   const NoiseFloorRecheck r = floor_guard_.Recheck(latest, used);
   if (!r.lowered) return;
   model_.RecordInput(kNoiseFloorStep, "lowered_std_counts", TriadText(r.after.std_counts));
@@ -130,6 +132,8 @@ CaptureContext WizardEngine::MakeContext() const {
   c.noise_floor = *floor_guard_.floor();
   // Leveling measures the same pose twice: no duplicate check there.
   if (step().kind != StepKind::kLevel) c.captured = captured_;
+  // A redo takes the same pose again: the capture it replaces is no duplicate.
+  std::erase_if(c.captured, [&](const CapturedPose& p) { return Redoing() && p.capture_id == redo_capture_id_; });
   for (const ProcedureStep& s : procedure_.steps)
     if (s.kind == StepKind::kStatic && (s.up.array().abs() > 1e-6).count() > 1)
       c.known_poses.push_back({s.pose_name, s.up});
@@ -241,12 +245,15 @@ void WizardEngine::OnCaptureRejected() {
     return;
   }
   if (step().kind != StepKind::kTurntable) {
-    hint_ = fmt::format("put the prism with {} and let go; Enter tries again", MakeRequest().expected.name);
+    hint_ = IsTiltedPose(step().up)
+                ? fmt::format("set the prism {} and let go; Enter tries again", PrismSetting(step().up, step().pose_name))
+                : fmt::format("put the prism with {} and let go; Enter tries again", MakeRequest().expected.name);
     return;
   }
   const TurntableVerdict& v = acq_.last_turntable();
   hint_ = !v.mounted_as_asked && !v.mounting_found.empty()
-              ? fmt::format("mount the sensor {} as asked; Enter tries again", step().pose_name)
+              ? fmt::format("stop the table, mount the sensor {} as asked and start the table again; "
+                            "Enter tries again", step().pose_name)
           : !v.level ? "level the turntable; Enter tries again"
                      : "check the mounting, radius and speed; Enter tries again, b re-enters the values";
 }
@@ -271,7 +278,7 @@ void WizardEngine::OnCaptureAccepted() {
   }
   // Recorded before moving on: a crash after this line loses nothing.
   progressed_ = true;
-  model_.RecordCapture(model_.NextCaptureStepId(s.id), capture);
+  RecordAcceptedCapture(capture);
   ConfirmCapture(capture);
   clock_.MarkCapture(capture.stats().t_last_s, model_);
   if (capture.kind == CaptureKind::kStatic) {
@@ -292,6 +299,7 @@ void WizardEngine::OnLevelCapture(const Eigen::Vector3d& mean_counts) {
     return;
   }
   level_tilt_deg_ = ReversalTiltDeg(*level_first_counts_, mean_counts, procedure_.nominal);
+  level_offset_ = ReversalOffset(*level_first_counts_, mean_counts, procedure_.nominal);
   const std::string advice = LevelingAdvice(level_tilt_deg_, step().tolerance_deg);
   level_ok_ = advice.empty();
   problem_ = level_ok_ ? "" : "the table is not level: " + advice;

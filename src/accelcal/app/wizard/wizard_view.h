@@ -100,6 +100,9 @@ struct WizardView {
   Eigen::Vector3d live_counts = Eigen::Vector3d::Constant(kNaN);
   double live_g = kNaN;           // |f| in g, from the nominal model (approximate before the fit)
   Eigen::Vector2d tilt_deg = Eigen::Vector2d::Constant(kNaN);  // leveling: about x and y
+  // Leveling: what the live tilt holds: "includes the sensor's offset until the reversal", then
+  // "sensor's offset (x 1.5, y -0.2 deg) taken out" (at most 48 characters).
+  std::string tilt_note;
   double stability = kNaN;        // 0 = still ... >= 1 = beyond the limit (worst axis)
   std::string stability_text;     // "still", "moving: x std 4.1 counts, limit 2.5"
   double progress = kNaN;         // 0..1 during a capture
@@ -143,6 +146,7 @@ enum class IntentKind {
   kQuit,        // q: save and leave (always allowed)
   kSubmitText,  // an answer to the current InputRequest (text may be empty: the default)
   kAnswerNo,    // n: decline (e.g. do not adopt the proposed effect)
+  kDetails,     // d: show or hide the statistics behind a result (the diagnosis's tables)
 };
 
 struct Intent {
