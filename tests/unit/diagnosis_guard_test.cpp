@@ -78,9 +78,9 @@ class OutsideTheLibrary : public ::testing::TestWithParam<Outside> {};
 
 // The base model is kept, the conclusion says so in the words, and what to capture next
 // is said. A regression test of that path on fixed seeds where it holds, NOT evidence that the
-// guard meets the 5 % target: over 50 seeds of the CLI it does not yet (asym_scale 47/50,
-// bias_jump 24/50 and turntable_bias 40/50 adopt a library effect; tests/physics/README.md,
-// open). turntable_bias is not here: on seed 2 a bias drift explains it within noise (the
+// guard meets the 5 % target: over 50 seeds of the CLI it does not yet (asym_scale 27/50,
+// bias_jump 18/50 and turntable_bias 32/50 adopt a library effect after the disagreement rule;
+// tests/physics/README.md, open). turntable_bias is not here: on seed 2 a bias drift explains it within noise (the
 // turntable runs come last in the plan, so a turntable-only bias reads as a drift in time).
 TEST_P(OutsideTheLibrary, NoEffectIsBlamedAndTheNextCapturesAreNamed) {
   physgen::Effects e;
