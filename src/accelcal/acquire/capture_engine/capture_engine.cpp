@@ -221,8 +221,14 @@ void CaptureEngine::RetryUnstable() {
 // the capture was already given up.
 void CaptureEngine::FollowSpike(const Sample& s) {
   if (state_ != CaptureState::kRetrying || !retry_verdict_.largest_spike) return;
-  if (ContinueSpikeEvent(&*retry_verdict_.largest_spike, s, options_.stability.spike_sigmas))
-    reason_ = retry_verdict_.JudgedReason();
+  SpikeEvent& e = *retry_verdict_.largest_spike;
+  // The settle window judged the reading as the capture would have: no spike there ends the
+  // bump (a sensor set down on another face is a new level, not a bump that goes on).
+  if (!settle_.last_reading_spiked()) {
+    e.open = false;
+    return;
+  }
+  if (ContinueSpikeEvent(&e, s, options_.stability.spike_sigmas)) reason_ = retry_verdict_.JudgedReason();
 }
 
 void CaptureEngine::BeginCapture() {

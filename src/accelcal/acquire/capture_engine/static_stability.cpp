@@ -99,6 +99,7 @@ StaticStabilityMonitor::StaticStabilityMonitor(const StaticStabilityOptions& opt
       window_s_(window_s) {}
 
 void StaticStabilityMonitor::Reset() {
+  last_reading_spiked_ = false;
   sums_ = detail::WindowSums{};
   ring_.clear();
   spikes_.clear();
@@ -123,16 +124,23 @@ void StaticStabilityMonitor::Add(const Sample& s) {
 }
 
 void StaticStabilityMonitor::CheckSpike(const Sample& s) {
-  // A reading of a bump still going on belongs to its event (measured from the level before
-  // the bump, not from a mean the bump's own readings have already pulled).
-  if (!spikes_.empty() && ContinueSpikeEvent(&spikes_.back(), s, options_.spike_sigmas)) return;
+  last_reading_spiked_ = false;
   if (sums_.n() < options_.min_spike_reference_samples) return;
   const Eigen::Vector3d jump = s.raw_counts - sums_.Mean();
   // The mean of n readings is itself uncertain by sigma / sqrt(n).
   const double inflate = std::sqrt(1.0 + 1.0 / static_cast<double>(sums_.n()));
   const Eigen::Vector3d sigmas = jump.cwiseAbs().cwiseQuotient(sigma_counts_ * inflate);
   const int axis = WorstAxis(sigmas);
-  if (!(sigmas[axis] > options_.spike_sigmas)) return;
+  if (!(sigmas[axis] > options_.spike_sigmas)) {
+    if (!spikes_.empty()) spikes_.back().open = false;
+    return;
+  }
+  // Which readings are spikes is decided as it always was (against the mean before each); a
+  // spike right after one of the same bump (still beyond the limit from the level before the
+  // bump) joins its event, which then names the bump's largest excursion from that level. So
+  // the verdicts are those of one event per reading; only the naming changes.
+  last_reading_spiked_ = true;
+  if (!spikes_.empty() && ContinueSpikeEvent(&spikes_.back(), s, options_.spike_sigmas)) return;
   if (spikes_.size() == kMaxSpikeEvents) spikes_.pop_front();
   SpikeEvent e;
   e.axis = axis;

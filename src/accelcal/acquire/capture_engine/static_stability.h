@@ -61,10 +61,11 @@ struct StaticStabilityOptions {
 
 // A spike event: readings that jumped away from the level before them (a bump, a door slammed).
 // It begins at the first reading further than the spike limit from the mean of the window
-// before it; that mean is the event's level, and every following reading on the same axis still
-// beyond the limit from that level belongs to the event (a bump rises over several readings: its
-// first reading is only the rising edge). The event names its largest excursion from the level:
-// its time and size.
+// before it; that mean is the event's level, and every following reading that is a spike too
+// and still beyond the limit from that level on the same axis belongs to the event (a bump rises
+// over several readings: its first reading is only the rising edge). The event names its
+// largest excursion from the level: its time and size. The first reading that is no spike ends
+// it (a sensor moved to another level is not a bump that goes on).
 struct SpikeEvent {
   int axis = 0;              // 0, 1, 2 = x, y, z
   double t_s = kNaN;         // time of the largest excursion, s
@@ -142,6 +143,8 @@ class StaticStabilityMonitor {
   // True when samples cover a whole window_s since the last Reset (always for kGrowing).
   bool full() const;
   Eigen::Vector3d mean_counts() const { return sums_.Mean(); }
+  // The last reading added was a spike (beyond the limit from the mean before it).
+  bool last_reading_spiked() const { return last_reading_spiked_; }
 
  private:
   void CheckSpike(const Sample& s);
@@ -156,6 +159,7 @@ class StaticStabilityMonitor {
   std::deque<Sample> ring_;  // sliding window only: its samples, oldest first
   std::deque<SpikeEvent> spikes_;  // the last one may be open (a bump still going on)
   long removals_since_resync_ = 0;
+  bool last_reading_spiked_ = false;
   double t_reset_s_ = kNaN;  // first sample since Reset
   double t_first_s_ = kNaN;  // growing window: first sample
   double t_last_s_ = kNaN;
