@@ -70,6 +70,9 @@ struct RecordChunk {
   // record measures its gap from it).
   double wall_end_s = 0.0;
   std::optional<RecordGap> gap_before;  // the hole just before this chunk (after a resume)
+  // Only on the last chunk read back: the hole after it when the record's last chunks are
+  // damaged (there is no chunk after them to carry it as gap_before).
+  std::optional<RecordGap> gap_after;
 };
 
 // What a record holds so far, without its samples (cheap: for resuming and listings).
@@ -131,7 +134,8 @@ class SessionJournal {
   // Calls `visit` with each chunk of the record of `step_id`, in order (one chunk in memory at
   // a time: a 12-hour record at 100 Hz is 170 MB of samples). A chunk that fails its check on
   // read is left out: the next chunk carries the hole as its gap_before, whose reason names the
-  // damage (so every reader of a record sees it as a gap, never as data).
+  // damage (so every reader of a record sees it as a gap, never as data); damaged last chunks
+  // are the last good chunk's gap_after.
   virtual void VisitRecordChunks(const std::string& step_id,
                                  const std::function<void(const RecordChunk&)>& visit) const = 0;
   // The steps that have record chunks, in the order their first chunk was recorded.

@@ -266,8 +266,9 @@ void WizardEngine::Poll(double timeout_s) {
     resume_lines_.push_back(clock_.note());
   }
   UpdateLive(chunk);
-  // The capture's timeout on the wall clock too: a silent link sends no sample time.
-  if (phase_ == Phase::kCapture || phase_ == Phase::kQuiet) {
+  // The capture's timeout on the wall clock too: a silent link sends no sample time (a record
+  // has its silence limit).
+  if (phase_ == Phase::kCapture || phase_ == Phase::kQuiet || phase_ == Phase::kRecord) {
     const AcquisitionEvent watched = acq_.Watch(SteadyNowS());
     if (watched != AcquisitionEvent::kNone) return OnAcquisition(watched);
   }

@@ -138,6 +138,7 @@ class WizardEngine final : public WizardDriver {
   CaptureContext MakeContext() const;
   void StartRecord();
   void FinishRecord();
+  static double RecordSilenceTimeoutS(const ProcedureStep& s);
   void OnAcquisition(AcquisitionEvent event);
   bool RecordResumable() const;
   void OnCaptureAccepted();

@@ -187,6 +187,13 @@ bool WizardEngine::RecordResumable() const {
   return model_.RecordSummaryOf(step().id).num_chunks > 0;
 }
 
+// How long a record waits on a silent link (connected, sending nothing readable) before it
+// stops: the slack its procedure gives beyond the record's own length (timeout_s - duration_s:
+// the procedure's capture_timeout_s, 60 s, unless the step sets timeout_s), at least 1 s.
+double WizardEngine::RecordSilenceTimeoutS(const ProcedureStep& s) {
+  return std::max(1.0, s.timeout_s - s.duration_s);
+}
+
 void WizardEngine::StartRecord() {
   const ProcedureStep& s = step();
   RecordStepWriterOptions o;
@@ -196,7 +203,8 @@ void WizardEngine::StartRecord() {
   o.wall_now_s = options_.wall_now_s;
   // A fresh placement lets the hand go first; a resumed record goes on at once.
   const bool settle = !RecordResumable();
-  acq_.StartRecord(std::make_unique<RecordStepWriter>(model_, s.id, o), settle);
+  acq_.StartRecord(std::make_unique<RecordStepWriter>(model_, s.id, o), settle, SteadyNowS(),
+                   RecordSilenceTimeoutS(s));
   problem_.clear();
   hint_.clear();
   phase_ = Phase::kRecord;
@@ -230,6 +238,13 @@ void WizardEngine::OnAcquisition(AcquisitionEvent event) {
       problem_ = acq_.reason();
       hint_ = "check the cable or the sample server; Enter measures again, q leaves";
       phase_ = Phase::kQuietReady;
+      break;
+    case AcquisitionEvent::kRecordSilent:
+      // Stopped, the chunk being filled committed: Enter resumes it (with the gap stated).
+      problem_ = acq_.reason();
+      hint_ = "check the cable or the sample server; Enter goes on with the record, q leaves "
+              "(what was recorded is in the session)";
+      phase_ = Phase::kProblem;
       break;
     case AcquisitionEvent::kNone: break;
   }
