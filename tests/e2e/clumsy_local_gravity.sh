@@ -25,7 +25,7 @@ flat "$work/report" "Gravity used: 9.80665 +- 0.02309 m/s^2 (standard gravity, n
 
 # Declined: the base model keeps the same error in its scales: still not PASS. (Welcome 4,
 # noise floor 1, leveling 3, 9 poses, 9 runs x 3, fit 1: the 46th answer is the diagnosis's.)
-wizard clumsy_local_gravity.toml "$work/n.db" "$(printf '\\n%.0s' $(seq 45))n\\n"
+wizard clumsy_local_gravity.toml "$work/n.db" "$(printf '\\n%.0s' $(seq 46))n\\n"
 said "Adopt rpm_scale into the calibration?"
 said "Model: the nine-parameter base model"
 said "Verdict: INCOMPLETE"

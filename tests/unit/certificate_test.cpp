@@ -9,6 +9,8 @@
 #include "accelcal/acquire/sim/scenario.h"
 #include "accelcal/acquire/sim/virtual_bench.h"
 #include "accelcal/app/calibration_pipeline.h"
+#include "accelcal/app/report_inputs.h"
+#include "accelcal/app/wizard/equipment_input.h"
 #include "accelcal/base/error.h"
 #include "accelcal/calibration/diagnosis/diagnosis.h"
 #include "accelcal/io/calibration_file.h"
@@ -18,6 +20,7 @@
 #include "accelcal/report/report_text.h"
 #include "accelcal/report/svg_plot.h"
 #include "accelcal/report/uncertainty_text.h"
+#include "accelcal/session/session_journal.h"
 
 namespace accelcal {
 namespace {
@@ -171,6 +174,27 @@ TEST(Certificate, TextAndHtmlStateWhatALabSigns) {
   const ReportModel mr = BuildReportModel(real);
   EXPECT_FALSE(Contains(RenderReportText(mr), "SIMULATED"));
   EXPECT_FALSE(Contains(RenderReportHtml(mr), "SIMULATED"));
+}
+
+TEST(Certificate, TheWelcomesEquipmentAnswerIsReadBackFromTheSession) {
+  // `accelcal report SESSION` reads the welcome's answer from the journal (whose Inputs() is a
+  // copy: reading it through a dangling iterator crashed the report command once).
+  const std::unique_ptr<SessionJournal> journal = MakeMemoryJournal();
+  journal->RecordInput("welcome", "device", "SN1");
+  journal->RecordInput("welcome", "equipment", "ruler id RUL-77 u 0.4");
+  journal->RecordResult(CalibrationToJsonText(BenchInputs(Bench()).calibration));
+  ReportInputs in = ReportInputsFromJournal(*journal, "mem");
+  EXPECT_EQ(in.equipment_answer, "ruler id RUL-77 u 0.4");
+  const EquipmentAnswer edited = ApplyEquipmentAnswer(in.equipment_answer, Bench());
+  ASSERT_TRUE(edited.ok()) << edited.error;
+  const EquipmentItem* ruler = FindEquipment(edited.items, EquipmentRole::kRuler);
+  ASSERT_NE(ruler, nullptr);
+  EXPECT_EQ(ruler->identification, "RUL-77");
+  EXPECT_DOUBLE_EQ(ruler->standard_uncertainty, 0.0004);
+  EXPECT_EQ(ApplyEquipmentAnswer("keep", Bench()).items.size(), 4u);
+  EXPECT_FALSE(ApplyEquipmentAnswer("hammer id 3", Bench()).ok());
+  EXPECT_FALSE(ApplyEquipmentAnswer("ruler u -1", Bench()).ok());
+  EXPECT_FALSE(ApplyEquipmentAnswer("ruler", Bench()).ok());
 }
 
 TEST(Certificate, WithoutEquipmentTheBudgetNamesWhatIsNotStated) {
