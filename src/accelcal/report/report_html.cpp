@@ -224,7 +224,7 @@ std::string MagnitudePlot(const ReportModel& m) {
     ideal.y = {lo, hi};
   }
   // Nine poses at g, three runs per radius: without this they draw as four dots.
-  const double width = std::max(hi - lo, 1.0) * 0.012;
+  const double width = std::max(hi - lo, 1.0) * 0.025;
   for (SvgSeries* s : {&stat, &turn}) SpreadCoincident(&s->x, width);
   plot.Add(ideal);
   if (!stat.x.empty()) plot.Add(stat);
@@ -232,7 +232,7 @@ std::string MagnitudePlot(const ReportModel& m) {
   return "<figure>" + plot.Render() +
          "<figcaption>Each used capture&rsquo;s calibrated magnitude against the specific force it should "
          "show (g at rest; &radic;(g&sup2; + (&omega;&sup2;r)&sup2;) on the turntable). Captures with the same "
-         "reference are spread sideways (by about 1 % of the axis each) so every one shows.</figcaption></figure>\n";
+         "reference are spread sideways (by about 2.5 % of the axis each) so every one shows.</figcaption></figure>\n";
 }
 
 std::string Residuals(const ReportModel& m) {
