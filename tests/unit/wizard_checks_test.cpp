@@ -27,6 +27,8 @@ bool AskedFor(const WizardView& v, const std::string& key) { return v.input && v
 void AnswerWelcome(WizardEngine& e, const std::string& gravity = "") {
   for (int i = 0; i < 3; ++i) e.Handle({IntentKind::kAccept, ""});
   e.Handle({IntentKind::kSubmitText, gravity});
+  // A procedure with [equipment] asks for it last: Enter keeps the procedure's.
+  if (AskedFor(e.View(), "equipment")) e.Handle({IntentKind::kAccept, ""});
 }
 
 TEST(WizardChecks, TheProcedureCanRefuseTheStandardGravity) {

@@ -133,6 +133,16 @@ TEST(WizardEngineTest, WelcomeTakesTypedAnswersAndGoesBack) {
   EXPECT_EQ(rig.journal->Inputs().at("welcome").at("device"), "SN43");
   EXPECT_EQ(rig.journal->Inputs().at("welcome").at("operator"), "ada");
   EXPECT_EQ(rig.journal->Inputs().at("welcome").at("place"), "Lab 2, bench B <east>");
+  // The seed procedure lists its equipment: the welcome's last question edits it (this
+  // question is new with the uncertainty budget, issue 16).
+  ASSERT_TRUE(rig.engine.View().input.has_value());
+  EXPECT_EQ(rig.engine.View().input->key, "equipment");
+  EXPECT_NE(rig.engine.View().input->label.find("RUL-01"), std::string::npos) << rig.engine.View().input->label;
+  rig.engine.Handle({IntentKind::kSubmitText, "ruler u half"});
+  EXPECT_NE(rig.engine.View().input->error.find("u must be a number"), std::string::npos)
+      << rig.engine.View().input->error;
+  rig.engine.Handle({IntentKind::kSubmitText, "ruler id RUL-77 u 0.4; level u 0.1"});
+  EXPECT_EQ(rig.journal->Inputs().at("welcome").at("equipment"), "ruler id RUL-77 u 0.4; level u 0.1");
   EXPECT_EQ(rig.engine.View().step_title, "Level the table");
 }
 

@@ -76,7 +76,12 @@ CalibrationSteps::CalibrationSteps(const Procedure& procedure, SessionModel& mod
                                    GravitySpec gravity, std::string session_name,
                                    WizardOutputs* outputs)
     : procedure_(procedure), model_(model), gravity_(gravity),
-      session_name_(std::move(session_name)), outputs_(outputs) {}
+      session_name_(std::move(session_name)), outputs_(outputs), equipment_(procedure.equipment) {}
+
+void CalibrationSteps::set_equipment(std::vector<EquipmentItem> equipment) {
+  outcome_.reset();
+  equipment_ = std::move(equipment);
+}
 
 void CalibrationSteps::set_gravity(const GravitySpec& gravity) {
   if (gravity.gravity_mps2 != gravity_.gravity_mps2 || gravity.source != gravity_.source) outcome_.reset();
@@ -98,6 +103,7 @@ const CalibrationOutcome& CalibrationSteps::Run() {
     if (!c.superseded()) request.captures.push_back(c.capture);
   request.source_name = session_name_;
   request.gravity = gravity_;
+  request.references = ToReferenceUncertainties(equipment_, gravity_.sigma_mps2);
   request.screening.adc_range = procedure_.adc_range;
   if (lowered_floor_) {
     // The captures judged with the floor before it was lowered are judged again: the ones the
@@ -176,6 +182,8 @@ StepOutcome CalibrationSteps::Report(bool adopt_effects, const ReportMeta& meta,
   for (const JournalCapture& c : model_.captures())
     if (!c.superseded()) in.captures.push_back(c.capture);
   in.limits = procedure_.limits;
+  in.equipment = equipment_;
+  in.nominal_bias_counts = procedure_.nominal.bias_counts;
   in.gaps = gaps;
   const ReportModel verdict = BuildReportModel(in);
   out.lines.push_back(fmt::format("Verdict: {}", VerdictToString(verdict.verdict)));

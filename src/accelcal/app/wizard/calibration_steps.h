@@ -58,6 +58,10 @@ class CalibrationSteps {
   // A noise floor lowered during the session: the static captures are judged again against it
   // (those that fail are left out with the reason); nullopt: as they were judged live.
   void set_noise_floor(const std::optional<NoiseFloor>& lowered);
+  // The bench's equipment (the procedure's, as edited at the welcome): the uncertainty
+  // budget's type B inputs, and the report's equipment list.
+  void set_equipment(std::vector<EquipmentItem> equipment);
+  const std::vector<EquipmentItem>& equipment() const { return equipment_; }
 
  private:
   const CalibrationOutcome& Run();
@@ -71,6 +75,7 @@ class CalibrationSteps {
   size_t outcome_captures_ = 0;  // the number of accepted captures outcome_ was computed from
   std::optional<NoiseFloor> lowered_floor_;
   std::optional<FinalSummary> final_summary_;
+  std::vector<EquipmentItem> equipment_;  // the procedure's until set_equipment
 };
 
 }  // namespace accelcal

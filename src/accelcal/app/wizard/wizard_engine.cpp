@@ -68,6 +68,7 @@ void WizardEngine::ReadJournal() {
       captured_.push_back({c.capture.id, c.capture.label, MeasuredUp(c.capture)});
   }
   ReadGravity();
+  ReadEquipment();
   RestoreNoiseFloor();
   // A diagnosis decided in an earlier run: adopted effects go into the report.
   for (const ProcedureStep& s : procedure_.steps)
@@ -85,7 +86,7 @@ void WizardEngine::ReadJournal() {
     AdvanceFrom(0);
   } else {
     // The welcome was cut short: its answers so far are kept; ask the rest.
-    while (welcome_field_ + 1 < kWelcomeFields && model_.inputs().count(kWelcomeStepId) != 0 &&
+    while (welcome_field_ + 1 < WelcomeFields() && model_.inputs().count(kWelcomeStepId) != 0 &&
            model_.inputs().at(kWelcomeStepId).count(Welcome(welcome_field_).key) != 0)
       ++welcome_field_;
   }

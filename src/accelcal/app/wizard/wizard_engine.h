@@ -171,11 +171,14 @@ class WizardEngine final : public WizardDriver {
   // The welcome's questions in order: {input key, label, default}.
   struct WelcomeField {
     const char* key;
-    const char* label;
+    std::string label;
     std::string default_value;
   };
-  static constexpr int kWelcomeFields = 4;  // device, operator, place, gravity
+  // device, operator, place, gravity, and the equipment when the procedure lists some.
+  int WelcomeFields() const { return procedure_.equipment.empty() ? 4 : 5; }
   WelcomeField Welcome(int field) const;
+  // The welcome's equipment answer (recorded), applied to the calibration steps.
+  void ReadEquipment();
   // The rough model's "up" of a capture (unit, platform frame).
   Eigen::Vector3d MeasuredUp(const Capture& c) const;
   void OnCaptureRejected();

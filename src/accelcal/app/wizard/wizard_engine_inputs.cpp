@@ -2,6 +2,7 @@
 // a turntable run's radius and speed.
 #include <fmt/core.h>
 
+#include "accelcal/app/wizard/equipment_input.h"
 #include "accelcal/app/wizard/gravity_input.h"
 #include "accelcal/app/wizard/quantity_input.h"
 #include "accelcal/app/wizard/session_gaps.h"
@@ -14,6 +15,12 @@ WizardEngine::WelcomeField WizardEngine::Welcome(int field) const {
     case 0: return {"device", "Device serial number", options_.default_device};
     case 1: return {"operator", "Operator", options_.default_operator};
     case 2: return {"place", "Place (lab, bench)", options_.default_place};
+    case 4:
+      return {"equipment",
+              "Equipment: " + DescribeEquipment(procedure_.equipment) +
+                  ". Enter keeps it; or change items: ruler id RUL-07 u 0.4; turntable u 0.3 "
+                  "(u in mm, %, deg)",
+              "keep"};
     default:
       return {"gravity",
               "Local gravity: measured m/s^2 (9.78030 +- 0.00002), place (lat -34.9 alt 43), or "
@@ -33,6 +40,17 @@ void WizardEngine::ReadGravity() {
   if (g.ok()) gravity_ = g.gravity;
 }
 
+// The equipment the session recorded at its welcome (the procedure's, edited); the procedure's
+// when it has none.
+void WizardEngine::ReadEquipment() {
+  const auto welcome = model_.inputs().find(kWelcomeStepId);
+  if (welcome == model_.inputs().end()) return;
+  const auto answer = welcome->second.find("equipment");
+  if (answer == welcome->second.end()) return;
+  const EquipmentAnswer edited = ApplyEquipmentAnswer(answer->second, procedure_.equipment);
+  if (edited.ok()) steps_.set_equipment(edited.items);
+}
+
 // Empty when `value` answers `key`; else why not.
 std::string WizardEngine::CheckWelcomeAnswer(const std::string& key, const std::string& value) {
   const ProcedureRequirements& need = procedure_.requirements;
@@ -40,6 +58,7 @@ std::string WizardEngine::CheckWelcomeAnswer(const std::string& key, const std::
     return "this procedure needs the device's serial number (on its label): type it";
   if (key == "operator" && value.empty() && need.operator_name)
     return "this procedure needs the operator's name: type it";
+  if (key == "equipment") return ApplyEquipmentAnswer(value, procedure_.equipment).error;
   if (key != "gravity") return "";
   const GravityAnswer g = ParseGravityAnswer(value);
   if (!g.ok()) return g.error;
@@ -68,7 +87,8 @@ void WizardEngine::HandleWelcome(const Intent& intent) {
   // The gravity as it reads back (a resume parses it again).
   if (std::string(field.key) == "gravity") value = GravityAnswerText(gravity_);
   model_.RecordInput(kWelcomeStepId, field.key, value);
-  if (welcome_field_ + 1 < kWelcomeFields) {
+  if (std::string(field.key) == "equipment") ReadEquipment();
+  if (welcome_field_ + 1 < WelcomeFields()) {
     ++welcome_field_;
     return;
   }
