@@ -10,8 +10,9 @@ packages=(
   libeigen3-dev libnlopt-cxx-dev libncurses-dev libsqlite3-dev libtomlplusplus-dev
   nlohmann-json3-dev libcli11-dev libfmt-dev libgtest-dev libbenchmark-dev
 )
-# Only the tests need these: headless Chromium renders the HTML report (tests/e2e/report_html.sh).
-test_packages=(chromium)
+# Only the tests need these: headless Chromium renders the HTML report and prints it to PDF,
+# poppler-utils reads the PDF's pages back (tests/e2e/report_html.sh).
+test_packages=(chromium poppler-utils)
 [ "${1:-}" = "--no-test" ] || packages+=("${test_packages[@]}")
 
 missing=()

@@ -12,6 +12,7 @@
 
 #include "accelcal/base/duration_text.h"
 #include "frontend.h"
+#include "line_mode_help.h"
 
 namespace accelcal::ui {
 namespace {
@@ -30,6 +31,7 @@ Intent ToIntent(const std::string& answer, const WizardView& v) {
   if (answer == "s") return {IntentKind::kSkip, ""};
   if (answer == "b") return {IntentKind::kBack, ""};
   if (answer == "n" && !v.input) return {IntentKind::kAnswerNo, ""};
+  if (answer == "d" && !v.input) return {IntentKind::kDetails, ""};
   if (v.input) return {IntentKind::kSubmitText, answer};
   return {IntentKind::kAccept, ""};
 }
@@ -60,9 +62,14 @@ class Printer {
       lines_ = v.lines;
       for (const std::string& line : v.lines) out_ << "  " << line << '\n';
     }
+    if (v.notice != notice_) {
+      notice_ = v.notice;
+      if (!v.notice.empty()) out_ << "  " << v.notice << '\n';
+    }
     if (v.problem != problem_) {
       problem_ = v.problem;
       if (!v.problem.empty()) out_ << "  problem: " << v.problem << '\n';
+      if (!v.problem.empty() && !v.detail.empty()) out_ << "    detail: " << v.detail << '\n';
       if (!v.hint.empty()) out_ << "  hint: " << v.hint << '\n';
     }
     Busy(v) ? ShowBusy(v) : ShowQuestion(v);
@@ -73,13 +80,18 @@ class Printer {
   void ShowBusy(const WizardView& v) {
     if (v.record) return ShowRecord(v, *v.record);
     // The state word and attempt (the prompt up to ':') change rarely; progress by quarters.
-    const std::string head = v.prompt.substr(0, v.prompt.find(':'));
+    // The message in words (stability_text) is part of the head: settling that turns into
+    // "the bench is shaking" is said when it changes.
+    const std::string head = v.prompt.substr(0, v.prompt.find(':')) + "|" + v.stability_text;
     const int quarter = std::isfinite(v.progress) ? static_cast<int>(v.progress * 4.0) : -1;
     const bool capturing = head.rfind("capturing", 0) == 0;
     if (head == prompt_ && (!capturing || quarter <= progress_quarter_)) return;
     prompt_ = head;
     progress_quarter_ = quarter;
     out_ << "  " << v.prompt << '\n';
+    // The figures behind the words, and the time, under it.
+    if (!v.detail.empty()) out_ << "    detail: " << v.detail << '\n';
+    if (!v.time_text.empty()) out_ << "    time: " << v.time_text << '\n';
   }
 
   // A record: its prompt once (resuming or starting), then one line per minute of record time
@@ -106,6 +118,7 @@ class Printer {
       prompt_ = v.prompt;
       error_ = error;
       if (!v.prompt.empty()) out_ << v.prompt << '\n';
+      if (!v.time_text.empty()) out_ << "  time: " << v.time_text << '\n';
       if (!error.empty()) out_ << "  refused: " << error << '\n';
     }
     if (v.input) {
@@ -121,6 +134,7 @@ class Printer {
   std::string prompt_;
   std::string error_;
   std::string problem_;
+  std::string notice_;
   std::vector<std::string> lines_;
   int progress_quarter_ = -1;
   long record_minute_ = -1;
@@ -177,6 +191,10 @@ int RunLineMode(WizardDriver& driver, std::istream& in, std::ostream& out, int i
       continue;
     }
     out << '\n';
+    if (IsHelpRequest(TrimLine(answer))) {
+      PrintLineModeHelp(v, out);  // the question is asked again
+      continue;
+    }
     driver.Handle(ToIntent(TrimLine(answer), v));
     driver.Poll(0.0);
   }

@@ -1,6 +1,8 @@
 // accelcal: calibrate a three-axis accelerometer (see README.md).
 #include <cstdio>
 #include <exception>
+#include <string>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 #include <fmt/core.h>
@@ -9,6 +11,7 @@
 #include "accelcal/base/error.h"
 #include "accelcal/base/safe_text.h"
 #include "cli/commands.h"
+#include "cli/usage_errors.h"
 #include "cli/wizard.h"
 
 int main(int argc, char** argv) {
@@ -42,15 +45,14 @@ int main(int argc, char** argv) {
     // No subcommand: the wizard on the virtual bench with its defaults, in a new session.
     if (app.get_subcommands().empty()) return accelcal::cli::RunWizard({});
   } catch (const CLI::ParseError& e) {
-    // CLI11 prints help/version itself (exit 0) and usage errors (we map them to 2).
-    const int code = app.exit(e);
-    return code == 0 ? 0 : 2;
+    // Help and version (exit 0); a command line that is wrong (exit 2, with "did you mean").
+    return accelcal::cli::ReportParseError(app, e, std::vector<std::string>(argv + 1, argv + argc));
   } catch (const std::exception& e) {
     std::fflush(stdout);
     // A message may quote a file's field or a typed answer: no control character reaches the
     // terminal as it is.
     fmt::print(stderr, "accelcal: error: {}\n", accelcal::DisplayLines(e.what()));
-    return 1;
+    return accelcal::cli::kExitFailure;
   }
   return 0;
 }

@@ -14,7 +14,7 @@ short_procedure
 # Every default: the gravity question's default is "standard", said on screen.
 wizard clumsy_local_gravity.toml "$work/std.db" ''
 said "Local gravity: measured m/s^2 (9.78030 +- 0.00002), place (lat -34.9 alt 43), or standard [standard]>"
-said "rpm_scale found while gravity is the standard value, not this place's"
+said "a wrong table speed found while gravity is the standard value, not this place's"
 said "Check both: the local gravity"
 said "Verdict: INCOMPLETE"
 said "INCOMPLETE: gravity not established"
@@ -23,10 +23,12 @@ grep -q "Result: *INCOMPLETE" "$work/report" || fail "the session's report does 
 flat "$work/report" "Gravity used: 9.80665 +- 0.02309 m/s^2 (standard gravity, not the local value)" ||
   fail "the report does not say what gravity was used"
 
-# Declined: the base model keeps the same error in its scales: still not PASS. (Welcome 4,
-# noise floor 1, leveling 3, 9 poses, 9 runs x 3, fit 1: the 46th answer is the diagnosis's.)
-wizard clumsy_local_gravity.toml "$work/n.db" "$(printf '\\n%.0s' $(seq 45))n\\n"
-said "Adopt rpm_scale into the calibration?"
+# Declined: the base model keeps the same error in its scales: still not PASS. (Welcome 5,
+# noise floor 1, leveling 3, 9 poses, 9 runs x 3, fit 1: the 47th answer is the diagnosis's.)
+wizard clumsy_local_gravity.toml "$work/n.db" "$(printf '\\n%.0s' $(seq 46))n\\n"
+said "the turntable seems to turn"
+said "than entered (+-"
+said "correct it and refit (recommended), or keep the basic model?"
 said "Model: the nine-parameter base model"
 said "Verdict: INCOMPLETE"
 "$accelcal" report "$work/n.db" > "$work/report"

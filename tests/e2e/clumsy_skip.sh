@@ -12,7 +12,7 @@ source_dir=$2
 short_procedure
 # Welcome (4), noise floor (1), leveling (3), +z, -z, +x (3): then at -x up, s, Enter (keep it),
 # s, s (skip it).
-wizard bench_default.toml "$work/s.db" '\n\n\n\n\n\n\n\n\n\n\ns\n\ns\ns\n'
+wizard bench_default.toml "$work/s.db" '\n\n\n\n\n\n\n\n\n\n\n\ns\n\ns\ns\n'
 said "Skip '-x up'? The procedure requires it: without it the report's verdict is INCOMPLETE."
 [ "$(grep -c "Skip '-x up'?" "$work/out")" -eq 2 ] || fail "s did not ask twice"
 said "Verdict: INCOMPLETE"

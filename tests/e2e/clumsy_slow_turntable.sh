@@ -16,6 +16,6 @@ calibration "$work/g.db"
 within_truth 4
 jq -e '[.effects[] | select(.name == "rpm_scale") | .parameters.rpm_scale] | length == 1 and (.[0] + 0.01 | fabs) < 0.002'   "$work/cal.json" > /dev/null || fail "the speed scale was not found: $(jq -c .effects "$work/cal.json")"
 wizard clumsy_slow_turntable.toml "$work/std.db" ''
-said "Gravity: rpm_scale found while gravity is the standard value"
+said "Gravity: a wrong table speed found while gravity is the standard value"
 said "Verdict: INCOMPLETE"
 echo "clumsy_slow_turntable: ok"

@@ -12,7 +12,7 @@ short_procedure
 wizard clumsy_wrong_axis.toml "$work/s.db" ''
 said "problem: wrong mounting: the samples show +y radial, +z up (the centripetal "
 said "is on y), not +x radial, +z up: mount the sensor with +x pointing away from the spin axis and +z up"
-said "hint: mount the sensor +x radial, +z up as asked; Enter tries again"
+said "hint: stop the table, mount the sensor +x radial, +z up as asked and start the table again; Enter tries again"
 said "Verdict: PASS"
 calibration "$work/s.db"
 within_truth 4

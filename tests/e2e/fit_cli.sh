@@ -50,8 +50,11 @@ grep -q "no calibration: 4 usable captures; a calibration needs at least 6" "$wo
 expect 2 "$accelcal" fit
 expect 2 "$accelcal" fit "$work/c.csv" --gravity 9.8 --latitude 10
 expect 2 "$accelcal" fit "$work/c.csv" --recording "$work/c.csv"
-expect 2 "$accelcal" fit "$work/missing.csv"
 expect 2 "$accelcal" nonsense
+# A missing input file is bad input, as for every command (issue 15: it was 2, without the
+# "accelcal: error:" prefix, while `report missing.db` was 1 with it).
+expect 1 "$accelcal" fit "$work/missing.csv"
+grep -q "^accelcal: error: no such file: $work/missing.csv$" "$work/err" || { cat "$work/err"; fail "missing file message"; }
 # A value that is surely a unit mistake: the job fails, saying why.
 expect 1 "$accelcal" fit "$work/c.csv" --gravity 980.665
 grep -q "gravity: 980.665 looks like Gal (cm/s^2): in m/s^2 that is 9.80665" "$work/err" || fail "gravity unit message"

@@ -43,6 +43,13 @@ grep -Eq '^ +18 .* turntable ' "$work/out" || fail "text capture table"
 grep -Eq "^  Overall: (PASS|FAIL)$" "$work/out" || { cat "$work/out"; fail "text verdict"; }
 [ "$(awk 'length > 80' "$work/out" | wc -l)" -eq 0 ] || fail "text wider than 80 columns"
 
+# ---- the certificate: its number stable across re-renders, the budget in the calibration ----
+number=$(grep -o "ACC-s-[0-9A-F]\{8\}" "$work/s.report.txt" | head -1)
+[ -n "$number" ] || fail "no certificate number in the wizard's report"
+grep -q "Certificate No.: *$number" "$work/out" || fail "accelcal report gives another certificate number"
+grep -q "^B. Uncertainty budget (GUM)$" "$work/out" || fail "no uncertainty budget in the text report"
+grep -q "RUL-01" "$work/out" || fail "the equipment is not listed"
+
 # ---- json: the report model, parsed ----
 expect 0 "$accelcal" report "$work/s.db" --format json -o "$work/r.json" \
   --allan "$fixtures/allan.json" --noise "$fixtures/noise.json"
@@ -62,6 +69,8 @@ PY
 # ---- calibration: the file apply reads; then a report from it alone ----
 expect 0 "$accelcal" report "$work/s.db" --format calibration -o "$work/cal.json"
 grep -q '"format": "accelcal-calibration/1"' "$work/cal.json" || fail "calibration format"
+jq -e '.uncertainty_budget.parameters | length == 9 and all(.[]; .expanded > 0 and (.contributions | length) == 6)' \
+  "$work/cal.json" >/dev/null || fail "the calibration carries no uncertainty budget"
 printf '0 2051 2040 2400\n' | "$accelcal" apply "$work/cal.json" >/dev/null || fail "apply"
 expect 0 "$accelcal" report "$work/cal.json"
 grep -Eq "^  Device \(serial\): +not recorded$" "$work/out" || fail "a file alone has no device"
@@ -88,6 +97,15 @@ chrome --screenshot="$work/shot.png" --window-size=1200,2000 "file://$work/r.htm
 chrome --print-to-pdf="$work/r.pdf" --no-pdf-header-footer "file://$work/r.html" >/dev/null \
   || { tail "$work/chromium.log" >&2; fail "chromium --print-to-pdf"; }
 [ "${ACCELCAL_KEEP_SCREENSHOT:-}" = "" ] || cp "$work/shot.png" "$ACCELCAL_KEEP_SCREENSHOT"
+
+# The certificate's print: "Page k of N" and its number in the footer of every page.
+command -v pdftotext >/dev/null || fail "pdftotext is not installed: run scripts/setup.sh (poppler-utils)"
+pdftotext -layout "$work/r.pdf" "$work/r.pdf.txt" || fail "pdftotext"
+pages=$(grep -c "Page [0-9]* of [0-9]*" "$work/r.pdf.txt" || true)
+last=$(grep -o "Page [0-9]* of [0-9]*" "$work/r.pdf.txt" | tail -1)
+[ "$pages" -ge 3 ] && [ "$last" = "Page $pages of $pages" ] || fail "page x of y: $pages footers, last '$last'"
+[ "$(grep -c "Certificate No. ACC-s-" "$work/r.pdf.txt")" -ge "$pages" ] || fail "the number is not on every page"
+grep -q "SIMULATED" "$work/r.pdf.txt" || fail "no SIMULATED mark in the print"
 
 python3 - "$work/dom.html" "$work/shot.png" "$work/r.pdf" <<'PY' || fail "chromium checks"
 import re, struct, sys, zlib

@@ -45,9 +45,10 @@ for mode in silent nan; do
   for _ in $(seq 50); do [ -s "$work/port" ] && break; sleep 0.1; done
   port=$(head -1 "$work/port")
   [ -n "$port" ] || fail "$mode: the test server did not start"
-  # Serial, operator, place, gravity, then Enter to measure the noise floor; then end of input.
+  # Serial, operator, place, gravity, equipment, then Enter to measure the noise floor; then
+  # end of input.
   set +e
-  printf 'SN1\nme\n\n\n\n' | timeout 60 "$accelcal" wizard --source "tcp:127.0.0.1:$port" \
+  printf 'SN1\nme\n\n\n\n\n' | timeout 60 "$accelcal" wizard --source "tcp:127.0.0.1:$port" \
     --procedure "$work/short.toml" --session "$work/$mode.db" --plain > "$work/out" 2> "$work/err"
   code=$?
   set -e

@@ -40,6 +40,14 @@ cmp -s "$work/default.csv" "$work/dash.csv" || fail "-o - differs from -o FILE"
 "$accelcal" simulate "$source_dir/scenarios/hand_recording.toml" --recording -o "$work/rec.txt"
 [[ $(grep -vc '^#' "$work/rec.txt") -eq 17200 ]] || fail "recording rows"
 [[ $(grep -v '^#' "$work/rec.txt" | head -n 1 | wc -w) -eq 5 ]] || fail "recording columns"
+# Streamed in chunks (issue 18): standard output gets the very same bytes as the file, the file
+# is renamed into place whole (no PATH.tmp left), and a longer record (17 200 rows is four
+# chunks of 4096 and a rest) still has every row once, in order.
+"$accelcal" simulate "$source_dir/scenarios/hand_recording.toml" --recording -o - > "$work/rec_stdout.txt"
+cmp -s "$work/rec.txt" "$work/rec_stdout.txt" || fail "recording: stdout and file differ"
+[[ ! -e "$work/rec.txt.tmp" ]] || fail "recording: rec.txt.tmp left behind"
+grep -v '^#' "$work/rec.txt" | awk 'NR > 1 && !($1 > prev) { bad = 1 } { prev = $1 } END { exit bad }' ||
+  fail "recording: t not increasing across chunks"
 
 # A recording of a plan with turntable runs is refused (exit 1, one line).
 set +e
@@ -48,6 +56,7 @@ code=$?
 set -e
 [[ $code -eq 1 ]] || fail "--recording with turntable captures exited $code"
 [[ $(wc -l < "$work/err") -eq 1 ]] || fail "stderr: $(cat "$work/err")"
+[[ ! -e "$work/x" && ! -e "$work/x.tmp" ]] || fail "a refused recording left a file behind"
 
 # A scenario that does not exist: exit 1, one line on stderr naming it.
 set +e

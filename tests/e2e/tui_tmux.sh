@@ -120,7 +120,7 @@ clumsy() {
 clumsy axis clumsy_wrong_axis.toml tt_x_050 "wrong mounting: the samples show +y radial, +z up"
 clumsy level clumsy_tilted_table.toml level "the table is not level: raise the left side by about"
 
-# --- 3. NO_COLOR: no colour escapes on screen; q saves and leaves in the middle.
+# --- 3. NO_COLOR: no colour escapes on screen; Ctrl-X saves and leaves in the middle.
 start mono 100 32 NO_COLOR=1
 sleep 2
 tmx send-keys -t mono Enter
@@ -131,7 +131,8 @@ echo "$esc" | head -1 | grep -q 'Step' || fail "mono: no header"
 if printf '%s' "$esc" | grep -q $'\e\\[[0-9;]*[34][0-7]m\|\e\\[[0-9;]*[34]8;'; then
   fail "mono: colour escapes with NO_COLOR=1"
 fi
-tmx send-keys -t mono q
+# At a text field (the welcome's second answer) q is a letter: Ctrl-X saves and quits.
+tmx send-keys -t mono C-x
 check_restored mono
 # The session file exists once the SQLite journal is wired in; the in-memory one writes none.
 if [ -s "$work/mono.db" ]; then echo "mono: session saved"; else echo "NOTE: no session file written"; fi

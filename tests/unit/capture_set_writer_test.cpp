@@ -4,6 +4,7 @@
 #include <fstream>
 #include <sstream>
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include "accelcal/base/error.h"
@@ -146,6 +147,29 @@ TEST(RecordingWriter, OmitsTemperatureWhenNoSampleHasOne) {
             "# t ax ay az\n"
             "0 1 2 3\n"
             "0.5 4 5 6\n");
+}
+
+// Every value as fmt's shortest form prints it (what the writer wrote value by value before
+// issue 18 made it fast): whole numbers, fractions, -0, huge and tiny values, NaN.
+TEST(RecordingWriter, WritesEachValueAsItsShortestForm) {
+  const double values[] = {0.0, -0.0, 1.0, -1.0, 2052.0, -32768.0, 65535.0, 0.001, 0.1 + 0.2,
+                           123456789012345.0, 999999999999999.0, 1e15, -1e15, 1e16, 1e17,
+                           4503599627370497.0, 1e-7, 12.5, -3.25e-5, 1.7976931348623157e308, kNaN};
+  std::vector<Sample> samples;
+  std::string expected_lines;
+  double t = 0.0;
+  for (double v : values) {
+    samples.push_back(At(t, v, -v, v * 3.0, v));
+    expected_lines += fmt::format("{} {} {} {} {}\n", t, v, -v, v * 3.0, v);
+    t += 0.125;
+  }
+  std::ostringstream out;
+  RecordingWriter writer(out, /*with_temperature=*/true);
+  writer.Write(samples);
+  writer.Flush();
+  const std::string text = out.str();
+  const size_t body = text.find("temp_c\n", text.find("# t ")) + 7;
+  EXPECT_EQ(text.substr(body), expected_lines);
 }
 
 }  // namespace

@@ -51,6 +51,26 @@ TEST(LineModeTest, TypedAnswersAndQuit) {
   EXPECT_NE(out.str().find("Saved"), std::string::npos);
 }
 
+// Issue 15: "?" was taken as the answer. It prints what the step expects and the answers that
+// work, then asks the same question again; at a text field too.
+TEST(LineModeTest, QuestionMarkPrintsTheHelpAndAsksAgain) {
+  LineRig rig;
+  std::istringstream in("?\nSN9\nhelp\nada\nq\n");
+  std::ostringstream out;
+  EXPECT_EQ(ui::RunLineMode(rig.engine, in, out), 0);
+  const std::string text = out.str();
+  EXPECT_EQ(rig.journal->Inputs().at("welcome").at("device"), "SN9");  // not "?"
+  EXPECT_EQ(rig.journal->Inputs().at("welcome").at("operator"), "ada");
+  const size_t help = text.find("  help:\n");
+  ASSERT_NE(help, std::string::npos) << text;
+  EXPECT_NE(text.find("serial number, from its label", help), std::string::npos) << text;
+  EXPECT_NE(text.find("(empty line)", help), std::string::npos) << text;
+  EXPECT_NE(text.find("q             save and quit", help), std::string::npos) << text;
+  // The question again after the help.
+  EXPECT_NE(text.find("Device serial number [SN1]> ", help), std::string::npos) << text;
+  EXPECT_NE(text.find("your name, for the report", help), std::string::npos) << text;
+}
+
 TEST(LineModeTest, EndOfInputSavesAndLeaves) {
   LineRig rig;
   std::istringstream in("\n\n\n");

@@ -41,6 +41,46 @@ TEST(QuantityInputTest, AbsurdSpeedsAreRefused) {
   EXPECT_NE(ParseRpm("120 mph").error.find("unknown unit"), std::string::npos);
 }
 
+// Issue 15: "0,12" and "2 Hz" were not understood.
+TEST(QuantityInputTest, DecimalCommaAndHertz) {
+  EXPECT_DOUBLE_EQ(ParseRadius("0,12").value, 0.12);
+  EXPECT_DOUBLE_EQ(ParseRadius("12,5 cm").value, 0.125);
+  EXPECT_DOUBLE_EQ(ParseRpm("2 Hz").value, 120.0);
+  EXPECT_DOUBLE_EQ(ParseRpm("2Hz").value, 120.0);
+  EXPECT_DOUBLE_EQ(ParseRpm("1,5 rps").value, 90.0);
+  // Two commas, or a comma beside a point, are not a decimal comma: refused, never misread.
+  EXPECT_FALSE(ParseRadius("0,1,2").ok());
+  EXPECT_FALSE(ParseRadius("1.0,5 cm").ok());
+  // "1,200" may be 1.2 or 1200 (a thousands separator): refused, never guessed.
+  EXPECT_EQ(ParseRpm("1,200").error, "'1,200' could be 1.200 or 1200: type it without the comma, "
+                                     "or with a point");
+  EXPECT_FALSE(ParseRadius("1,500 mm").ok());
+  EXPECT_DOUBLE_EQ(ParseRadius("0,125").value, 0.125);  // a leading 0 is never a thousands group
+  EXPECT_DOUBLE_EQ(ParseRpm("1,20 rps").value, 72.0);
+}
+
+// Issue 15: "300 rpm" at the radius got "unknown unit 'rpm' for a radius".
+TEST(QuantityInputTest, AUnitNamesItsField) {
+  EXPECT_EQ(FieldOfUnit("300 rpm"), TurntableField::kSpeed);
+  EXPECT_EQ(FieldOfUnit("2 Hz"), TurntableField::kSpeed);
+  EXPECT_EQ(FieldOfUnit("12.57 rad/s"), TurntableField::kSpeed);
+  EXPECT_EQ(FieldOfUnit("5 cm"), TurntableField::kRadius);
+  EXPECT_EQ(FieldOfUnit("0,12 m"), TurntableField::kRadius);
+  EXPECT_EQ(FieldOfUnit("120"), TurntableField::kNone);
+  EXPECT_EQ(FieldOfUnit("12 in"), TurntableField::kNone);
+  EXPECT_EQ(FieldOfUnit("fast"), TurntableField::kNone);
+  const std::string at_radius = ParseRadius("300 rpm").error;
+  EXPECT_EQ(at_radius.find("unknown unit"), std::string::npos) << at_radius;
+  EXPECT_NE(at_radius.find("speed field"), std::string::npos) << at_radius;
+  EXPECT_NE(ParseRpm("5 cm").error.find("radius field"), std::string::npos);
+}
+
+TEST(QuantityInputTest, BlankIsBlank) {
+  EXPECT_TRUE(IsBlank(""));
+  EXPECT_TRUE(IsBlank("   \t "));
+  EXPECT_FALSE(IsBlank(" 1 "));
+}
+
 TEST(QuantityInputTest, PlanBeyondTheRangeIsRefusedBeforeTheTableSpins) {
   SensorModel nominal;
   nominal.scale_counts_per_mps2 = Eigen::Vector3d::Constant(34.8);

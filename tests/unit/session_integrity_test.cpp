@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 #include <sqlite3.h>
 
+#include "accelcal/app/analyze_recording.h"
 #include "accelcal/base/error.h"
 #include "accelcal/session/session_store.h"
 #include "session_test_support.h"
@@ -163,6 +164,55 @@ TEST_F(SessionIntegrityTest, ADamagedRecordChunkBecomesANamedGap) {
   EXPECT_NE(record.gaps[0].reason.find("chunk 3 is damaged in the session file"), std::string::npos)
       << record.gaps[0].reason;
   for (const Sample& s : record.samples) EXPECT_NE(s.raw_counts.x(), 0.0);
+}
+
+// The LAST chunk damaged: there is no chunk after it to carry the gap, yet it is named like a
+// middle one (it failed before: the record just ended before it, without a word): a gap at the
+// record's end, from the last good sample to the damaged chunk's stated end, in ReadRecord and
+// in the record's analysis (what `accelcal allan` writes and prints for a session).
+TEST_F(SessionIntegrityTest, ADamagedLastRecordChunkIsNamedAsAGapToo) {
+  constexpr int kN = 1000;
+  {
+    auto store = SessionStore::Open(path_, Writer());
+    for (long i = 0; i < 8; ++i) store->AppendRecordChunk("drift", NoisyChunk(i, kN));
+  }
+  Exec(path_, "UPDATE record_chunks SET samples = CAST(zeroblob(40000) AS BLOB) WHERE chunk_index = 7");
+  auto store = SessionStore::Open(path_, Reader());
+  const JournalRecord record = ReadRecord(*store, "drift");
+  EXPECT_EQ(record.samples.size(), 7u * kN);
+  ASSERT_EQ(record.gaps.size(), 1u);
+  EXPECT_DOUBLE_EQ(record.gaps[0].t_start_s, NoisyChunk(6, kN).samples.back().t_s);
+  EXPECT_DOUBLE_EQ(record.gaps[0].t_end_s, NoisyChunk(7, kN).samples.back().t_s);
+  EXPECT_NE(record.gaps[0].reason.find("chunk 7 is damaged in the session file"), std::string::npos)
+      << record.gaps[0].reason;
+  for (const Sample& s : record.samples) EXPECT_NE(s.raw_counts.x(), 0.0);
+
+  const RecordAnalysis a = AnalyzeJournalRecord(*store, "drift", RecordAnalysisOptions{});
+  EXPECT_EQ(a.samples, 7 * kN);
+  ASSERT_EQ(a.gaps.size(), 1u);
+  EXPECT_DOUBLE_EQ(a.gaps[0].t_before_s, NoisyChunk(6, kN).samples.back().t_s);
+  EXPECT_DOUBLE_EQ(a.gaps[0].t_after_s, NoisyChunk(7, kN).samples.back().t_s);
+  EXPECT_EQ(a.gaps[0].missing_samples, kN);
+  EXPECT_EQ(a.missing_samples, kN);
+}
+
+// Two damaged chunks at the end, and one in the middle: each hole is named, the end's reason
+// naming both of its chunks.
+TEST_F(SessionIntegrityTest, DamagedChunksInTheMiddleAndAtTheEndAreEachNamed) {
+  constexpr int kN = 200;
+  {
+    auto store = SessionStore::Open(path_, Writer());
+    for (long i = 0; i < 8; ++i) store->AppendRecordChunk("drift", NoisyChunk(i, kN));
+  }
+  Exec(path_, "UPDATE record_chunks SET n = n + 1 WHERE chunk_index IN (2, 6, 7)");
+  auto store = SessionStore::Open(path_, Reader());
+  const JournalRecord record = ReadRecord(*store, "drift");
+  EXPECT_EQ(record.samples.size(), 5u * kN);
+  ASSERT_EQ(record.gaps.size(), 2u);
+  EXPECT_NE(record.gaps[0].reason.find("chunk 2 is damaged"), std::string::npos) << record.gaps[0].reason;
+  EXPECT_NE(record.gaps[1].reason.find("chunk 6 is damaged"), std::string::npos) << record.gaps[1].reason;
+  EXPECT_NE(record.gaps[1].reason.find("chunk 7 is damaged"), std::string::npos) << record.gaps[1].reason;
+  EXPECT_DOUBLE_EQ(record.gaps[1].t_start_s, NoisyChunk(5, kN).samples.back().t_s);
 }
 
 // Version 4 adds the checksums: a version-3 file (no checksum column) is read as it is by a

@@ -174,7 +174,7 @@ TEST_F(SessionRecordTest, AVersionOneSessionIsReadAsItIsAndMigratedByAWriter) {
     EXPECT_EQ(writer->Inputs().at("welcome").at("device"), "SN7");
     writer->AppendRecordChunk("drift", MakeChunk(0));
   }
-  EXPECT_EQ(UserVersion(path_), 4);  // the current version (4 added checksums)
+  EXPECT_EQ(UserVersion(path_), 5);  // the current version (4 added checksums, 5 redo)
   EXPECT_EQ(SessionStore::Open(path_, Reader())->RecordSummaryOf("drift").num_chunks, 1);
 }
 

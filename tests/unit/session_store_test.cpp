@@ -95,10 +95,95 @@ TEST_F(SessionStoreTest, AVersionTwoSessionGetsTheCoMomentColumnsRenamedByAWrite
   sqlite3_finalize(st);
   ASSERT_EQ(sqlite3_prepare_v2(db, "PRAGMA user_version", -1, &st, nullptr), SQLITE_OK);
   ASSERT_EQ(sqlite3_step(st), SQLITE_ROW);
-  EXPECT_EQ(sqlite3_column_int64(st, 0), 4);  // the current version (4 added checksums)
+  EXPECT_EQ(sqlite3_column_int64(st, 0), 5);  // the current version (4 added checksums, 5 redo)
   sqlite3_finalize(st);
   sqlite3_close(db);
   ExpectSameCapture(SessionStore::Open(path_, Reader())->Captures().at(0).capture, capture);
+}
+
+std::int64_t UserVersion(const std::string& path) {
+  sqlite3* db = nullptr;
+  EXPECT_EQ(sqlite3_open(path.c_str(), &db), SQLITE_OK);
+  sqlite3_stmt* st = nullptr;
+  EXPECT_EQ(sqlite3_prepare_v2(db, "PRAGMA user_version", -1, &st, nullptr), SQLITE_OK);
+  EXPECT_EQ(sqlite3_step(st), SQLITE_ROW);
+  const std::int64_t version = sqlite3_column_int64(st, 0);
+  sqlite3_finalize(st);
+  sqlite3_close(db);
+  return version;
+}
+
+// Version 5 keeps a capture taken again (a redo) marked superseded. A version-4 session made by
+// accelcal at de59c6d (tests/data/session/README.md) is read as it is, migrated by a writer, and
+// takes a redo that supersedes its first capture; the mark survives a reopen and the checksums
+// still hold.
+TEST_F(SessionStoreTest, AVersionFourSessionIsMigratedAndTakesARedo) {
+  fs::copy_file(std::string(ACCELCAL_SOURCE_DIR) + "/tests/data/session/v4_two_poses.db", path_);
+  ASSERT_EQ(UserVersion(path_), 4);
+  {
+    const std::vector<JournalCapture> before = SessionStore::Open(path_, Reader())->Captures();
+    ASSERT_EQ(before.size(), 2u);
+    EXPECT_FALSE(before[0].superseded());
+    EXPECT_FALSE(before[1].superseded());
+  }
+  const Capture redo = MakeCapture(3, 120, 9);
+  {
+    auto store = SessionStore::Open(path_, Writer());  // migrates
+    store->RecordRedoCapture("pose_pz#2", redo, "pose_pz");
+  }
+  EXPECT_EQ(UserVersion(path_), 5);
+  auto store = SessionStore::Open(path_, Reader());
+  EXPECT_TRUE(store->DamagedCaptures().empty());
+  const std::vector<JournalCapture> all = store->Captures();
+  ASSERT_EQ(all.size(), 3u);
+  EXPECT_EQ(all[0].step_id, "pose_pz");
+  EXPECT_EQ(all[0].superseded_by, "pose_pz#2");
+  EXPECT_EQ(all[0].capture.samples.size(), 100u);  // kept as it was
+  EXPECT_FALSE(all[1].superseded());
+  EXPECT_EQ(all[2].step_id, "pose_pz#2");
+  ExpectSameCapture(all[2].capture, redo);
+  const std::vector<JournalCapture> current = CurrentCaptures(all);
+  ASSERT_EQ(current.size(), 2u);
+  EXPECT_EQ(current[0].step_id, "pose_mz");
+  EXPECT_EQ(current[1].step_id, "pose_pz#2");
+}
+
+TEST_F(SessionStoreTest, ARedoOfNothingOrOfASupersededCaptureIsRefusedAndChangesNothing) {
+  auto store = SessionStore::Open(path_, Writer());
+  store->RecordCapture("face_1", MakeCapture(1, 50, 1));
+  try {
+    store->RecordRedoCapture("face_2#2", MakeCapture(2, 50, 2), "face_2");
+    FAIL() << "no error";
+  } catch (const Error& e) {
+    EXPECT_TRUE(Contains(e.what(), "step 'face_2' has no capture to supersede")) << e.what();
+  }
+  store->RecordRedoCapture("face_1#2", MakeCapture(2, 50, 2), "face_1");
+  try {
+    store->RecordRedoCapture("face_1#3", MakeCapture(3, 50, 3), "face_1");
+    FAIL() << "no error";
+  } catch (const Error& e) {
+    EXPECT_TRUE(Contains(e.what(), "already superseded by 'face_1#2'")) << e.what();
+  }
+  // The new capture's step id taken: the old one is not marked (one transaction).
+  store->RecordCapture("face_3", MakeCapture(4, 50, 4));
+  EXPECT_THROW(store->RecordRedoCapture("face_3", MakeCapture(5, 50, 5), "face_1#2"), Error);
+  const std::vector<JournalCapture> all = store->Captures();
+  ASSERT_EQ(all.size(), 3u);
+  EXPECT_EQ(all[0].superseded_by, "face_1#2");
+  EXPECT_FALSE(all[1].superseded());
+  EXPECT_FALSE(all[2].superseded());
+}
+
+TEST(MemoryJournalTest, ARedoSupersedesTheOldCaptureAndRefusesWhatTheStoreRefuses) {
+  std::unique_ptr<SessionJournal> journal = MakeMemoryJournal();
+  journal->RecordCapture("face_1", MakeCapture(1, 20, 1));
+  EXPECT_THROW(journal->RecordRedoCapture("face_2#2", MakeCapture(2, 20, 2), "face_2"), Error);
+  journal->RecordRedoCapture("face_1#2", MakeCapture(2, 20, 2), "face_1");
+  EXPECT_THROW(journal->RecordRedoCapture("face_1#3", MakeCapture(3, 20, 3), "face_1"), Error);
+  const std::vector<JournalCapture> all = journal->Captures();
+  ASSERT_EQ(all.size(), 2u);
+  EXPECT_EQ(all[0].superseded_by, "face_1#2");
+  EXPECT_EQ(CurrentCaptures(all).size(), 1u);
 }
 
 TEST_F(SessionStoreTest, RoundTripsEverythingThroughAReopen) {
@@ -172,7 +257,7 @@ TEST_F(SessionStoreTest, RefusesANewerSchemaAndForeignFiles) {
     SessionStore::Open(path_, Reader());
     FAIL() << "no error";
   } catch (const Error& e) {
-    EXPECT_TRUE(Contains(e.what(), "schema version 99, newer than this accelcal reads (4)")) << e.what();
+    EXPECT_TRUE(Contains(e.what(), "schema version 99, newer than this accelcal reads (5)")) << e.what();
   }
   const std::string text_file = (dir_ / "notes.db").string();
   { std::ofstream(text_file) << "this is not a database, just text long enough to be read\n"; }

@@ -4,8 +4,11 @@
 // clock. The wall clock is given to it here (no sleeping, nothing timed in the test).
 #include "accelcal/app/wizard/step_acquisition.h"
 
+#include <memory>
+
 #include <gtest/gtest.h>
 
+#include "accelcal/session/session_journal.h"
 #include "capture_engine_support.h"
 #include "test_support.h"
 
@@ -86,6 +89,50 @@ TEST(SilentLink, AFastSimulatedBenchIsNeverCutByTheWallClock) {
   testing::SyntheticStream stream(kModel, 1.5);
   const AcquisitionEvent e = acq.Feed(stream.Pose({0, 0, 1}, 12.0), kWall0 + 0.01);
   EXPECT_EQ(e, AcquisitionEvent::kCaptureAccepted) << acq.reason();
+}
+
+// The record step (the long drift record) on a link that falls silent: samples came, then none
+// (or only unreadable lines). It had no wall-clock limit and waited forever (this failed: Watch
+// said nothing for a record). Now it ends after the record's silence limit, with a plain
+// reason, and the record is kept up to the last good sample (the chunk being filled committed).
+TEST(SilentLink, ARecordOnALinkThatFallsSilentEndsAndKeepsWhatItRecorded) {
+  std::unique_ptr<SessionJournal> journal = MakeMemoryJournal();
+  RecordStepWriterOptions o;
+  o.duration_s = 3600.0;
+  o.chunk_s = 10.0;
+  o.noise_std_counts = {1.5, 1.5, 1.7};
+  o.wall_now_s = [] { return 1.7e9; };
+  StepAcquisition acq(2.0);
+  acq.StartRecord(std::make_unique<RecordStepWriter>(*journal, "drift", o), false, kWall0, 60.0);
+  testing::SyntheticStream stream(kModel, 1.5);
+  const std::vector<Sample> still = stream.Pose({0, 0, 1}, 25.0);  // 2 chunks and a half
+  EXPECT_EQ(acq.Feed(still, kWall0 + 25.0), AcquisitionEvent::kNone);
+  // Only unreadable lines from now on: they are not samples.
+  Sample nan_line;
+  nan_line.t_s = kNaN;
+  nan_line.raw_counts = Eigen::Vector3d::Constant(kNaN);
+  EXPECT_EQ(acq.Feed({nan_line, nan_line}, kWall0 + 50.0), AcquisitionEvent::kNone);
+  EXPECT_EQ(acq.Watch(kWall0 + 84.0), AcquisitionEvent::kNone);
+  EXPECT_TRUE(acq.recording());
+  ASSERT_EQ(acq.Watch(kWall0 + 86.0), AcquisitionEvent::kRecordSilent);
+  EXPECT_FALSE(acq.recording());
+  EXPECT_TRUE(acq.ended_silent());
+  EXPECT_TRUE(Contains(acq.reason(), "no samples for 61 s: the record stopped")) << acq.reason();
+  const JournalRecord record = ReadRecord(*journal, "drift");
+  ASSERT_EQ(record.samples.size(), still.size());
+  EXPECT_EQ(record.samples.back().t_s, still.back().t_s);
+}
+
+// A record whose link sends nothing at all from its start ends the same way, with nothing stored.
+TEST(SilentLink, ARecordWithNoSampleAtAllEnds) {
+  std::unique_ptr<SessionJournal> journal = MakeMemoryJournal();
+  RecordStepWriterOptions o;
+  o.wall_now_s = [] { return 1.7e9; };
+  StepAcquisition acq(2.0);
+  acq.StartRecord(std::make_unique<RecordStepWriter>(*journal, "drift", o), true, kWall0, 60.0);
+  EXPECT_EQ(acq.Watch(kWall0 + 59.0), AcquisitionEvent::kNone);
+  ASSERT_EQ(acq.Watch(kWall0 + 61.0), AcquisitionEvent::kRecordSilent);
+  EXPECT_TRUE(ReadRecord(*journal, "drift").samples.empty());
 }
 
 }  // namespace

@@ -50,16 +50,58 @@ TEST(TuiKeys, TypingAnAnswer) {
   EXPECT_TRUE(state.text.empty());
 }
 
-TEST(TuiKeys, EmptyAnswerTakesTheDefaultAndQQuits) {
+// Issue 15: in a text field q, s and b were typed (or q quit only on an empty answer) while the
+// key bar offered them. Every letter is now typed; the navigation has keys that cannot be typed.
+TEST(TuiKeys, EmptyAnswerTakesTheDefaultAndLettersAreTyped) {
   const WizardView view = accelcal::testing::WelcomeView();
   EditState state;
   const KeyOutcome submit = HandleKey(view, state, kKeyEnter);
   ASSERT_EQ(KindOf(submit), IntentKind::kSubmitText);
   EXPECT_EQ(submit.intent->text, "");
   HandleKey(view, state, 'a');
-  EXPECT_EQ(HandleKey(view, state, kKeyEscape).result, KeyResult::kRedraw);
+  EXPECT_EQ(HandleKey(view, state, kKeyEscape).result, KeyResult::kRedraw);  // clears first
   EXPECT_TRUE(state.text.empty());
-  EXPECT_EQ(KindOf(HandleKey(view, state, 'q')), IntentKind::kQuit);
+  EXPECT_EQ(HandleKey(view, state, 'q').result, KeyResult::kRedraw);  // "quintana" starts so
+  EXPECT_EQ(state.text, "q");
+}
+
+TEST(TuiKeys, NavigationFromATextFieldByKeysThatCannotBeTyped) {
+  const WizardView view = accelcal::testing::TurntableView();
+  EditState state;
+  EXPECT_EQ(KindOf(HandleKey(view, state, kKeyEscape)), IntentKind::kBack);  // empty answer
+  EXPECT_EQ(KindOf(HandleKey(view, state, kKeyCtrlN)), IntentKind::kSkip);
+  EXPECT_EQ(KindOf(HandleKey(view, state, kKeyCtrlX)), IntentKind::kQuit);
+  for (int key : {'s', 'b', 'q', 'r'}) HandleKey(view, state, key);
+  EXPECT_EQ(state.text, "sbqr");
+  EXPECT_EQ(KindOf(HandleKey(view, state, kKeyCtrlX)), IntentKind::kQuit);  // with text typed too
+}
+
+TEST(TuiKeys, KeyBarNamesTheKeysThatWorkInATextField) {
+  EXPECT_EQ(KeyName("s", true), "Ctrl-N");
+  EXPECT_EQ(KeyName("b", true), "Esc");
+  EXPECT_EQ(KeyName("q", true), "Ctrl-X");
+  EXPECT_EQ(KeyName("Enter", true), "Enter");
+  EXPECT_EQ(KeyName("r", true), "");  // a letter with no untypable key: not offered
+  EXPECT_EQ(KeyName("s", false), "s");
+}
+
+// ? and F1 open the help on every screen, a text field included (? is never typed there); the
+// next key only closes it.
+TEST(TuiKeys, QuestionMarkAndF1OpenTheHelpEverywhere) {
+  for (const WizardView& view : {accelcal::testing::TurntableView(), accelcal::testing::StaticPoseView(),
+                                 accelcal::testing::WelcomeView()}) {
+    for (int key : {int{'?'}, int{kKeyF1}}) {
+      EditState state;
+      state.text = "12";
+      EXPECT_EQ(HandleKey(view, state, key).result, KeyResult::kRedraw);
+      EXPECT_TRUE(state.help);
+      EXPECT_EQ(state.text, "12");
+      const KeyOutcome close = HandleKey(view, state, kKeyEnter);
+      EXPECT_EQ(close.result, KeyResult::kRedraw);
+      EXPECT_FALSE(close.intent.has_value());
+      EXPECT_FALSE(state.help);
+    }
+  }
 }
 
 TEST(TuiKeys, ScrollingIsClampedToTheLines) {
@@ -123,7 +165,7 @@ class FakeTerminal : public TuiTerminal {
  public:
   explicit FakeTerminal(std::deque<int> keys) : keys_(std::move(keys)) {}
   int ReadKey(int) override {
-    if (keys_.empty()) return ++idle > 1000 ? int{'q'} : static_cast<int>(kKeyNone);  // never hang a test
+    if (keys_.empty()) return ++idle > 1000 ? int{kKeyCtrlX} : static_cast<int>(kKeyNone);  // never hang a test
     const int key = keys_.front();
     keys_.pop_front();
     if (key == kKeyResize) width = 60;

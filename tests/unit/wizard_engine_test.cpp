@@ -133,6 +133,16 @@ TEST(WizardEngineTest, WelcomeTakesTypedAnswersAndGoesBack) {
   EXPECT_EQ(rig.journal->Inputs().at("welcome").at("device"), "SN43");
   EXPECT_EQ(rig.journal->Inputs().at("welcome").at("operator"), "ada");
   EXPECT_EQ(rig.journal->Inputs().at("welcome").at("place"), "Lab 2, bench B <east>");
+  // The seed procedure lists its equipment: the welcome's last question edits it (this
+  // question is new with the uncertainty budget, issue 16).
+  ASSERT_TRUE(rig.engine.View().input.has_value());
+  EXPECT_EQ(rig.engine.View().input->key, "equipment");
+  EXPECT_NE(rig.engine.View().input->label.find("RUL-01"), std::string::npos) << rig.engine.View().input->label;
+  rig.engine.Handle({IntentKind::kSubmitText, "ruler u half"});
+  EXPECT_NE(rig.engine.View().input->error.find("u must be a number"), std::string::npos)
+      << rig.engine.View().input->error;
+  rig.engine.Handle({IntentKind::kSubmitText, "ruler id RUL-77 u 0.4; level u 0.1"});
+  EXPECT_EQ(rig.journal->Inputs().at("welcome").at("equipment"), "ruler id RUL-77 u 0.4; level u 0.1");
   EXPECT_EQ(rig.engine.View().step_title, "Level the table");
 }
 
@@ -167,12 +177,18 @@ TEST(WizardEngineTest, SkipRecordsTheStepAndBackReturnsToIt) {
   EXPECT_EQ(rig.journal->Captures()[0].step_id, "pose_pz");
 }
 
-TEST(WizardEngineTest, BackDoesNotReplaceAnAcceptedCapture) {
+// Issue 15: b on an accepted capture offers to take it again (wizard_redo_test.cpp); it replaces
+// nothing unless asked (before, b said "nothing to go back to").
+TEST(WizardEngineTest, BackOffersAnAcceptedCaptureAgainAndReplacesNothingUnlessAsked) {
   Rig rig(SeedProcedure());
   AcceptUntil(rig.engine, TitleIs("-z up"));
   rig.engine.Handle({IntentKind::kBack, ""});
+  EXPECT_EQ(rig.engine.View().step_title, "+z up");
+  EXPECT_NE(rig.engine.View().prompt.find("Take '+z up' again?"), std::string::npos);
+  rig.engine.Handle({IntentKind::kAnswerNo, ""});
   EXPECT_EQ(rig.engine.View().step_title, "-z up");
-  EXPECT_NE(rig.engine.View().problem.find("nothing to go back to"), std::string::npos);
+  ASSERT_EQ(rig.journal->Captures().size(), 1u);
+  EXPECT_FALSE(rig.journal->Captures()[0].superseded());
 }
 
 TEST(WizardEngineTest, RetryRestartsARunningCapture) {
@@ -214,9 +230,12 @@ TEST(WizardEngineTest, TurntableInputsAreRefusedWithTheReasonThenAccepted) {
   rig.engine.Handle({IntentKind::kSubmitText, "1.5 m"});
   rig.engine.Handle({IntentKind::kSubmitText, "300 rpm"});
   ASSERT_TRUE(rig.engine.View().input.has_value());
-  EXPECT_EQ(rig.engine.View().input->key, "radius");
+  // Issue 15: the cursor stays on the speed, where the technician types next; a radius typed
+  // there (its unit says so) corrects the radius.
+  EXPECT_EQ(rig.engine.View().input->key, "rpm");
   EXPECT_NE(rig.engine.View().input->error.find("range"), std::string::npos);
   rig.engine.Handle({IntentKind::kSubmitText, "120 mm"});
+  EXPECT_EQ(rig.engine.View().input->key, "rpm");
   rig.engine.Handle({IntentKind::kSubmitText, "2 rps"});
   EXPECT_EQ(rig.engine.View().screen, WizardScreen::kMountTurntable);
   AcceptUntil(rig.engine, [](const WizardView& view) { return view.input.has_value(); });
@@ -224,6 +243,51 @@ TEST(WizardEngineTest, TurntableInputsAreRefusedWithTheReasonThenAccepted) {
   ASSERT_EQ(captures.back().step_id, "tt_x_050");
   EXPECT_DOUBLE_EQ(captures.back().capture.radius_m, 0.12);
   EXPECT_DOUBLE_EQ(captures.back().capture.rpm, 120.0);
+}
+
+// Issue 15's entry traps: after "600 rpm at ... lower the speed or the radius" the cursor was in
+// the radius field, "300 rpm" there got "unknown unit 'rpm' for a radius", the refused 600 rpm
+// became the default, "0,12" was not understood and blanks were "not a speed".
+TEST(WizardEngineTest, TurntableEntryTraps) {
+  Rig rig(SeedProcedure());
+  AcceptUntil(rig.engine, [](const WizardView& v) { return v.input && v.input->key == "radius"; });
+  auto input = [&rig] { return *rig.engine.View().input; };
+  rig.engine.Handle({IntentKind::kSubmitText, "   "});  // blanks: the default, as empty
+  ASSERT_EQ(input().key, "rpm");
+  EXPECT_EQ(input().error, "");
+  rig.engine.Handle({IntentKind::kSubmitText, "600 rpm"});
+  ASSERT_TRUE(rig.engine.View().input.has_value());
+  EXPECT_EQ(input().key, "rpm");  // the cursor where the technician types next
+  EXPECT_NE(input().error.find("lower the speed or the radius"), std::string::npos) << input().error;
+  EXPECT_EQ(input().default_text, "120 rpm");  // never the refused 600
+  // A radius typed at the speed corrects the radius; the cursor stays on the speed.
+  rig.engine.Handle({IntentKind::kSubmitText, "3 cm"});
+  EXPECT_EQ(input().key, "rpm");
+  EXPECT_EQ(input().error, "");
+  EXPECT_NE(rig.engine.View().prompt.find("Radius set to 30 mm"), std::string::npos);
+  rig.engine.Handle({IntentKind::kBack, ""});
+  ASSERT_EQ(input().key, "radius");
+  EXPECT_EQ(input().default_text, "30 mm");
+  // A speed typed at the radius corrects the speed, never "unknown unit 'rpm' for a radius".
+  rig.engine.Handle({IntentKind::kSubmitText, "200 rpm"});
+  EXPECT_EQ(input().key, "radius");
+  EXPECT_EQ(input().error, "");
+  EXPECT_NE(rig.engine.View().prompt.find("Speed set to 200 rpm"), std::string::npos);
+  rig.engine.Handle({IntentKind::kSubmitText, "0,04"});  // a decimal comma
+  ASSERT_EQ(input().key, "rpm");
+  EXPECT_EQ(input().default_text, "200 rpm");
+  rig.engine.Handle({IntentKind::kSubmitText, " \t"});
+  const WizardView v = rig.engine.View();
+  EXPECT_EQ(v.screen, WizardScreen::kMountTurntable);
+  EXPECT_NE(v.prompt.find("40 mm"), std::string::npos) << v.prompt;
+  EXPECT_NE(v.prompt.find("200 rpm"), std::string::npos) << v.prompt;
+}
+
+// Blanks at the welcome take the default, as an empty answer does (line mode trims them).
+TEST(WizardEngineTest, BlankWelcomeAnswerTakesTheDefault) {
+  Rig rig(SeedProcedure());
+  rig.engine.Handle({IntentKind::kSubmitText, "  "});
+  EXPECT_EQ(rig.journal->Inputs().at("welcome").at("device"), "SN1");
 }
 
 TEST(WizardEngineTest, WrongFaceIsShownAndTheRetryTakesTheRightOne) {
@@ -258,17 +322,23 @@ TEST(WizardEngineTest, ABumpIsRetriedByItself) {
   Rig rig(ShortStaticProcedure(9), Fast(1.0));
   AcceptUntil(rig.engine, TitleIs("+z up"));
   PassNoiseFloor(rig.engine);
-  std::vector<std::string> problems;
+  // Issue 15: a retry is said in words on the capture screen, its figures on the detail line;
+  // it is no longer a problem (until then: problem "spike: ..." on every retry).
+  bool knocked = false;
   for (int pose = 0; pose < 3; ++pose) {
     rig.engine.Handle({IntentKind::kAccept, ""});
-    const std::vector<std::string> seen = PollUntilQuestion(rig.engine);
-    problems.insert(problems.end(), seen.begin(), seen.end());
+    for (int i = 0; i < 5000 && Busy(rig.engine.View()); ++i) {
+      rig.engine.Poll(0.0);
+      const WizardView v = rig.engine.View();
+      EXPECT_TRUE(v.problem.empty()) << v.problem;
+      if (v.stability_text == "the bench was knocked: don't touch it; measuring again" &&
+          v.detail.find("spike") != std::string::npos)
+        knocked = true;
+    }
   }
   EXPECT_GE(rig.sim.bumps_scheduled(), 3);
   EXPECT_EQ(rig.journal->Captures().size(), 3u);
-  bool spike = false;
-  for (const std::string& p : problems) spike = spike || p.find("spike") != std::string::npos;
-  EXPECT_TRUE(spike) << "no retry after a bump was shown";
+  EXPECT_TRUE(knocked) << "no retry after a bump was shown";
 }
 
 TEST(WizardEngineTest, AnUnusableFitBlocksTheWizard) {
@@ -298,7 +368,9 @@ TEST(WizardEngineTest, DiagnosisAdoptsTheEffectOnEnter) {
   Rig rig(SeedProcedure(), Fast(), QuadraticScenario());
   AcceptUntil(rig.engine, [](const WizardView& v) { return v.screen == WizardScreen::kDiagnosis; });
   const WizardView v = rig.engine.View();
-  ASSERT_NE(v.prompt.find("Adopt"), std::string::npos) << v.prompt;
+  // Issue 15: in plain words, the recommended choice on Enter (was "Adopt ...? Enter adopts").
+  ASSERT_NE(v.prompt.find("add it to the calibration (recommended), or keep the basic model?"), std::string::npos)
+      << v.prompt;
   rig.engine.Handle({IntentKind::kAccept, ""});
   EXPECT_EQ(rig.journal->DoneSteps().at("diagnosis").rfind("adopted", 0), 0u);
   AcceptUntil(rig.engine, Never);

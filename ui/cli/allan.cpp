@@ -18,6 +18,7 @@
 #include "accelcal/io/text_file.h"
 #include "accelcal/report/allan_text.h"
 #include "accelcal/session/session_store.h"
+#include "cli/cli_checks.h"
 #include "cli/commands.h"
 #include "cli/sample_format_flags.h"
 
@@ -128,13 +129,13 @@ void SetupAllanCommand(CLI::App& app) {
   sub->add_option("--step", opts->step, "The session's record step (default: its first record)");
   sub->add_option("--calibration", opts->calibration_path,
                   "Calibration file: figures in m/s^2 instead of counts")
-      ->check(CLI::ExistingFile);
+      ->check(InputFile());
   sub->add_option("-o,--output", opts->output_path, "Write the analysis (allan.json) here");
   sub->add_option("--kalibr", opts->kalibr_path,
                   "Also write Kalibr's imu.yaml (needs --calibration: Kalibr wants m/s^2)");
   opts->format.Bind(*sub, "the recording");
   sub->add_option("--drift-window-s", opts->drift_window_s, "Window of the drift means, s")
-      ->check(CLI::PositiveNumber)->capture_default_str();
+      ->check(Positive())->capture_default_str();
   sub->callback([opts] { RunAllan(*opts); });
 }
 

@@ -7,6 +7,7 @@
 #include "accelcal/calibration/apply.h"
 #include "accelcal/base/error.h"
 #include "accelcal/io/calibration_file.h"
+#include "cli/cli_checks.h"
 #include "cli/commands.h"
 #include "cli/sample_format_flags.h"
 
@@ -61,7 +62,7 @@ void SetupApplyCommand(CLI::App& app) {
       "  accelcal apply cal.json < raw.txt > calibrated.txt");
   sub->add_option("calibration", opts->calibration_path, "Calibration file (JSON) from 'accelcal fit'")
       ->required()
-      ->check(CLI::ExistingFile);
+      ->check(InputFile());
   opts->format.Bind(*sub, "standard input");
   sub->add_option("--max-reported", opts->max_reported, "Malformed lines reported one by one at most")
       ->capture_default_str();

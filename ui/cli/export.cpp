@@ -26,7 +26,10 @@ void RunExport(const ExportCommandOptions& o) {
   const std::unique_ptr<SessionStore> store = SessionStore::Open(path, read_only);
   CaptureSet set;
   set.source_name = path;
-  for (JournalCapture& c : store->Captures()) set.captures.push_back(std::move(c.capture));
+  // A capture taken again (redo) is superseded: kept in the session, never exported.
+  const std::vector<JournalCapture> all = store->Captures();
+  const size_t superseded = all.size() - CurrentCaptures(all).size();
+  for (JournalCapture& c : CurrentCaptures(all)) set.captures.push_back(std::move(c.capture));
   if (set.captures.empty() && !DescribeRecords(*store).empty())
     throw Error(fmt::format("session {} has no accepted captures: it holds records ({}), which are "
                             "not capture sets", path, DescribeRecords(*store)));
@@ -40,6 +43,9 @@ void RunExport(const ExportCommandOptions& o) {
   std::cout << fmt::format("{} captures of session {} written to {}\n", set.captures.size(), path,
                            o.output_path);
   for (const DamagedCapture& d : damaged) std::cerr << "not written: " << d.Describe() << "\n";
+  if (superseded > 0)
+    std::cerr << fmt::format("not written: {} capture{} taken again (superseded by the redo)\n",
+                             superseded, superseded == 1 ? "" : "s");
 }
 
 }  // namespace

@@ -20,6 +20,7 @@
 #include "accelcal/io/text_file.h"
 #include "accelcal/session/session_store.h"
 #include "accelcal/session/procedure.h"
+#include "cli/cli_checks.h"
 #include "cli/commands.h"
 #include "cli/output.h"
 
@@ -179,10 +180,10 @@ void SetupExportCalCommand(CLI::App& app) {
       ->expected(1, 3);
   sub->add_option("--procedure", opts->procedure_path,
                   "ardupilot/px4: take the nominal scale and zero-g level from a procedure's [sensor]")
-      ->check(CLI::ExistingFile);
+      ->check(InputFile());
   sub->add_option("--px4-device-id", opts->px4_device_id, "px4: CAL_ACC0_ID, the sensor's device id on the autopilot");
   sub->add_option("--allan", opts->allan_path, "kalibr: Allan analysis file (accelcal allan -o)")
-      ->check(CLI::ExistingFile);
+      ->check(InputFile());
   sub->add_option("--noise-density", opts->noise_density, "kalibr: accelerometer noise density, m/s^2/sqrt(Hz)");
   sub->add_option("--random-walk", opts->random_walk, "kalibr: accelerometer bias random walk, m/s^3/sqrt(Hz)");
   sub->add_option("--rate-hz", opts->rate_hz, "kalibr: the IMU's update rate, Hz");

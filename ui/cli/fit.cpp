@@ -11,6 +11,7 @@
 #include "accelcal/io/recording_reader.h"
 #include "accelcal/acquire/static_detector.h"
 #include "accelcal/report/report_model.h"
+#include "cli/cli_checks.h"
 #include "cli/commands.h"
 #include "accelcal/report/fit_text.h"
 #include "cli/gravity_options.h"
@@ -135,11 +136,11 @@ void SetupFitCommand(CLI::App& app) {
       "  accelcal fit captures.csv --latitude -34.90 --altitude 43 -o cal.json");
   CLI::Option* captures = sub->add_option("captures", opts->captures_path,
                                           "Capture-set file (CSV, format in README.md)")
-                              ->check(CLI::ExistingFile);
+                              ->check(InputFile());
   CLI::Option* recording = sub->add_option("--recording", opts->recording_path,
                                            "Continuous recording 't ax ay az [temp_c]' of static poses "
                                            "with a still start; static intervals are found automatically")
-                               ->check(CLI::ExistingFile);
+                               ->check(InputFile());
   captures->excludes(recording);
   sub->add_option("-o,--output", opts->output_path, "Write the calibration file (JSON) here");
   opts->gravity.Bind(*sub);

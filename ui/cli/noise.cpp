@@ -17,6 +17,7 @@
 #include "accelcal/report/noise_text.h"
 #include "accelcal/session/session_paths.h"
 #include "accelcal/session/procedure.h"
+#include "cli/cli_checks.h"
 #include "cli/commands.h"
 #include "cli/output.h"
 #include "cli/sample_format_flags.h"
@@ -105,7 +106,7 @@ void SetupNoiseCommand(CLI::App& app) {
   sub->add_option("device", opts->device, "Device serial (as recorded in its sessions)");
   sub->add_option("--record", opts->record_paths,
                   "Recording files (t ax ay az [temp_c]) instead of sessions; undated")
-      ->check(CLI::ExistingFile);
+      ->check(InputFile());
   sub->add_option("--sessions-dir", opts->sessions_dir,
                   "Session directory (default: $XDG_DATA_HOME/accelcal/sessions)");
   sub->add_option("--procedure", opts->procedure_path,

@@ -17,6 +17,7 @@
 #include "accelcal/io/capture_set_writer.h"
 #include "accelcal/io/text_file.h"
 #include "accelcal/acquire/source/source_spec.h"
+#include "cli/cli_checks.h"
 #include "cli/commands.h"
 #include "cli/sample_format_flags.h"
 #include "accelcal/io/scenario_file.h"
@@ -192,7 +193,7 @@ void SetupRecordCommand(CLI::App& app) {
       ->required();
   sub->add_option("--duration", opts->duration_s,
                   "Seconds of samples (span of t) to record; 0: until the end or Ctrl-C")
-      ->check(CLI::NonNegativeNumber)->capture_default_str();
+      ->check(NonNegative())->capture_default_str();
   sub->add_option("--speed", opts->source.sim.speed,
                   "sim: simulated seconds per wall second (1 real time; 0 as fast as possible)")
       ->capture_default_str();

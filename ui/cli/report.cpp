@@ -9,6 +9,7 @@
 
 #include "accelcal/base/error.h"
 #include "accelcal/app/report_inputs.h"
+#include "accelcal/app/wizard/equipment_input.h"
 #include "accelcal/io/allan_file.h"
 #include "accelcal/io/calibration_file.h"
 #include "accelcal/io/noise_file.h"
@@ -69,10 +70,19 @@ ReportInputs FromSession(const std::string& input) {
   return in;
 }
 
+// The procedure's equipment as the session's welcome edited it (the same list the wizard's
+// report showed), and its nominal zero-g level.
+void SetEquipment(const Procedure& p, ReportInputs* in) {
+  const EquipmentAnswer edited = ApplyEquipmentAnswer(in->equipment_answer, p.equipment);
+  in->equipment = edited.ok() ? edited.items : p.equipment;
+  in->nominal_bias_counts = p.nominal.bias_counts;
+}
+
 void AddLimits(const ReportCommandOptions& o, ReportInputs* in) {
   if (!o.procedure_path.empty()) {
     const Procedure p = LoadProcedure(o.procedure_path);
     in->limits = p.limits;
+    SetEquipment(p, in);
     if (in->meta.procedure.empty()) in->meta.procedure = p.title;
     return;
   }
@@ -81,7 +91,10 @@ void AddLimits(const ReportCommandOptions& o, ReportInputs* in) {
   if (in->meta.procedure.empty()) return;
   try {
     const Procedure p = LoadProcedure(ShippedProcedurePath("seed_calibration.toml"));
-    if (p.title == in->meta.procedure) in->limits = p.limits;
+    if (p.title == in->meta.procedure) {
+      in->limits = p.limits;
+      SetEquipment(p, in);
+    }
   } catch (const Error&) {
     // No default procedure installed: the report says no limits were stated.
   }

@@ -1,3 +1,4 @@
+#include "cli/cli_checks.h"
 #include "cli/sample_format_flags.h"
 
 #include <cmath>
@@ -16,10 +17,10 @@ void SampleFormatFlags::Bind(CLI::App& app, const std::string& what) {
                              "[temp_c]", what));
   app.add_option("--skip-rows", skip_rows,
                  "Leading lines to ignore (metadata before the data)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(NonNegative());
   app.add_option("--rate-hz", rate_hz,
                  "Samples per second: t = row / rate (no time column needed; replaces one)")
-      ->check(CLI::PositiveNumber);
+      ->check(Positive());
   unit_option = app.add_option(
       "--unit", unit,
       "What ax, ay, az hold: counts (raw ADC), or m/s^2 or g for a logger that converted them "
@@ -29,7 +30,7 @@ void SampleFormatFlags::Bind(CLI::App& app, const std::string& what) {
       ->capture_default_str();
   app.add_option("--counts-per-unit", counts_per_unit,
                  "With --unit m/s^2 or g: counts per unit (default 1000)")
-      ->check(CLI::PositiveNumber);
+      ->check(Positive());
   app.add_flag("--no-repair-time", no_repair_time,
                "Refuse repeated time stamps instead of spreading rounded ones within their step");
 }

@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <string>
 
 #include <fmt/core.h>
 
@@ -23,6 +24,22 @@ struct SessionsCommandOptions {
 };
 
 constexpr const char* kRowFormat = "{:<22} {:<20} {:<14} {:<12} {:<14} {:>8} {:<5} {}\n";
+constexpr size_t kNameWidth = 22;
+
+// `text` cut to `width` characters, its end replaced by "..." when cut, so that a long device,
+// operator or procedure title keeps the columns after it in place.
+std::string Cell(const std::string& text, size_t width) {
+  if (text.empty()) return "-";
+  if (text.size() <= width) return text;
+  return text.substr(0, width - 3) + "...";
+}
+
+// The name is what the user types back (accelcal report NAME): never cut. A longer one goes on a
+// line of its own, the row under it.
+std::string NameLines(const std::string& name, std::string row_after_name) {
+  if (name.size() <= kNameWidth) return fmt::format("{:<{}}", name, kNameWidth) + row_after_name;
+  return name + "\n" + std::string(kNameWidth, ' ') + row_after_name;
+}
 
 // One line for a session; one line with the reason for a file that cannot be read as one.
 std::string Row(const std::string& path) {
@@ -32,10 +49,11 @@ std::string Row(const std::string& path) {
     const SessionInfo info = SessionStore::Open(path, read_only)->Info();
     // "2025-03-01T14:05:09.123Z" -> "2025-03-01 14:05:09"
     const std::string created = info.created_utc.substr(0, 19).replace(10, 1, " ");
-    return fmt::format(kRowFormat, info.name, created, info.device.empty() ? "-" : info.device,
-                       info.operator_name.empty() ? "-" : info.operator_name,
-                       info.procedure.empty() ? "-" : info.procedure, info.num_captures,
-                       SessionStateToString(info.state), info.has_result ? "yes" : "no");
+    const std::string row = fmt::format(kRowFormat, "", created, Cell(info.device, 14),
+                                        Cell(info.operator_name, 12), Cell(info.procedure, 14),
+                                        info.num_captures, SessionStateToString(info.state),
+                                        info.has_result ? "yes" : "no");
+    return NameLines(info.name, row.substr(kNameWidth));
   } catch (const Error& e) {
     return fmt::format("{:<22} unreadable: {}\n", fs::path(path).stem().string(), e.what());
   }

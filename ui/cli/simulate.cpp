@@ -1,9 +1,11 @@
 #include "cli/simulate.h"
 
+#include <cmath>
 #include <fstream>
 #include <sstream>
 #include <iostream>
 #include <memory>
+#include <optional>
 
 #include "accelcal/base/error.h"
 #include "accelcal/io/atomic_write.h"
@@ -39,6 +41,31 @@ void WriteOutput(const std::string& path, std::ostream& stdout_stream, WriteFn&&
   WriteFileAtomically(path, out.str());
 }
 
+// The recording, chunk by chunk as the bench makes it: a 12-hour record at 1 kHz never sits in
+// memory whole. A file is still written atomically (PATH.tmp, renamed at the end).
+void WriteRecordingStreamed(sim::VirtualBench& bench, const std::string& path,
+                            std::ostream& stdout_stream) {
+  std::optional<AtomicFileWriter> file;
+  if (path != "-") file.emplace(path);
+  std::ostringstream buffer;
+  std::ostream& out = file ? buffer : stdout_stream;
+  std::optional<RecordingWriter> writer;
+  const auto pass_on = [&] {
+    if (!file) return;
+    file->Write(buffer.view());
+    buffer.str({});
+  };
+  bench.SimulateRecording([&](const std::vector<Sample>& chunk) {
+    if (!writer) writer.emplace(out, std::isfinite(chunk.front().temp_c));
+    writer->Write(chunk);
+    pass_on();
+  });
+  if (!writer) writer.emplace(out, false);
+  writer->Flush();
+  pass_on();
+  if (file) file->Commit();
+}
+
 }  // namespace
 
 void RunSimulate(const SimulateOptions& options, std::ostream& stdout_stream) {
@@ -46,9 +73,7 @@ void RunSimulate(const SimulateOptions& options, std::ostream& stdout_stream) {
   if (options.seed) scenario.bench.seed = *options.seed;
   sim::VirtualBench bench(scenario);
   if (options.recording) {
-    const std::vector<Sample> samples = bench.SimulateRecording();
-    WriteOutput(options.output_path, stdout_stream,
-                [&](std::ostream& out) { WriteRecording(out, samples); });
+    WriteRecordingStreamed(bench, options.output_path, stdout_stream);
   } else {
     CaptureSet set;
     set.source_name = options.scenario_path;

@@ -1,3 +1,4 @@
+#include "cli/cli_checks.h"
 #include "cli/wizard.h"
 
 #include <cstdlib>
@@ -17,6 +18,7 @@
 #include "accelcal/app/wizard/wizard_engine.h"
 #include "cli/commands.h"
 #include "cli/output.h"
+#include "cli/source_preflight.h"
 #include "cli/terminal_answers.h"
 #include "cli/gravity_options.h"
 #include "cli/wizard_journal.h"
@@ -37,6 +39,7 @@ std::string DefaultOperator(bool sim) {
 }  // namespace
 
 int RunWizard(const WizardCommandOptions& options) {
+  RefuseAbsentSerialPort(options.source);  // before the session file is created
   const Procedure procedure = LoadProcedure(
       options.procedure_path.empty() ? ShippedProcedurePath("seed_calibration.toml") : options.procedure_path);
   // `--source -`: stdin carries the samples, so the answers come from the terminal (refused
@@ -89,7 +92,7 @@ void SetupWizardCommand(CLI::App& app) {
                   "tcp:HOST:PORT or - (default sim)");
   sub->add_option("--speed", options->speed,
                   "sim: simulated seconds per wall-clock second (default 1; 0 = as fast as possible)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(NonNegative());
   sub->add_option("--seed", options->seed, "sim: random seed, overriding the scenario's");
   sub->add_option("--scenario", options->scenario_path,
                   "sim: virtual-bench scenario (TOML); default: the built-in default bench");

@@ -2,10 +2,13 @@
 // tests drive it with plain codes (STYLE.md: htop's HandlerResult, FTXUI's synthetic events).
 //
 // Keys: Enter accepts, or submits the typed answer when a value is asked (an empty answer takes
-// the default); r retry, s skip, b back, n no; q saves and quits at any moment. While a value is
-// asked, letters are typed into the answer, so q quits only while the answer is empty (Esc
-// clears it first; Backspace deletes a character). PgUp/PgDn and the arrows scroll the text
-// lines. On the final screen, any key other than scrolling leaves.
+// the default); r retry, s skip, b back, n no, q save and quit. While a value is asked every
+// printable key is typed into the answer, so the navigation there uses keys that cannot be
+// typed: Esc back (it clears a typed answer first), Ctrl-N skip, Ctrl-X save and quit (Ctrl-S and
+// Ctrl-Q are the terminal's flow control, Ctrl-B tmux's prefix); Backspace deletes a character.
+// Ctrl-N and Ctrl-X work on every screen. ? and F1 show the help (the keys and what the step
+// expects; in a text field too: ? is never part of an answer); any key closes it. PgUp/PgDn and
+// the arrows scroll the text lines. On the final screen, any key other than scrolling leaves.
 #pragma once
 
 #include <optional>
@@ -28,7 +31,11 @@ enum Key : int {
   kKeyHome,
   kKeyEnd,
   kKeyResize,
+  kKeyF1,
 };
+// Control keys arrive as their ASCII codes.
+inline constexpr int kKeyCtrlN = 14;
+inline constexpr int kKeyCtrlX = 24;
 
 // What the loop does after a key.
 enum class KeyResult {
@@ -44,7 +51,10 @@ struct EditState {
   std::string text;
   int scroll = 0;
   int page = 10;        // rows the text lines get, for PgUp/PgDn (set by the loop)
+  int width = 0;        // the screen's width, to count the wrapped text lines (set by the loop)
   std::string context;  // what the state belongs to
+  bool help = false;    // the help overlay is shown (any key closes it)
+  bool details = false; // `d` shows the figures behind the capture's message
 };
 
 struct KeyOutcome {
@@ -53,6 +63,12 @@ struct KeyOutcome {
 };
 
 KeyOutcome HandleKey(const WizardView& view, EditState& state, int key);
+
+// The key that sends a KeyHint's intent in the TUI, as the key bar names it: the engine names its
+// keys by letter ("s", "b", "q"); in a text field (`text_field`) those letters are typed, so there
+// it names the keys above ("Ctrl-N", "Esc", "Ctrl-X"), and nothing for a letter that has no such
+// key (it would not work there).
+std::string KeyName(const std::string& hint_key, bool text_field);
 
 // Clears the answer and the scroll when `view` is about something else than before.
 void SyncEditState(const WizardView& view, EditState& state);

@@ -27,6 +27,34 @@ std::vector<std::string> Box(const std::string& label) {
   };
 }
 
+// A tilted pose: the prism seen from the side standing on the edge (two faces lean up) or the
+// corner (three) named `down`, the opposite edge or corner `up` straight above it.
+std::vector<std::string> OnEdge(const std::string& up, const std::string& down) {
+  return {
+      fmt::format("{:^19}", up + " up"),
+      "         +",
+      "        / \\",
+      "       +   +",
+      "        \\ /",
+      "  ~~~~~~~+~~~~~~~~",
+      "edge " + down + " down",
+  };
+}
+
+std::vector<std::string> OnCorner(const std::string& up, const std::string& down) {
+  return {
+      fmt::format("{:^19}", up + " up"),
+      "         +",
+      "      .-'|'-.",
+      "     +   |   +",
+      "     |'-.+.-'|",
+      "     +   |   +",
+      "      '-.|.-'",
+      "  ~~~~~~~+~~~~~~~~",
+      "corner " + down + " down",
+  };
+}
+
 // The turntable from above: the spin axis 'o' and the radial axis of the sensor as an arrow.
 std::vector<std::string> Table(const std::string& radial) {
   return {
@@ -71,13 +99,12 @@ std::vector<std::string> DrawPose(const std::optional<Eigen::Vector3d>& up,
   }
   if (!up || !up->allFinite() || up->norm() == 0) return {};
   const std::string label = UpLabel(*up);
-  std::vector<std::string> rows = Box(label);
-  if (label.size() <= 2) {
-    rows.push_back("face up: " + label);
-  } else {
-    const Eigen::Vector3d u = up->normalized();
-    rows.push_back(fmt::format("up ({:+.1f},{:+.1f},{:+.1f})", u.x(), u.y(), u.z()));
+  if (label.size() > 2) {
+    const std::string down = UpLabel(-*up);
+    return label.size() == 4 ? OnEdge(label, down) : OnCorner(label, down);
   }
+  std::vector<std::string> rows = Box(label);
+  rows.push_back("face up: " + label);
   return rows;
 }
 

@@ -1,5 +1,7 @@
 // The small ASCII drawing of where the sensor must be: a prism (a box) with the face that must
-// be up named on its top, or the turntable seen from above with the radial axis as an arrow.
+// be up named on its top; for a tilted pose the prism seen from the side standing on the edge or
+// corner that goes down, named with the one straight above it; or the turntable seen from above
+// with the radial axis as an arrow.
 #pragma once
 
 #include <optional>

@@ -4,6 +4,8 @@
 
 #include <fmt/core.h>
 
+#include "tui/help_overlay.h"
+#include "tui/capture_blocks.h"
 #include "tui/render_blocks.h"
 #include "tui/text_util.h"
 
@@ -50,9 +52,13 @@ std::vector<Block> MiddleBlocks(const WizardView& view, const RenderState& state
   }
   return {
       {7, TitleBlock(view, width)},
+      {9, VerdictBlock(view, width)},
+      {6, NoticeBlock(view, width)},
       {5, PromptBlock(view, width)},
       {4, std::move(panel)},
       {8, ProblemBlock(view, width)},
+      {6, DetailBlock(view, state, width)},
+      {5, TimeBlock(view, width)},
       {9, InputBlock(view, state, width)},
   };
 }
@@ -83,6 +89,13 @@ ScreenModel Render(const WizardView& view, const RenderState& state, int width, 
   screen.PutLine(0, 0, HeaderLine(view, width));
   if (height == 1) return screen;
   const int middle_rows = height - 2;  // between the header and the keys
+  if (state.help) {
+    std::vector<Line> help = HelpBlock(view, width);
+    help.resize(std::min(help.size(), static_cast<size_t>(middle_rows)));
+    for (size_t i = 0; i < help.size(); ++i) screen.PutLine(static_cast<int>(i) + 1, 0, help[i]);
+    screen.PutLine(height - 1, 0, {{"any key", Role::kTitle}, {" close the help", Role::kNormal}});
+    return screen;
+  }
 
   // A record's panel takes the rows the other blocks leave.
   std::vector<Block> others = MiddleBlocks(view, state, width, false, 0);
@@ -97,11 +110,13 @@ ScreenModel Render(const WizardView& view, const RenderState& state, int width, 
   }
   Shrink(blocks, middle_rows);
   const int free_rows = middle_rows - Rows(blocks);
-  const bool scrollable = static_cast<int>(view.lines.size()) > free_rows;
+  // Lines wider than the screen are wrapped, never cut at the right edge.
+  const std::vector<std::string> lines = WrapLines(view.lines, width);
+  const bool scrollable = static_cast<int>(lines.size()) > free_rows;
   // The status sits just above the keys; the text lines take the rows in between.
   const std::vector<Line> status = std::move(blocks.back().lines);
   blocks.pop_back();
-  blocks.push_back(Block{0, LinesArea(view.lines, state.scroll, free_rows)});
+  blocks.push_back(Block{0, LinesArea(lines, state.scroll, free_rows)});
 
   int row = 1;
   for (const Block& b : blocks) {
@@ -109,7 +124,8 @@ ScreenModel Render(const WizardView& view, const RenderState& state, int width, 
   }
   row = height - 1 - static_cast<int>(status.size());
   for (const Line& line : status) screen.PutLine(row++, 0, line);
-  screen.PutLine(height - 1, 0, KeysLine(view, scrollable && !view.lines.empty()));
+  screen.PutLine(height - 1, 0,
+                 KeysLine(view, scrollable && !lines.empty(), !state.edit_text.empty()));
   return screen;
 }
 

@@ -20,6 +20,8 @@ namespace accelcal::ui {
 struct RenderState {
   std::string edit_text;
   int scroll = 0;
+  bool help = false;  // the help overlay (tui/help_overlay.h) in place of the step's blocks
+  bool details = false;  // `d`: the figures behind the capture's message are shown
 };
 
 ScreenModel Render(const WizardView& view, const RenderState& state, int width, int height);

@@ -7,6 +7,7 @@
 
 #include "accelcal/base/duration_text.h"
 #include "tui/gauge.h"
+#include "tui/keys.h"
 #include "tui/prism_drawing.h"
 #include "tui/record_plot.h"
 #include "tui/text_util.h"
@@ -57,6 +58,8 @@ Line StabilityLine(const WizardView& view) {
   const std::string gauge = " " + Bar(s, kBarCells) + " " + FormatNumber(s, 2, 4);
   if (std::isnan(s)) return Labelled("stable", "[ -- ]" + gauge, Role::kDim);
   const bool still = s < 1.0;
+  // Settling after the hand let go is a wait, not a warning.
+  if (!still && view.waiting) return Labelled("stable", "[WAIT]" + gauge, Role::kPrompt);
   return Labelled("stable", (still ? "[ OK ]" : "[WARN]") + gauge,
                   still ? Role::kPass : Role::kWarn);
 }
@@ -99,6 +102,7 @@ std::vector<Line> ReadingBlock(const WizardView& view) {
     rows.push_back(Labelled("tilt", fmt::format("x {} deg  y {} deg",
                                                 FormatNumber(view.tilt_deg.x(), 2, 6),
                                                 FormatNumber(view.tilt_deg.y(), 2, 6))));
+    if (!view.tilt_note.empty()) rows.push_back(Labelled("", Asciify(view.tilt_note), Role::kDim));
   }
   rows.push_back(StabilityLine(view));
   if (!view.stability_text.empty()) {
@@ -209,7 +213,7 @@ std::vector<Line> StatusBlock(const WizardView& view) {
   return {{{Asciify(view.status), Role::kDim}}};
 }
 
-Line KeysLine(const WizardView& view, bool scrollable) {
+Line KeysLine(const WizardView& view, bool scrollable, bool typed) {
   Line line;
   auto add = [&line](const std::string& key, const std::string& action) {
     if (!line.empty()) line.push_back({"  ", Role::kNormal});
@@ -220,15 +224,21 @@ Line KeysLine(const WizardView& view, bool scrollable) {
     add("any key", "leave");
   } else {
     // q works at any moment; it comes first so that a narrow terminal still shows it.
+    const bool text_field = view.input.has_value();
     std::string quit_action = "save and quit";
     for (const KeyHint& hint : view.keys) {
       if (hint.key == "q") quit_action = hint.action;
     }
-    add("q", quit_action);
+    add(KeyName("q", text_field), quit_action);
     for (const KeyHint& hint : view.keys) {
-      if (hint.key != "q") add(hint.key, hint.action);
+      if (hint.key == "q") continue;
+      const std::string key = KeyName(hint.key, text_field);
+      if (key.empty()) continue;  // a letter: it would be typed, not obeyed
+      add(key, key == "Esc" && typed ? "clear" : hint.action);
     }
+    add("?", "help");
   }
+  if (!view.finished && !view.detail.empty()) add("d", "figures");
   if (scrollable) add("PgUp/PgDn", "scroll");
   return line;
 }

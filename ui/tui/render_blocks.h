@@ -23,6 +23,8 @@ std::vector<Line> RecordBlock(const WizardView& view, int width, int rows);
 std::vector<Line> ProblemBlock(const WizardView& view, int width);
 std::vector<Line> InputBlock(const WizardView& view, const RenderState& state, int width);
 std::vector<Line> StatusBlock(const WizardView& view);
-Line KeysLine(const WizardView& view, bool scrollable);
+// The keys that work now, named as the TUI sends them (tui/keys.h KeyName: in a text field the
+// navigation has keys that cannot be typed; Esc clears first when text is `typed`), then the help.
+Line KeysLine(const WizardView& view, bool scrollable, bool typed = false);
 
 }  // namespace accelcal::ui

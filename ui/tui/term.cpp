@@ -89,6 +89,9 @@ int Translate(int key) {
     case KEY_HOME: return kKeyHome;
     case KEY_END: return kKeyEnd;
     case KEY_RESIZE: return kKeyResize;
+    case KEY_F(1): return kKeyF1;
+    case kKeyCtrlN:
+    case kKeyCtrlX: return key;
     default: return (key >= 32 && key < 127) ? key : kKeyNone;
   }
 }

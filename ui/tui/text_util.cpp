@@ -1,5 +1,6 @@
 #include "tui/text_util.h"
 
+#include <algorithm>
 #include <cmath>
 #include <utility>
 
@@ -88,6 +89,32 @@ std::string FormatNumber(double value, int decimals, int width) {
 std::string Clip(std::string_view text, int width) {
   if (width <= 0) return {};
   return std::string(text.substr(0, static_cast<size_t>(width)));
+}
+
+std::vector<std::string> WrapLines(const std::vector<std::string>& lines, int width) {
+  if (width <= 0) return lines;
+  const size_t w = static_cast<size_t>(width);
+  std::vector<std::string> out;
+  for (const std::string& line : lines) {
+    // Deeply indented lines on a narrow screen keep at least half the width for their words.
+    const size_t lead = std::min(std::min(line.find_first_not_of(' '), line.size()), w / 2);
+    std::string rest = line;
+    // Broken at the last blank that fits, the blanks inside each piece kept (table columns stay
+    // aligned within a row); a piece without a blank is cut.
+    while (rest.size() > w) {
+      const size_t from = lead + 3;  // past a continuation's indent: every piece holds a word
+      size_t cut = rest.rfind(' ', w);
+      if (cut == std::string::npos || cut < from) cut = w;
+      std::string piece = rest.substr(0, cut);
+      while (!piece.empty() && piece.back() == ' ') piece.pop_back();
+      out.push_back(piece);
+      const size_t next = std::min(rest.find_first_not_of(' ', cut), rest.size());
+      rest = std::string(lead + 2, ' ') + rest.substr(next);
+      if (rest.size() <= lead + 2) break;
+    }
+    if (rest.size() > lead + 2 || out.empty() || rest == line) out.push_back(rest);
+  }
+  return out;
 }
 
 }  // namespace accelcal::ui

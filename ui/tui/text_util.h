@@ -15,6 +15,11 @@ std::string Asciify(std::string_view text);
 // width is cut). An empty text gives no lines.
 std::vector<std::string> Wrap(std::string_view text, int width);
 
+// The engine's text lines fitted to `width` columns: a longer line is wrapped at blanks, its
+// leading blanks kept and its continuation lines indented two more, so nothing is cut at the
+// right edge (the diagnosis's tables, long sentences). `width` <= 0: the lines as they are.
+std::vector<std::string> WrapLines(const std::vector<std::string>& lines, int width);
+
 // `value` with `decimals` decimals, right-aligned in `width`; NaN is drawn as "--".
 std::string FormatNumber(double value, int decimals, int width);
 

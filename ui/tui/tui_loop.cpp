@@ -27,7 +27,9 @@ int RunTuiLoop(WizardDriver& driver, TuiTerminal& terminal) {
     const int width = terminal.Width();
     const int height = terminal.Height();
     edit.page = std::max(height / 2, 1);
-    ScreenModel screen = Render(view, RenderState{edit.text, edit.scroll}, width, height);
+    edit.width = width;
+    ScreenModel screen =
+        Render(view, RenderState{edit.text, edit.scroll, edit.help, edit.details}, width, height);
     if (NeedsRedraw(drawn, screen)) {
       terminal.Draw(screen);
       drawn = std::move(screen);

@@ -1,5 +1,6 @@
 #include "accelcal/app/analyze_recording.h"
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <vector>
@@ -48,6 +49,23 @@ RecordAnalysis AnalyzeRecordingFile(const std::string& path, const RecordAnalysi
 }  // namespace accelcal
 
 namespace accelcal {
+namespace {
+
+// Damaged last chunks (session_journal.h): the record's samples end before them, and the hole is
+// listed as a gap like those between samples: the readings it would have held at the record's
+// rate (from the last good sample to the damaged part's stated end) are missing. No Allan term
+// spans it (nothing comes after it).
+void AddEndGap(const RecordGap& gap, RecordAnalysis* r) {
+  RecordAnalysisGap g;
+  g.t_before_s = gap.t_start_s;
+  g.t_after_s = gap.t_end_s;
+  if (std::isfinite(r->rate_hz) && r->rate_hz > 0.0)
+    g.missing_samples = std::llround(std::max(0.0, gap.duration_s()) * r->rate_hz);
+  r->gaps.push_back(g);
+  r->missing_samples += g.missing_samples;
+}
+
+}  // namespace
 
 RecordAnalysis AnalyzeJournalRecord(const SessionJournal& journal, const std::string& step_id,
                                     const RecordAnalysisOptions& options,
@@ -57,12 +75,16 @@ RecordAnalysis AnalyzeJournalRecord(const SessionJournal& journal, const std::st
   std::unique_ptr<CalibrationApplier> applier;
   if (calibration) applier = std::make_unique<CalibrationApplier>(*calibration);
   RecordAnalyzer analyzer(options, applier ? "m/s^2" : "counts");
+  std::optional<RecordGap> end_gap;
   journal.VisitRecordChunks(step_id, [&](const RecordChunk& chunk) {
     for (const Sample& s : chunk.samples)
       analyzer.Add(s.t_s, applier ? applier->Apply(s) : s.raw_counts,
                    std::isfinite(s.temp_c) ? s.temp_c : kNaN);
+    if (chunk.gap_after) end_gap = chunk.gap_after;
   });
-  return analyzer.Result();
+  RecordAnalysis result = analyzer.Result();
+  if (end_gap) AddEndGap(*end_gap, &result);
+  return result;
 }
 
 }  // namespace accelcal

@@ -36,7 +36,8 @@ namespace accelcal {
 // The record analysis of the record step `step_id` of a session journal (the wizard streams
 // records there in chunks: session_journal.h), read one chunk at a time; in counts, or in m/s^2
 // with a calibration, as for a file. The gaps of a resumed record show as steps in its t and are
-// handled as in a file. Throws accelcal::Error when the step has no record.
+// handled as in a file, as are the holes of damaged chunks; damaged last chunks are a gap at the
+// record's end (its readings missing). Throws accelcal::Error when the step has no record.
 RecordAnalysis AnalyzeJournalRecord(const SessionJournal& journal, const std::string& step_id,
                                     const RecordAnalysisOptions& options,
                                     const std::optional<Calibration>& calibration = std::nullopt);

@@ -1,6 +1,9 @@
 #include "accelcal/app/calibration_pipeline.h"
 
+#include <cmath>
+
 #include "accelcal/base/error.h"
+#include "accelcal/calibration/calibration_budget.h"
 
 namespace accelcal {
 
@@ -12,6 +15,8 @@ Calibration CalibrationOutcome::MakeCalibration(bool adopt_effects) const {
   Calibration cal = accelcal::MakeCalibration(diagnosis, adopt_effects, gravity, captures, source_name);
   if (cal.diagnosis) cal.diagnosis->ran = diagnosed;
   cal.reading_unit = reading_unit;
+  if (references)
+    cal.budget = MakeCalibrationBudget(diagnosis, adopt_effects, captures, gravity.gravity_mps2, *references);
   return cal;
 }
 
@@ -22,6 +27,11 @@ CalibrationOutcome CalibrateCaptures(CalibrationRequest request) {
   out.source_name = request.source_name;
   out.reading_unit = request.reading_unit;
   out.diagnosed = request.diagnose;
+  if (request.references) {
+    if (std::string e = request.references->Validate(); !e.empty()) throw Error(e);
+    out.references = request.references;
+    if (std::isnan(out.references->gravity_mps2)) out.references->gravity_mps2 = request.gravity.sigma_mps2;
+  }
   out.captures = std::move(request.captures);
   ScreenCaptures(out.captures, request.screening);
   if (request.stability) ScreenStaticStability(out.captures, *request.stability);

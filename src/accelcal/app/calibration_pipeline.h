@@ -41,6 +41,10 @@ struct CalibrationRequest {
   bool check_turntable_runs = true;
   double turntable_centripetal_tolerance = TurntableRunCheckOptions{}.centripetal_tolerance;
   DisagreementOptions disagreement;   // refuse is set to false when !diagnose
+  // The reference quantities' standard uncertainties (type B): when given, the calibration
+  // carries its uncertainty budget (calibration/uncertainty_budget.h). The gravity's is taken
+  // from `gravity` when this leaves it NaN.
+  std::optional<ReferenceUncertainties> references;
 };
 
 struct CalibrationOutcome {
@@ -50,12 +54,14 @@ struct CalibrationOutcome {
   ReadingUnit reading_unit;
   bool diagnosed = false;
   DiagnosisReport diagnosis;          // base fit, adopted effects, final fit, stages
+  std::optional<ReferenceUncertainties> references;  // the request's (gravity's filled in)
 
   // The base fit is usable (there is a calibration).
   bool usable() const { return diagnosis.base.IsUsable(); }
   // The fit that `adopt_effects` chooses: the final one (with the adopted effects) or the base.
   const FitSummary& Fit(bool adopt_effects) const;
-  // The calibration of that fit (usable() must be true).
+  // The calibration of that fit (usable() must be true), with its uncertainty budget when the
+  // request gave the references.
   Calibration MakeCalibration(bool adopt_effects) const;
 };
 

@@ -6,7 +6,9 @@
 //
 // 1. While the final model is not what noise explains, the capture predicted worst is left out
 //    when it is beyond doubt (|z| >= min_abs_z: far beyond noise) and the others, diagnosed
-//    again without it, are explained (consistent with noise, or by effects the diagnosis keeps).
+//    again without it, are explained (consistent with noise, or by effects the diagnosis keeps)
+//    with no effect that the model it was judged against did not have (a capture is left out as
+//    a bad capture, never to make room for a new effect: see NoNewEffect).
 //    It gets the reason in words (what the others predict, by how much it is off, what to check)
 //    and the fit a warning; at most max_left_out captures go this way.
 // 2. A final model whose chi2/dof still exceeds refuse_chi2_per_dof is not a calibration: the

@@ -64,7 +64,7 @@ NoiseRecordSet NoiseRecordsOfDevice(const std::string& sessions_dir, const std::
     for (const std::string& step : store->RecordSteps())
       if (record_steps.count(step) > 0 && samples.empty()) samples = ReadRecord(*store, step).samples;
     if (samples.empty()) {
-      const std::vector<JournalCapture> captures = store->Captures();
+      const std::vector<JournalCapture> captures = CurrentCaptures(store->Captures());
       const auto it = std::find_if(captures.begin(), captures.end(), [&](const JournalCapture& c) {
         return record_steps.count(c.step_id) > 0;
       });

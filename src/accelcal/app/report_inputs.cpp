@@ -12,9 +12,15 @@ ReportInputs ReportInputsFromJournal(const SessionJournal& journal, const std::s
   if (!result) throw Error(fmt::format("session {} has no calibration yet", source_name));
   ReportInputs in;
   in.calibration = CalibrationFromJsonText(*result, source_name);
-  for (JournalCapture& c : journal.Captures()) in.captures.push_back(std::move(c.capture));
+  // Superseded captures (taken again) stay in the session, out of the report.
+  for (JournalCapture& c : CurrentCaptures(journal.Captures())) in.captures.push_back(std::move(c.capture));
   for (const DamagedCapture& d : journal.DamagedCaptures()) in.damaged_captures.push_back(d.Describe());
   FillMetaFromInputs(journal.Inputs(), &in.meta);
+  // (Inputs() returns a copy: hold it while its iterators are used.)
+  const std::map<std::string, std::map<std::string, std::string>> inputs = journal.Inputs();
+  if (const auto welcome = inputs.find("welcome"); welcome != inputs.end())
+    if (const auto answer = welcome->second.find("equipment"); answer != welcome->second.end())
+      in.equipment_answer = answer->second;
   ReadAnalysesFromResultText(*result, source_name, &in);
   return in;
 }

@@ -19,6 +19,7 @@
 #include "accelcal/base/sample_format.h"
 #include "accelcal/base/sensor_model.h"
 #include "accelcal/calibration/fit/fit_summary.h"
+#include "accelcal/calibration/uncertainty_budget.h"
 
 namespace accelcal {
 
@@ -128,6 +129,9 @@ struct Calibration {
   std::vector<CalibrationEffect> effects;  // adopted, in order; empty for the base model
   std::vector<ModelStage> stages;          // base first; empty when not known
   std::vector<CalibrationCapture> captures;
+  // The GUM budget of the nine parameters (type A and the reference quantities' type B,
+  // expanded): absent when nobody asked for one (a file written before it existed).
+  std::optional<UncertaintyBudget> budget;
 
   // The adopted effect called `name`; nullptr when there is none.
   const CalibrationEffect* FindEffect(std::string_view name) const;

@@ -3,6 +3,7 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <utility>
 
 #include <fcntl.h>
 #include <sys/stat.h>
@@ -58,6 +59,44 @@ void WriteFileAtomically(const std::string& path, std::string_view bytes) {
     std::remove(tmp.c_str());
     throw Error(fmt::format("cannot write '{}': {}", path, std::strerror(err)));
   }
+}
+
+AtomicFileWriter::AtomicFileWriter(std::string path) : path_(std::move(path)) {
+  struct stat info {};
+  const bool in_place = ::stat(path_.c_str(), &info) == 0 && !S_ISREG(info.st_mode);
+  if (!in_place) tmp_ = path_ + ".tmp";
+  fd_ = in_place ? ::open(path_.c_str(), O_WRONLY | O_TRUNC | O_CLOEXEC)
+                 : ::open(tmp_.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  if (fd_ < 0) Fail(errno);
+}
+
+AtomicFileWriter::~AtomicFileWriter() {
+  if (fd_ >= 0) ::close(fd_);
+  if (fd_ >= 0 && !tmp_.empty()) std::remove(tmp_.c_str());
+}
+
+void AtomicFileWriter::Write(std::string_view bytes) {
+  size_t done = 0;
+  while (done < bytes.size()) {
+    const ssize_t n = ::write(fd_, bytes.data() + done, bytes.size() - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) Fail(n < 0 ? errno : ENOSPC);
+    done += static_cast<size_t>(n);
+  }
+}
+
+void AtomicFileWriter::Commit() {
+  const int fd = fd_;
+  fd_ = -1;
+  if (::close(fd) != 0 || (!tmp_.empty() && std::rename(tmp_.c_str(), path_.c_str()) != 0)) {
+    const int err = errno;
+    if (!tmp_.empty()) std::remove(tmp_.c_str());
+    throw Error(fmt::format("cannot write '{}': {}", path_, std::strerror(err)));
+  }
+}
+
+void AtomicFileWriter::Fail(int err) {
+  throw Error(fmt::format("cannot write '{}': {}", path_, std::strerror(err)));
 }
 
 }  // namespace accelcal

@@ -8,6 +8,7 @@
 #include "accelcal/io/atomic_write.h"
 #include "accelcal/io/detail/json_forms.h"
 #include "accelcal/io/detail/json_values.h"
+#include "accelcal/io/detail/budget_json.h"
 #include "accelcal/io/detail/read_file.h"
 #include "accelcal/base/version.h"
 
@@ -361,6 +362,8 @@ Calibration CalibrationFromJson(const json& j, const std::string& source) {
   const json& captures = RequiredField(j, "captures", "", source);
   if (!captures.is_array()) FailField(source, "captures", "must be an array");
   for (size_t i = 0; i < captures.size(); ++i) cal.captures.push_back(ReadCapture(captures[i], i, source));
+  if (j.contains("uncertainty_budget") && !j.at("uncertainty_budget").is_null())
+    cal.budget = detail::BudgetFromJson(j.at("uncertainty_budget"), source);
   return cal;
 }
 
@@ -373,7 +376,7 @@ json CalibrationToJson(const Calibration& cal) {
   for (const HeldMark& h : cal.held) held.push_back({{"name", h.name}, {"value", h.value}, {"reason", h.reason}});
   json unit = {{"unit", cal.reading_unit.Name()}, {"description", cal.reading_unit.Describe()}};
   if (!cal.reading_unit.is_counts()) unit["counts_per_unit"] = cal.reading_unit.counts_per_unit;
-  return {{"format", kCalibrationFormat},
+  json out = {{"format", kCalibrationFormat},
           {"tool", std::string("accelcal ") + kAccelcalVersion},
           {"source", cal.source},
           {"gravity_mps2", cal.gravity.gravity_mps2},
@@ -392,6 +395,8 @@ json CalibrationToJson(const Calibration& cal) {
           {"fit", FitJson(cal)},
           {"effects", effects},
           {"captures", captures}};
+  if (cal.budget) out["uncertainty_budget"] = detail::BudgetToJson(*cal.budget);
+  return out;
 }
 
 std::string CalibrationToJsonText(const Calibration& cal) { return detail::JsonText(CalibrationToJson(cal)); }

@@ -81,6 +81,26 @@ ProcedureRequirements ReadRequirements(TomlTableReader& r) {
   return q;
 }
 
+// [equipment]: one sub-table per role ([equipment.ruler], ...), each with its name, id,
+// uncertainty (in the file's unit) and traceability; an unknown role is refused.
+std::vector<EquipmentItem> ReadEquipment(TomlTableReader& r, const std::string& source) {
+  std::vector<EquipmentItem> items;
+  for (const EquipmentRoleInfo& info : EquipmentRoles()) {
+    const toml::table* table = r.Table(info.key);
+    if (table == nullptr) continue;
+    TomlTableReader t(*table, "equipment." + std::string(info.key), source);
+    EquipmentItem item;
+    item.role = info.role;
+    item.name = t.String("name", std::string(info.key));
+    item.identification = t.String("id", std::string());
+    item.standard_uncertainty = t.Number(info.uncertainty_key, kNaN, NumberRange::kNonNegative) * info.to_si;
+    item.traceability = t.String("traceability", std::string());
+    t.Finish();
+    items.push_back(std::move(item));
+  }
+  return items;
+}
+
 SensorAxis ReadAxis(TomlTableReader& r, std::string_view key, SensorAxis fallback) {
   const std::string text = r.String(key, std::string(SensorAxisToString(fallback)));
   const std::optional<SensorAxis> axis = StringToSensorAxis(text);
@@ -216,6 +236,8 @@ Procedure ParseProcedure(std::string_view toml_text, const std::string& source_n
   WithTable(root, "limits", source_name, [&](TomlTableReader& r) { p.limits = ReadLimits(r); });
   WithTable(root, "requirements", source_name,
             [&](TomlTableReader& r) { p.requirements = ReadRequirements(r); });
+  WithTable(root, "equipment", source_name,
+            [&](TomlTableReader& r) { p.equipment = ReadEquipment(r, source_name); });
   ReadSteps(root, defaults, source_name, p);
   root.Finish();
   return p;

@@ -1,14 +1,28 @@
 #include "accelcal/io/recording_reader.h"
 
+#include <algorithm>
+
+#include "accelcal/io/detail/huge_pages.h"
 #include "accelcal/io/recording_stream.h"
 
 namespace accelcal {
+namespace {
+
+constexpr size_t kShortLineBytes = 24;          // "0.01 33096 33336 36437" and its newline
+constexpr size_t kMaxFirstReserve = size_t{1} << 16;  // samples, before the first block is seen
+
+}  // namespace
 
 Recording ReadRecording(const std::string& path, const SampleFormat& format) {
   RecordingStream stream(path, RecordingStream::kDefaultBlockBytes, format);
   Recording out;
-  // One reservation from the file's size and the first block's line length, rather than a
-  // vector doubling its way up (each doubling copies every sample and faults in new pages).
+  // Reserved from the file's size rather than a vector doubling its way up (each doubling
+  // copies every sample and faults in new pages): first for lines of kShortLineBytes (pages
+  // reserved and never written cost no memory), then from the first block's own line length.
+  if (stream.size_hint() > 0) {
+    out.samples.reserve(std::min(stream.size_hint() / kShortLineBytes, kMaxFirstReserve) + 1024);
+    detail::AdviseHugePages(out.samples.data(), out.samples.capacity() * sizeof(Sample));
+  }
   if (!stream.AppendNext(&out.samples)) {
     out.summary = stream.Summary();
     return out;
@@ -18,6 +32,7 @@ Recording ReadRecording(const std::string& path, const SampleFormat& format) {
         static_cast<double>(stream.bytes_read()) / static_cast<double>(out.samples.size());
     const double expected = static_cast<double>(stream.size_hint()) / bytes_per_sample;
     out.samples.reserve(static_cast<size_t>(expected * 1.02) + 1024);
+    detail::AdviseHugePages(out.samples.data(), out.samples.capacity() * sizeof(Sample));
   }
   while (stream.AppendNext(&out.samples)) {
   }

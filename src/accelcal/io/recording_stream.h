@@ -21,7 +21,10 @@ namespace accelcal {
 
 class RecordingStream {
  public:
-  static constexpr size_t kDefaultBlockBytes = size_t{1} << 22;
+  // 256 KiB: the buffer stays in the cache and is faulted in once (a 4 MiB one cost a page
+  // fault per 4 KiB of every file smaller than it, a quarter of `fit --recording`'s time on the
+  // 3.3 MB Xsens file); the system calls per MB are still few.
+  static constexpr size_t kDefaultBlockBytes = size_t{1} << 18;
 
   // Opens `path` ("-" is standard input). Throws accelcal::Error "cannot open 'PATH': <reason>",
   // or for an invalid format. `block_bytes` > 0 is how much is read at a time.

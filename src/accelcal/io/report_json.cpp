@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "accelcal/io/detail/budget_json.h"
 #include "accelcal/io/detail/json_forms.h"
 #include "accelcal/io/detail/json_values.h"
 
@@ -74,7 +75,25 @@ json Checks(const ReportModel& m) {
 // "not recorded" is null in JSON.
 json Text(const std::string& s) { return s.empty() ? json(nullptr) : json(s); }
 
+// The certificate's statements (its results are the budget's and the parameters').
+json CertificateJson(const Certificate& c) {
+  json results = json::array();
+  for (const CertificateResult& r : c.results)
+    results.push_back({{"name", r.name}, {"quantity", r.quantity}, {"forms", r.forms},
+                       {"coverage_factor", Num(r.coverage_factor)}, {"held", r.held}});
+  json equipment = json::array();
+  for (const EquipmentItem& e : c.equipment)
+    equipment.push_back({{"role", std::string(InfoOf(e.role).key)}, {"name", e.name},
+                         {"id", e.identification}, {"standard_uncertainty_si", Num(e.standard_uncertainty)},
+                         {"traceability", e.traceability}});
+  return {{"number", c.number}, {"simulated", c.simulated}, {"method", c.method},
+          {"equipment", equipment}, {"ambient", c.ambient}, {"results", results},
+          {"coverage", c.coverage}, {"not_stated", c.not_stated}, {"traceability", c.traceability},
+          {"decision_rule", c.decision_rule}, {"conformity", c.conformity}};
+}
+
 }  // namespace
+
 
 json ReportToJson(const ReportModel& m) {
   json warnings = json::array();
@@ -115,7 +134,9 @@ json ReportToJson(const ReportModel& m) {
           {"limits", Checks(m)},
           {"session_gaps", m.gaps ? SessionGapsToJson(*m.gaps) : json(nullptr)},
           {"incomplete", m.incomplete},
-          {"verdict", std::string(VerdictToString(m.verdict))}};
+          {"verdict", std::string(VerdictToString(m.verdict))},
+          {"uncertainty_budget", m.budget ? detail::BudgetToJson(*m.budget) : json(nullptr)},
+          {"certificate", CertificateJson(m.certificate)}};
 }
 
 std::string ReportJsonText(const ReportModel& model) { return detail::JsonText(ReportToJson(model)) + "\n"; }

@@ -5,6 +5,8 @@
 
 #include <fmt/core.h>
 
+#include "accelcal/calibration/diagnosis/effect.h"
+#include "accelcal/report/certificate_html.h"
 #include "accelcal/report/svg_plot.h"
 
 namespace accelcal {
@@ -101,6 +103,7 @@ std::string Header(const ReportModel& m) {
   out += fmt::format("<div class=\"verdict {}\">{}<small>against the procedure&rsquo;s limits</small></div></header>\n",
                      cls, E(std::string(VerdictToString(m.verdict))));
   out += "<table class=\"ident\">\n";
+  out += Row("Certificate No.", "<span class=\"certno\">" + E(m.certificate.number) + "</span>");
   out += Row("Device (serial)", OrNot(m.meta.device));
   out += Row("Operator", OrNot(m.meta.operator_name));
   out += Row("Date (UTC)", OrNot(m.meta.date_utc));
@@ -156,7 +159,7 @@ std::string Parameters(const ReportModel& m) {
                     "<th>Unit</th></tr>\n";
   for (const ReportParameter& p : m.parameters)
     out += fmt::format("<tr><td>{}</td><td class=\"n\">{}</td><td class=\"n\">{}</td><td>{}</td></tr>\n", E(p.name),
-                       Num(p.value, "{:.6f}"), p.held ? "held" : Num(p.sigma, "{:.3g}"), Unit(p.unit));
+                       Num(p.value, "{:.6f}"), p.held ? "held" : Num(p.sigma, "{:.3g}"), Unit(std::string(UnitAfterValue(p.unit))));
   out += "</table>\n";
   for (const std::string& note : m.parameter_notes) out += "<p class=\"note\">" + E(note) + "</p>\n";
   return out + "</section>\n";
@@ -220,12 +223,16 @@ std::string MagnitudePlot(const ReportModel& m) {
     ideal.x = {lo, hi};
     ideal.y = {lo, hi};
   }
+  // Nine poses at g, three runs per radius: without this they draw as four dots.
+  const double width = std::max(hi - lo, 1.0) * 0.025;
+  for (SvgSeries* s : {&stat, &turn}) SpreadCoincident(&s->x, width);
   plot.Add(ideal);
   if (!stat.x.empty()) plot.Add(stat);
   if (!turn.x.empty()) plot.Add(turn);
   return "<figure>" + plot.Render() +
          "<figcaption>Each used capture&rsquo;s calibrated magnitude against the specific force it should "
-         "show (g at rest; &radic;(g&sup2; + (&omega;&sup2;r)&sup2;) on the turntable).</figcaption></figure>\n";
+         "show (g at rest; &radic;(g&sup2; + (&omega;&sup2;r)&sup2;) on the turntable). Captures with the same "
+         "reference are spread sideways (by about 2.5 % of the axis each) so every one shows.</figcaption></figure>\n";
 }
 
 std::string Residuals(const ReportModel& m) {
@@ -271,7 +278,7 @@ std::string Diagnosis(const ReportModel& m) {
   for (const ReportEffect& e : m.effects) {
     out += "<p><b>" + E(e.name) + "</b>";
     for (const ReportParameter& p : e.parameters)
-      out += fmt::format(" &middot; {} = {} &plusmn; {} {}", E(p.name), Num(p.value), Num(p.sigma, "{:.3g}"), Unit(p.unit));
+      out += fmt::format(" &middot; {} = {} &plusmn; {} {}", E(p.name), Num(p.value), Num(p.sigma, "{:.3g}"), Unit(std::string(UnitAfterValue(p.unit))));
     if (!e.evidence.empty()) out += "<br><span class=\"note\">" + E(e.evidence) + "</span>";
     out += "</p>\n";
   }
@@ -394,14 +401,18 @@ std::string RenderReportHtml(const ReportModel& m) {
   if (!m.meta.device.empty()) title += " " + m.meta.device;
   std::string out = "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n";
   out += "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n";
-  out += "<title>" + E(title) + "</title>\n<style>" + std::string(kCss) + "</style>\n</head>\n<body>\n<div class=\"page\">\n";
+  out += "<title>" + E(title) + "</title>\n<style>" + std::string(kCss) + CertificateCss(m) + "</style>\n</head>\n<body>\n<div class=\"page\">\n";
+  out += SimulatedMarkHtml(m);
   out += Header(m);
+  out += CertificateResultsHtml(m);
   out += Limits(m);
   out += Parameters(m);
   out += Residuals(m);
   out += Diagnosis(m);
   out += Captures(m);
   out += NoiseAndDrift(m);
+  out += UncertaintyBudgetHtml(m);
+  out += CertificateStatementsHtml(m);
   out += "<div class=\"sign\"><div>Calibrated by (name, signature, date)</div>"
          "<div>Checked by (name, signature, date)</div></div>\n";
   out += "<footer>Report made by " + E(m.tool) + " from " + OrNot(m.fit_source) +

@@ -233,6 +233,8 @@ ReportModel BuildReportModel(const ReportInputs& in) {
   m.incomplete = in.damaged_captures;
   for (std::string& why : IncompleteReasons(in.gaps, cal)) m.incomplete.push_back(std::move(why));
   if (all_pass && !m.incomplete.empty()) m.verdict = Verdict::kIncomplete;
+  m.budget = cal.budget;
+  m.certificate = MakeCertificate(in, m);
   return m;
 }
 

@@ -21,6 +21,7 @@
 
 #include "accelcal/base/capture.h"
 #include "accelcal/calibration/calibration.h"
+#include "accelcal/report/certificate.h"
 #include "accelcal/session/procedure.h"
 #include "accelcal/session/session_journal.h"
 
@@ -176,6 +177,8 @@ struct ReportModel {
   // ambiguity), in words; empty when nothing is missing.
   std::vector<std::string> incomplete;
   Verdict verdict = Verdict::kNoLimits;
+  std::optional<UncertaintyBudget> budget;  // the calibration's
+  Certificate certificate;
 };
 
 struct ReportInputs {
@@ -190,6 +193,15 @@ struct ReportInputs {
   // The session's captures found damaged in its file (DamagedCapture::Describe), left out of
   // `captures`: the report cannot show them, so its verdict is INCOMPLETE.
   std::vector<std::string> damaged_captures;
+  // The bench's equipment (the procedure's, as edited at the welcome): the certificate's list
+  // and traceability; empty when not known.
+  std::vector<EquipmentItem> equipment;
+  // The procedure's nominal zero-g level, counts: the certificate states the offset from it in
+  // m/s^2 and mg (from 0 counts when absent).
+  std::optional<Eigen::Vector3d> nominal_bias_counts;
+  // A wizard session's welcome answer to the equipment question, as typed (empty: none); the
+  // caller that knows the procedure applies it to `equipment` (app/wizard/equipment_input.h).
+  std::string equipment_answer;
 };
 
 // Gathers everything; derives nothing the calibration already states.

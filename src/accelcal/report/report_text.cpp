@@ -5,6 +5,8 @@
 #include <fmt/core.h>
 
 #include "accelcal/base/safe_text.h"
+#include "accelcal/calibration/diagnosis/effect.h"
+#include "accelcal/report/certificate_text.h"
 namespace accelcal {
 namespace {
 
@@ -68,11 +70,19 @@ std::string Heading(int number, const std::string& title) {
   return "\n" + t + "\n" + std::string(t.size(), '-') + "\n";
 }
 
+std::string LetterHeading(char letter, const std::string& title) {
+  const std::string t = fmt::format("{}. {}", letter, title);
+  return "\n" + t + "\n" + std::string(t.size(), '-') + "\n";
+}
+
 std::string Header(const ReportModel& m) {
   std::string out = std::string(kWidth, '=') + "\n";
   const std::string title = "ACCELEROMETER CALIBRATION REPORT";
   out += std::string((kWidth - title.size()) / 2, ' ') + title + "\n";
   out += std::string(kWidth, '=') + "\n";
+  if (m.certificate.simulated)
+    out += "  *** SIMULATED on the virtual bench: not a calibration of a real device ***\n";
+  out += Field("Certificate No.", m.certificate.number);
   out += Field("Device (serial)", OrNot(m.meta.device));
   out += Field("Operator", OrNot(m.meta.operator_name));
   out += Field("Date (UTC)", OrNot(m.meta.date_utc));
@@ -108,7 +118,7 @@ std::string ParameterTable(const std::vector<ReportParameter>& params) {
   std::string out = "  Parameter            Value       1-sigma  Unit\n";
   for (const ReportParameter& p : params)
     out += fmt::format("  {:<12} {:>14} {:>13}  {}\n", Clean(p.name), Num(p.value, "{:.6f}"),
-                       p.held ? "held" : Num(p.sigma, "{:.3g}"), Clean(p.unit));
+                       p.held ? "held" : Num(p.sigma, "{:.3g}"), Clean(std::string(UnitAfterValue(p.unit))));
   return out;
 }
 
@@ -160,7 +170,7 @@ std::string Diagnosis(const ReportModel& m) {
                        Num(e.chi2_per_dof_after, "{:.3f}"));
     for (const ReportParameter& p : e.parameters)
       out += fmt::format("    {:<22} {:>14} +- {:<11} {}\n", Clean(p.name), Num(p.value, "{:.6g}"),
-                         Num(p.sigma, "{:.3g}"), Clean(p.unit));
+                         Num(p.sigma, "{:.3g}"), Clean(std::string(UnitAfterValue(p.unit))));
     if (!e.evidence.empty()) out += Wrap("    Evidence: ", Clean(e.evidence), 6);
   }
   return out;
@@ -230,6 +240,12 @@ std::string Completeness(const ReportModel& m) {
 
 std::string RenderReportText(const ReportModel& m) {
   std::string out = Header(m);
+  out += LetterHeading('A', "Results (expanded uncertainty)");
+  out += CertificateResultsText(m, Wrap);
+  out += LetterHeading('B', "Uncertainty budget (GUM)");
+  out += UncertaintyBudgetText(m, Wrap);
+  out += LetterHeading('C', "Method, equipment, traceability, conformity");
+  out += CertificateStatementsText(m, Wrap);
   out += Heading(1, "Captures");
   out += CaptureTable(m);
   out += Heading(2, "Parameters (1-sigma uncertainties)");

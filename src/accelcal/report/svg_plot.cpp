@@ -268,4 +268,26 @@ std::string SvgPlot::Render() const {
   return out + "</svg>\n";
 }
 
+int SpreadCoincident(std::vector<double>* x, double width) {
+  std::vector<size_t> order(x->size());
+  for (size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::sort(order.begin(), order.end(), [&](size_t a, size_t b) { return (*x)[a] < (*x)[b]; });
+  int moved = 0;
+  for (size_t begin = 0; begin < order.size();) {
+    size_t end = begin + 1;
+    while (end < order.size() && (*x)[order[end]] - (*x)[order[end - 1]] < width) ++end;
+    const size_t n = end - begin;
+    if (n > 1) {
+      double mean = 0.0;
+      for (size_t k = begin; k < end; ++k) mean += (*x)[order[k]];
+      mean /= static_cast<double>(n);
+      for (size_t k = begin; k < end; ++k)
+        (*x)[order[k]] = mean + (static_cast<double>(k - begin) - 0.5 * static_cast<double>(n - 1)) * width;
+      moved += static_cast<int>(n);
+    }
+    begin = end;
+  }
+  return moved;
+}
+
 }  // namespace accelcal

@@ -66,6 +66,11 @@ class SvgPlot {
 // Tick values for [lo, hi]: a 1-2-5 step giving about `target` ticks (linear), or the powers
 // of ten inside the range (log; at least the two around it). Exposed for tests.
 std::vector<double> LinearTicks(double lo, double hi, int target);
+
+// Points that would draw on top of each other, spread sideways so each shows: the x of the
+// points within `width` of each other (in x's unit, after sorting) are set apart by `width`,
+// centred on their mean. Returns how many points were moved. y is untouched.
+int SpreadCoincident(std::vector<double>* x, double width);
 std::vector<double> LogTicks(double lo, double hi);
 // A tick label: "0.05", "1e-03" style for small/large magnitudes, "-2", "120".
 std::string TickLabel(double v);

@@ -1,3 +1,5 @@
+#include <algorithm>
+
 #include <fmt/core.h>
 
 #include "accelcal/base/error.h"
@@ -16,7 +18,19 @@ class MemoryJournal final : public SessionJournal {
     for (const JournalCapture& c : captures_)
       if (c.step_id == step_id)
         throw Error(fmt::format("step '{}' already has an accepted capture", step_id));
-    captures_.push_back({step_id, capture});
+    captures_.push_back({step_id, capture, ""});
+  }
+  void RecordRedoCapture(const std::string& step_id, const Capture& capture,
+                         const std::string& superseded_step_id) override {
+    auto old = std::find_if(captures_.begin(), captures_.end(),
+                            [&](const JournalCapture& c) { return c.step_id == superseded_step_id; });
+    if (old == captures_.end())
+      throw Error(fmt::format("step '{}' has no capture to supersede", superseded_step_id));
+    if (old->superseded())
+      throw Error(fmt::format("the capture of step '{}' is already superseded", superseded_step_id));
+    const size_t old_index = static_cast<size_t>(old - captures_.begin());
+    RecordCapture(step_id, capture);  // throws before anything changed
+    captures_[old_index].superseded_by = step_id;
   }
   void RecordStepDone(const std::string& step_id, const std::string& outcome) override {
     done_[step_id] = outcome;

@@ -15,6 +15,7 @@
 #include "accelcal/base/capture.h"
 #include "accelcal/base/capture_set.h"
 #include "accelcal/base/sensor_model.h"
+#include "accelcal/session/equipment.h"
 
 namespace accelcal {
 
@@ -106,6 +107,9 @@ struct Procedure {
   double noise_floor_max_ratio = 2.0;
   ProcedureRequirements requirements;  // [requirements]; nothing required when absent
   ProcedureLimits limits;             // [limits]; all absent when the table is
+  // [equipment]: the bench's items with their identification, uncertainty and traceability
+  // (the uncertainty budget's type B inputs); empty when the table is absent.
+  std::vector<EquipmentItem> equipment;
   std::vector<ProcedureStep> steps;
 
   // The poses of the static steps other than the six faces (to name a wrong pose).

@@ -56,6 +56,7 @@ JournalRecord ReadRecord(const SessionJournal& journal, const std::string& step_
   journal.VisitRecordChunks(step_id, [&](const RecordChunk& chunk) {
     if (chunk.gap_before) out.gaps.push_back(*chunk.gap_before);
     out.samples.insert(out.samples.end(), chunk.samples.begin(), chunk.samples.end());
+    if (chunk.gap_after) out.gaps.push_back(*chunk.gap_after);
   });
   return out;
 }
@@ -70,6 +71,11 @@ std::string DescribeRecords(const SessionJournal& journal) {
                        FormatLongDuration(r.gaps_s));
   }
   return out;
+}
+
+std::vector<JournalCapture> CurrentCaptures(std::vector<JournalCapture> all) {
+  std::erase_if(all, [](const JournalCapture& c) { return c.superseded(); });
+  return all;
 }
 
 }  // namespace accelcal

@@ -28,7 +28,16 @@ namespace accelcal {
 struct JournalCapture {
   std::string step_id;
   Capture capture;  // with its raw samples
+  // The journal step id of the capture that replaced this one when its step was taken again (a
+  // redo: RecordRedoCapture); empty while it is current. A superseded capture stays in the
+  // session but is out of the fit, the report and the exports (CurrentCaptures).
+  std::string superseded_by;
+
+  bool superseded() const { return !superseded_by.empty(); }
 };
+
+// The captures of `all` that are not superseded, in the same order.
+std::vector<JournalCapture> CurrentCaptures(std::vector<JournalCapture> all);
 
 // A stored capture that fails its check on read (its checksum does not match what it holds, or
 // its samples do not decode): the file was damaged after it was written. It is left out of
@@ -61,6 +70,9 @@ struct RecordChunk {
   // record measures its gap from it).
   double wall_end_s = 0.0;
   std::optional<RecordGap> gap_before;  // the hole just before this chunk (after a resume)
+  // Only on the last chunk read back: the hole after it when the record's last chunks are
+  // damaged (there is no chunk after them to carry it as gap_before).
+  std::optional<RecordGap> gap_after;
 };
 
 // What a record holds so far, without its samples (cheap: for resuming and listings).
@@ -89,6 +101,12 @@ class SessionJournal {
   // An accepted capture for `step_id`. A step has at most one accepted capture: recording a
   // second for the same step throws accelcal::Error (no duplicates after a resume).
   virtual void RecordCapture(const std::string& step_id, const Capture& capture) = 0;
+  // A redo: `capture` recorded for `step_id` and the capture recorded under
+  // `superseded_step_id` marked superseded by it, in one transaction (a kill between the two
+  // cannot leave both current). Throws accelcal::Error as RecordCapture does, and when
+  // `superseded_step_id` has no capture or one already superseded (nothing is recorded then).
+  virtual void RecordRedoCapture(const std::string& step_id, const Capture& capture,
+                                 const std::string& superseded_step_id) = 0;
   // A step finished without a capture (leveling done, skipped, ...), with its outcome.
   virtual void RecordStepDone(const std::string& step_id, const std::string& outcome) = 0;
   // The session's result (the calibration file's JSON). A later one replaces it.
@@ -116,7 +134,8 @@ class SessionJournal {
   // Calls `visit` with each chunk of the record of `step_id`, in order (one chunk in memory at
   // a time: a 12-hour record at 100 Hz is 170 MB of samples). A chunk that fails its check on
   // read is left out: the next chunk carries the hole as its gap_before, whose reason names the
-  // damage (so every reader of a record sees it as a gap, never as data).
+  // damage (so every reader of a record sees it as a gap, never as data); damaged last chunks
+  // are the last good chunk's gap_after.
   virtual void VisitRecordChunks(const std::string& step_id,
                                  const std::function<void(const RecordChunk&)>& visit) const = 0;
   // The steps that have record chunks, in the order their first chunk was recorded.

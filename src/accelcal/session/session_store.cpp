@@ -135,6 +135,18 @@ void SessionStore::RecordCapture(const std::string& step_id, const Capture& capt
   db_->Exec("PRAGMA wal_checkpoint(PASSIVE)");
 }
 
+void SessionStore::RecordRedoCapture(const std::string& step_id, const Capture& capture,
+                                     const std::string& superseded_step_id) {
+  RequireWritable();
+  const std::string now = UtcNowIso8601();
+  SqliteTransaction transaction(*db_);
+  detail::MarkCaptureRowSuperseded(*db_, superseded_step_id, step_id);
+  detail::InsertCaptureRow(*db_, step_id, capture, now);
+  TouchSession(*db_, now);
+  transaction.Commit();
+  db_->Exec("PRAGMA wal_checkpoint(PASSIVE)");  // as RecordCapture
+}
+
 void SessionStore::RecordStepDone(const std::string& step_id, const std::string& outcome) {
   RequireWritable();
   const std::string now = UtcNowIso8601();

@@ -82,6 +82,8 @@ class SessionStore final : public SessionJournal {
   void RecordInput(const std::string& step_id, const std::string& key,
                    const std::string& value) override;
   void RecordCapture(const std::string& step_id, const Capture& capture) override;
+  void RecordRedoCapture(const std::string& step_id, const Capture& capture,
+                         const std::string& superseded_step_id) override;
   void RecordStepDone(const std::string& step_id, const std::string& outcome) override;
   void RecordResult(const std::string& calibration_json) override;
   void AppendRecordChunk(const std::string& step_id, const RecordChunk& chunk) override;

@@ -72,6 +72,7 @@ void CaptureEngine::Restart() {
   capture_monitor_.Reset();
   turntable_window_.clear();
   live_ = StabilityVerdict{};
+  retry_verdict_ = StabilityVerdict{};
   turntable_verdict_ = TurntableVerdict{};
   capture_ = Capture{};
   stats_ = CaptureStats{};
@@ -109,6 +110,7 @@ void CaptureEngine::Feed(const Sample& s) {
   t_last_s_ = s.t_s;
   if (request_.kind == CaptureKind::kStatic) {
     settle_.Add(s);
+    FollowSpike(s);
   } else {
     turntable_window_.push_back(s);
   }
@@ -204,7 +206,29 @@ void CaptureEngine::CheckSettledTurntable(double t_s) {
 void CaptureEngine::CheckCapturing() {
   if (request_.kind != CaptureKind::kStatic) return;  // judged on the whole run at the end
   live_ = capture_monitor_.Verdict();
-  if (live_.judged && !live_.stable) Retry(live_.reason);
+  if (live_.judged && !live_.stable) RetryUnstable();
+}
+
+void CaptureEngine::RetryUnstable() {
+  Retry(live_.reason);
+  retry_verdict_ = live_;
+}
+
+// The capture failed at the first check after a bump began, often on its rising edge; the
+// bump goes on in the samples that follow. Its event is carried on from the failed capture's
+// verdict (its monitor was reset), so that the reason names the bump's largest excursion from
+// the level before it, not the reading the check happened to fall on. Only the words change:
+// the capture was already given up.
+void CaptureEngine::FollowSpike(const Sample& s) {
+  if (state_ != CaptureState::kRetrying || !retry_verdict_.largest_spike) return;
+  SpikeEvent& e = *retry_verdict_.largest_spike;
+  // The settle window judged the reading as the capture would have: no spike there ends the
+  // bump (a sensor set down on another face is a new level, not a bump that goes on).
+  if (!settle_.last_reading_spiked()) {
+    e.open = false;
+    return;
+  }
+  if (ContinueSpikeEvent(&e, s, options_.stability.spike_sigmas)) reason_ = retry_verdict_.JudgedReason();
 }
 
 void CaptureEngine::BeginCapture() {
@@ -220,6 +244,7 @@ void CaptureEngine::BeginCapture() {
   }
   stats_ = CaptureStats{};
   capture_monitor_.Reset();
+  retry_verdict_ = StabilityVerdict{};
 }
 
 bool CaptureEngine::CaptureComplete() const {
@@ -244,7 +269,7 @@ void CaptureEngine::FinishCapture() {
 void CaptureEngine::FinishStatic() {
   live_ = capture_monitor_.Verdict();
   if (!live_.stable) {
-    Retry(live_.reason);
+    RetryUnstable();
     return;
   }
   if (RejectedForPose(stats_.mean_counts)) return;

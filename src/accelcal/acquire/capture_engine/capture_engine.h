@@ -15,7 +15,8 @@
 //   kCapturing  collecting duration_s of samples; the stability check runs on the growing
 //               capture every check_interval_s, so a bump restarts at once.
 //   kRetrying   a check failed (reason in words); like kSettling, and capturing restarts by
-//               itself when the sensor is still again. The failed samples are dropped.
+//               itself when the sensor is still again. The failed samples are dropped. A
+//               spike's reason follows the bump to its largest excursion (static_stability.h).
 //   kAccepted   the capture passed screening (capture_screening.h: NaN, clipping, out of
 //               range), stability and orientation (static) or the turntable checks, whose
 //               once-per-revolution swing is then removed from the samples (the statistics
@@ -120,6 +121,9 @@ class CaptureEngine {
   bool RejectedForPose(const Eigen::Vector3d& mean_counts);
   void FinishTurntable();
   void Retry(std::string reason);
+  // Static: retries for the failed stability verdict live_, whose spike FollowSpike follows on.
+  void RetryUnstable();
+  void FollowSpike(const Sample& s);
   void Reject(std::string reason);
   bool CaptureComplete() const;
   void TrimTurntableWindow(double t_s);
@@ -140,6 +144,7 @@ class CaptureEngine {
   StaticStabilityMonitor capture_monitor_;  // static: the capture so far
   std::vector<Sample> turntable_window_;    // turntable: the settle window's samples
   StabilityVerdict live_;
+  StabilityVerdict retry_verdict_;  // static, kRetrying: the verdict that failed the capture
   TurntableVerdict turntable_verdict_;
 
   Capture capture_;

@@ -37,12 +37,29 @@ std::string DriftingReason(const StabilityVerdict& v) {
                      kAxisNames[a], v.trend_counts[a], v.trend_limit_counts[a]);
 }
 
-std::string SpikeReason(const SpikeEvent& e) {
+}  // namespace
+
+std::string DescribeSpike(const SpikeEvent& e) {
   return fmt::format("spike: {} jumped {:.3g} counts ({:.1f} sigma) at t = {:.2f} s",
                      kAxisNames[e.axis], e.jump_counts, e.sigmas, e.t_s);
 }
 
-}  // namespace
+bool ContinueSpikeEvent(SpikeEvent* e, const Sample& s, double limit_sigmas) {
+  if (!e->open) return false;
+  const double jump_counts = s.raw_counts[e->axis] - e->level_counts;
+  const double sigmas = std::abs(jump_counts) / e->sigma_counts;
+  if (!IsFinite(s) || !(sigmas > limit_sigmas)) {
+    e->open = false;
+    return false;
+  }
+  e->t_last_s = s.t_s;
+  if (sigmas > e->sigmas) {
+    e->t_s = s.t_s;
+    e->jump_counts = jump_counts;
+    e->sigmas = sigmas;
+  }
+  return true;
+}
 
 std::string StaticStabilityOptions::Validate() const {
   if (!(std::isfinite(std_multiplier) && std_multiplier > 1.0))
@@ -82,6 +99,7 @@ StaticStabilityMonitor::StaticStabilityMonitor(const StaticStabilityOptions& opt
       window_s_(window_s) {}
 
 void StaticStabilityMonitor::Reset() {
+  last_reading_spiked_ = false;
   sums_ = detail::WindowSums{};
   ring_.clear();
   spikes_.clear();
@@ -106,15 +124,32 @@ void StaticStabilityMonitor::Add(const Sample& s) {
 }
 
 void StaticStabilityMonitor::CheckSpike(const Sample& s) {
+  last_reading_spiked_ = false;
   if (sums_.n() < options_.min_spike_reference_samples) return;
   const Eigen::Vector3d jump = s.raw_counts - sums_.Mean();
   // The mean of n readings is itself uncertain by sigma / sqrt(n).
   const double inflate = std::sqrt(1.0 + 1.0 / static_cast<double>(sums_.n()));
   const Eigen::Vector3d sigmas = jump.cwiseAbs().cwiseQuotient(sigma_counts_ * inflate);
   const int axis = WorstAxis(sigmas);
-  if (!(sigmas[axis] > options_.spike_sigmas)) return;
+  if (!(sigmas[axis] > options_.spike_sigmas)) {
+    if (!spikes_.empty()) spikes_.back().open = false;
+    return;
+  }
+  // Which readings are spikes is decided as it always was (against the mean before each); a
+  // spike right after one of the same bump (still beyond the limit from the level before the
+  // bump) joins its event, which then names the bump's largest excursion from that level. So
+  // the verdicts are those of one event per reading; only the naming changes.
+  last_reading_spiked_ = true;
+  if (!spikes_.empty() && ContinueSpikeEvent(&spikes_.back(), s, options_.spike_sigmas)) return;
   if (spikes_.size() == kMaxSpikeEvents) spikes_.pop_front();
-  spikes_.push_back({axis, s.t_s, jump[axis], sigmas[axis]});
+  SpikeEvent e;
+  e.axis = axis;
+  e.t_s = e.t_first_s = e.t_last_s = s.t_s;
+  e.jump_counts = jump[axis];
+  e.sigmas = sigmas[axis];
+  e.level_counts = sums_.Mean()[axis];
+  e.sigma_counts = sigma_counts_[axis] * inflate;
+  spikes_.push_back(e);
 }
 
 // Takes out of a sliding window the samples (and spikes) older than window_s.
@@ -125,7 +160,8 @@ void StaticStabilityMonitor::DropOld(double t_now_s) {
     ring_.pop_front();
     ++removals_since_resync_;
   }
-  while (!spikes_.empty() && spikes_.front().t_s < t_start_s) spikes_.pop_front();
+  // An event leaves with its last reading (as each of its readings would on its own).
+  while (!spikes_.empty() && spikes_.front().t_last_s < t_start_s) spikes_.pop_front();
   if (removals_since_resync_ >= kResyncRemovals) Resync();
 }
 
@@ -169,13 +205,17 @@ StabilityVerdict StaticStabilityMonitor::Verdict() const {
   for (const SpikeEvent& e : spikes_) {
     if (!v.largest_spike || e.sigmas > v.largest_spike->sigmas) v.largest_spike = e;
   }
-  std::vector<std::string> failures;
-  if ((v.StdRatio().array() > 1.0).any()) failures.push_back(MovingReason(v));
-  if ((v.TrendRatio().array() > 1.0).any()) failures.push_back(DriftingReason(v));
-  if (v.largest_spike) failures.push_back(SpikeReason(*v.largest_spike));
-  v.stable = failures.empty();
-  v.reason = fmt::format("{}", fmt::join(failures, "; "));
+  v.reason = v.JudgedReason();
+  v.stable = v.reason.empty();
   return v;
+}
+
+std::string StabilityVerdict::JudgedReason() const {
+  std::vector<std::string> failures;
+  if ((StdRatio().array() > 1.0).any()) failures.push_back(MovingReason(*this));
+  if ((TrendRatio().array() > 1.0).any()) failures.push_back(DriftingReason(*this));
+  if (largest_spike) failures.push_back(DescribeSpike(*largest_spike));
+  return fmt::format("{}", fmt::join(failures, "; "));
 }
 
 StabilityVerdict EvaluateStaticStability(const std::vector<Sample>& samples,

@@ -10,7 +10,8 @@
 //   2. drifting: the trend over the window, |least-squares slope of x against t| x the window's
 //                span, <= trend_multiplier x sigma_i (slow drift: warming up, a sagging mount);
 //   3. spike:    no sample further than spike_sigmas x sigma_i from the mean of the samples
-//                before it in the window (a bump, a door slammed).
+//                before it in the window (a bump, a door slammed); the readings of one bump
+//                are one event, named by its largest excursion (SpikeEvent).
 // Checks 1 and 2 need at least `min_samples` samples in the window (below that a window's std
 // is too uncertain: 50 samples estimate a std within ~10 %); check 3 needs
 // `min_spike_reference_samples` before the sample judged.
@@ -58,13 +59,33 @@ struct StaticStabilityOptions {
   std::string Validate() const;
 };
 
-// A reading that jumped away from the mean of the window before it.
+// A spike event: readings that jumped away from the level before them (a bump, a door slammed).
+// It begins at the first reading further than the spike limit from the mean of the window
+// before it; that mean is the event's level, and every following reading that is a spike too
+// and still beyond the limit from that level on the same axis belongs to the event (a bump rises
+// over several readings: its first reading is only the rising edge). The event names its
+// largest excursion from the level: its time and size. The first reading that is no spike ends
+// it (a sensor moved to another level is not a bump that goes on).
 struct SpikeEvent {
   int axis = 0;              // 0, 1, 2 = x, y, z
-  double t_s = kNaN;         // time of the reading, s
-  double jump_counts = kNaN; // reading minus the mean before it, counts (signed)
-  double sigmas = kNaN;      // |jump| / sigma of the axis
+  double t_s = kNaN;         // time of the largest excursion, s
+  double jump_counts = kNaN; // that reading minus the level, counts (signed)
+  double sigmas = kNaN;      // |jump| / sigma_counts
+  double level_counts = kNaN;  // the mean before the event on `axis`, counts
+  double sigma_counts = kNaN;  // the sigma the excursions are measured in (the level's own
+                               // uncertainty included), counts
+  double t_first_s = kNaN;   // first reading of the event, s
+  double t_last_s = kNaN;    // last reading of the event so far, s
+  bool open = true;          // the last reading judged belonged to it (it may go on)
 };
+
+// Continues `event` with the next reading `s`: when `s` is still further than limit_sigmas x
+// event->sigma_counts from the level on the event's axis, it belongs to the event (which keeps
+// its largest excursion) and true is returned; else the event is closed (false). A closed event
+// stays closed.
+bool ContinueSpikeEvent(SpikeEvent* event, const Sample& s, double limit_sigmas);
+// "spike: x jumped 138 counts (92.0 sigma) at t = 4.07 s"
+std::string DescribeSpike(const SpikeEvent& e);
 
 // The verdict on one window, with the numbers a UI needs for a "how still" gauge.
 struct StabilityVerdict {
@@ -86,6 +107,10 @@ struct StabilityVerdict {
   Eigen::Vector3d trend_limit_counts = Eigen::Vector3d::Constant(kNaN);
   std::optional<SpikeEvent> largest_spike;  // the largest spike in the window, if any
   double spike_limit_sigmas = kNaN;
+
+  // The reason from the numbers above (what Verdict() puts in `reason` when judged): a caller
+  // that follows largest_spike on (ContinueSpikeEvent) words it again with this.
+  std::string JudgedReason() const;
 
   // Gauge: std / limit per axis (0 = dead still, 1 = at the limit, > 1 fails); NaN unjudged.
   Eigen::Vector3d StdRatio() const;
@@ -118,6 +143,8 @@ class StaticStabilityMonitor {
   // True when samples cover a whole window_s since the last Reset (always for kGrowing).
   bool full() const;
   Eigen::Vector3d mean_counts() const { return sums_.Mean(); }
+  // The last reading added was a spike (beyond the limit from the mean before it).
+  bool last_reading_spiked() const { return last_reading_spiked_; }
 
  private:
   void CheckSpike(const Sample& s);
@@ -130,8 +157,9 @@ class StaticStabilityMonitor {
   double window_s_;
   detail::WindowSums sums_;
   std::deque<Sample> ring_;  // sliding window only: its samples, oldest first
-  std::deque<SpikeEvent> spikes_;
+  std::deque<SpikeEvent> spikes_;  // the last one may be open (a bump still going on)
   long removals_since_resync_ = 0;
+  bool last_reading_spiked_ = false;
   double t_reset_s_ = kNaN;  // first sample since Reset
   double t_first_s_ = kNaN;  // growing window: first sample
   double t_last_s_ = kNaN;

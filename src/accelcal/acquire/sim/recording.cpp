@@ -1,5 +1,6 @@
 // VirtualBench::SimulateRecording: the static poses of the plan as one continuous record, the
 // way a person turns the sensor by hand from pose to pose.
+#include <algorithm>
 #include <cmath>
 
 #include "accelcal/base/error.h"
@@ -50,6 +51,15 @@ Eigen::Vector3d Jitter(const Segment& seg, double t_s) {
 }  // namespace
 
 std::vector<Sample> VirtualBench::SimulateRecording() {
+  std::vector<Sample> all;
+  SimulateRecording([&all](const std::vector<Sample>& chunk) {
+    all.insert(all.end(), chunk.begin(), chunk.end());
+  });
+  return all;
+}
+
+void VirtualBench::SimulateRecording(const RecordingSink& sink, std::size_t chunk_samples) {
+  if (chunk_samples == 0) throw Error("SimulateRecording: chunk_samples must be > 0");
   for (const CapturePlan& plan : scenario_.captures) {
     if (plan.kind != CaptureKind::kStatic) {
       throw Error(scenario_.source_name + ": capture '" + plan.label +
@@ -89,7 +99,7 @@ std::vector<Sample> VirtualBench::SimulateRecording() {
   const long n = std::lround(session_duration_s_ * rate_hz);
   const double g = bench.gravity_mps2;
   std::vector<Sample> samples;
-  samples.reserve(static_cast<std::size_t>(n));
+  samples.reserve(std::min(static_cast<std::size_t>(std::max(n, 0L)), chunk_samples));
   std::size_t seg = 0;
   for (long k = 0; k < n; ++k) {
     const double ts = SampleTimeS(0.0, k, rate_hz);
@@ -106,9 +116,13 @@ std::vector<Sample> VirtualBench::SimulateRecording() {
     }
     for (const ActivePulse& p : s.pulses) f_world += p.AccelerationWorld(ts);
     samples.push_back(Measure(q.toRotationMatrix().transpose() * f_world, ts));
+    if (samples.size() == chunk_samples) {
+      sink(samples);
+      samples.clear();
+    }
   }
+  if (!samples.empty()) sink(samples);
   session_duration_s_ = scenario_.SessionDurationS();
-  return samples;
 }
 
 }  // namespace accelcal::sim

@@ -27,6 +27,7 @@
 // previous one sees the bias unchanged).
 #pragma once
 
+#include <functional>
 #include <random>
 #include <vector>
 
@@ -74,6 +75,10 @@ class VirtualBench {
   // moves of move_s between them (smooth slerp plus hand jitter). A bump's at_s counts from the
   // start of its pose's hold. Throws accelcal::Error when the plan has turntable captures.
   std::vector<Sample> SimulateRecording();
+  // The same record in chunks of `chunk_samples` (the last may be shorter), handed to `sink` as
+  // they are made: memory bounded by the chunk, whatever the record's length.
+  using RecordingSink = std::function<void(const std::vector<Sample>& chunk)>;
+  void SimulateRecording(const RecordingSink& sink, std::size_t chunk_samples = 4096);
 
   // --- Lower-level pieces, for a live sample source that drives the bench step by step. ---
 

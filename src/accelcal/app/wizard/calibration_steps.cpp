@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "accelcal/app/analyze_recording.h"
+#include "accelcal/app/wizard/diagnosis_words.h"
 #include "accelcal/analysis/noise_analysis.h"
 #include "accelcal/base/error.h"
 #include "accelcal/io/calibration_file.h"
@@ -75,7 +76,12 @@ CalibrationSteps::CalibrationSteps(const Procedure& procedure, SessionModel& mod
                                    GravitySpec gravity, std::string session_name,
                                    WizardOutputs* outputs)
     : procedure_(procedure), model_(model), gravity_(gravity),
-      session_name_(std::move(session_name)), outputs_(outputs) {}
+      session_name_(std::move(session_name)), outputs_(outputs), equipment_(procedure.equipment) {}
+
+void CalibrationSteps::set_equipment(std::vector<EquipmentItem> equipment) {
+  outcome_.reset();
+  equipment_ = std::move(equipment);
+}
 
 void CalibrationSteps::set_gravity(const GravitySpec& gravity) {
   if (gravity.gravity_mps2 != gravity_.gravity_mps2 || gravity.source != gravity_.source) outcome_.reset();
@@ -92,9 +98,12 @@ void CalibrationSteps::set_noise_floor(const std::optional<NoiseFloor>& lowered)
 const CalibrationOutcome& CalibrationSteps::Run() {
   if (outcome_ && outcome_captures_ == model_.captures().size()) return *outcome_;
   CalibrationRequest request;
-  for (const JournalCapture& c : model_.captures()) request.captures.push_back(c.capture);
+  // A capture taken again (redo) is superseded: out of the fit.
+  for (const JournalCapture& c : model_.captures())
+    if (!c.superseded()) request.captures.push_back(c.capture);
   request.source_name = session_name_;
   request.gravity = gravity_;
+  request.references = ToReferenceUncertainties(equipment_, gravity_.sigma_mps2);
   request.screening.adc_range = procedure_.adc_range;
   if (lowered_floor_) {
     // The captures judged with the floor before it was lowered are judged again: the ones the
@@ -129,10 +138,15 @@ StepOutcome CalibrationSteps::Fit() {
 StepOutcome CalibrationSteps::Diagnosis() {
   const CalibrationOutcome& o = Run();
   StepOutcome out;
-  out.lines = SplitLines(FormatDiagnosis(o.diagnosis));
+  // Plain words on the screen (diagnosis_words.h); the statistics one key away.
+  out.details = SplitLines(FormatDiagnosis(o.diagnosis));
+  if (o.usable()) out.lines = DiagnosisInPlainWords(o.diagnosis, gravity_.gravity_mps2).lines;
   if (const std::string note = GravityAmbiguityNote(gravity_, o.diagnosis.adopted_names()); !note.empty()) {
     out.lines.push_back("");
-    for (const std::string& line : WrapWords("Gravity: " + note, 78)) out.lines.push_back(line);
+    for (const std::string& line : WrapWords("Gravity: " + WithPlainEffectNames(note, o.diagnosis.adopted_names()), 78))
+      out.lines.push_back(line);
+    out.details.push_back("");
+    for (const std::string& line : WrapWords("Gravity: " + note, 78)) out.details.push_back(line);
   }
   if (!o.usable()) {
     out.problem = "the fit is not usable: " + o.diagnosis.base.message;
@@ -165,8 +179,11 @@ StepOutcome CalibrationSteps::Report(bool adopt_effects, const ReportMeta& meta,
   in.calibration = cal;
   in.meta = meta;
   FillMetaFromInputs(model_.inputs(), &in.meta);  // what was typed wins over the defaults
-  for (const JournalCapture& c : model_.captures()) in.captures.push_back(c.capture);
+  for (const JournalCapture& c : model_.captures())
+    if (!c.superseded()) in.captures.push_back(c.capture);
   in.limits = procedure_.limits;
+  in.equipment = equipment_;
+  in.nominal_bias_counts = procedure_.nominal.bias_counts;
   in.gaps = gaps;
   const ReportModel verdict = BuildReportModel(in);
   out.lines.push_back(fmt::format("Verdict: {}", VerdictToString(verdict.verdict)));
@@ -176,12 +193,16 @@ StepOutcome CalibrationSteps::Report(bool adopt_effects, const ReportMeta& meta,
       out.lines.push_back(line);
   for (const std::string& why : verdict.incomplete)
     for (const std::string& line : WrapWords("  INCOMPLETE: " + why, 78)) out.lines.push_back(line);
-  if (outputs_ == nullptr) return out;
-  try {
-    for (const std::string& path : outputs_->WriteReports(in)) out.lines.push_back("Report written to " + path);
-  } catch (const Error& e) {
-    out.lines.push_back(std::string("The report was not written: ") + e.what());
+  std::vector<std::string> paths;
+  if (outputs_ != nullptr) {
+    try {
+      paths = outputs_->WriteReports(in);
+      for (const std::string& path : paths) out.lines.push_back("Report written to " + path);
+    } catch (const Error& e) {
+      out.lines.push_back(std::string("The report was not written: ") + e.what());
+    }
   }
+  final_summary_ = BuildFinalSummary(verdict, paths);
   return out;
 }
 

@@ -10,6 +10,7 @@
 
 #include "accelcal/acquire/capture_engine/noise_floor.h"
 #include "accelcal/app/calibration_pipeline.h"
+#include "accelcal/app/wizard/final_summary.h"
 #include "accelcal/app/wizard/session_model.h"
 #include "accelcal/app/wizard/wizard_outputs.h"
 #include "accelcal/base/gravity.h"
@@ -21,6 +22,9 @@ namespace accelcal {
 // What a step has to say: its text, and what went wrong (empty when nothing) with what to do.
 struct StepOutcome {
   std::vector<std::string> lines;
+  // The statistics behind `lines`, shown on request (the diagnosis's BIC / AICc / LOO tables);
+  // empty when the step has none.
+  std::vector<std::string> details;
   std::string problem;
   std::string hint;
 };
@@ -43,6 +47,9 @@ class CalibrationSteps {
   // The analysis step `step` of an earlier record; `outcome` gets its figures in one line.
   StepOutcome Analysis(const ProcedureStep& step, std::string* outcome);
 
+  // The verdict and headline numbers of the last Report (final_summary.h); nullptr before one.
+  const FinalSummary* final_summary() const { return final_summary_ ? &*final_summary_ : nullptr; }
+
   // The current pipeline outcome (after Fit or Diagnosis); nullptr before.
   const CalibrationOutcome* outcome() const { return outcome_ ? &*outcome_ : nullptr; }
 
@@ -51,6 +58,10 @@ class CalibrationSteps {
   // A noise floor lowered during the session: the static captures are judged again against it
   // (those that fail are left out with the reason); nullopt: as they were judged live.
   void set_noise_floor(const std::optional<NoiseFloor>& lowered);
+  // The bench's equipment (the procedure's, as edited at the welcome): the uncertainty
+  // budget's type B inputs, and the report's equipment list.
+  void set_equipment(std::vector<EquipmentItem> equipment);
+  const std::vector<EquipmentItem>& equipment() const { return equipment_; }
 
  private:
   const CalibrationOutcome& Run();
@@ -63,6 +74,8 @@ class CalibrationSteps {
   std::optional<CalibrationOutcome> outcome_;
   size_t outcome_captures_ = 0;  // the number of accepted captures outcome_ was computed from
   std::optional<NoiseFloor> lowered_floor_;
+  std::optional<FinalSummary> final_summary_;
+  std::vector<EquipmentItem> equipment_;  // the procedure's until set_equipment
 };
 
 }  // namespace accelcal

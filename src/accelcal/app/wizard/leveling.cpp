@@ -39,6 +39,18 @@ Eigen::Vector2d ReversalTiltDeg(const Eigen::Vector3d& first_raw_counts,
   return ToTiltDeg((h1 - h2) / 2.0);
 }
 
+Eigen::Vector2d ReversalOffset(const Eigen::Vector3d& first_raw_counts,
+                               const Eigen::Vector3d& turned_raw_counts, const SensorModel& rough) {
+  return (Horizontal(first_raw_counts, rough) + Horizontal(turned_raw_counts, rough)) / 2.0;
+}
+
+Eigen::Vector2d TiltWithoutOffsetDeg(const Eigen::Vector3d& live_raw_counts, const SensorModel& rough,
+                                     const Eigen::Vector2d& offset) {
+  return ToTiltDeg(Horizontal(live_raw_counts, rough) - offset);
+}
+
+Eigen::Vector2d OffsetAsTiltDeg(const Eigen::Vector2d& offset) { return ToTiltDeg(offset); }
+
 std::string LevelingAdvice(const Eigen::Vector2d& tilt_deg, double tolerance_deg) {
   std::string advice;
   auto add = [&](double dip_deg, const char* low_side, const char* high_side, const char* axis) {

@@ -1,7 +1,8 @@
 // Values the operator types, with units: a turntable radius and speed. Each parse returns the
 // value in SI (m, rpm as the bench states it) or refuses with the reason in words, e.g.
 //   "12 m is not a plausible turntable radius: did you mean 12 cm?"
-// Units: m for radii, rpm for speed, g for the accelerometer's range.
+// Units: m for radii, rpm for speed, g for the accelerometer's range. A decimal comma ("0,12")
+// reads as a point; text of blanks only is blank (IsBlank), which the wizard treats as empty.
 #pragma once
 
 #include <string>
@@ -23,9 +24,17 @@ struct QuantityResult {
 // The plausible radii and speeds (kMinRadiusM ... kMaxRpm) are those every turntable run is
 // screened with: calibration/turntable_plausibility.h.
 
-// "120 mm", "12 cm", "0.12 m", "0.12" (m). Result in m.
+// True when `text` is empty or only blanks: the wizard takes the default for it, as for "".
+bool IsBlank(std::string_view text);
+
+// The field a typed value belongs to by its unit: "300 rpm" and "2 Hz" are speeds, "12 cm" a
+// radius; kNone without a unit or with one of neither (each field's parse then says why).
+enum class TurntableField { kNone, kRadius, kSpeed };
+TurntableField FieldOfUnit(std::string_view text);
+
+// "120 mm", "12 cm", "0.12 m", "0.12" (m), "0,12" (m). Result in m.
 QuantityResult ParseRadius(std::string_view text);
-// "120", "120 rpm", "2 rps", "12.57 rad/s". Result in rpm.
+// "120", "120 rpm", "2 rps", "2 Hz" (= rps), "12.57 rad/s". Result in rpm.
 QuantityResult ParseRpm(std::string_view text);
 
 // Empty when the planned run stays within the accelerometer's range: the peak specific force

@@ -61,6 +61,9 @@ RecordStepWriter::RecordStepWriter(SessionJournal& journal, std::string step_id,
 void RecordStepWriter::Feed(const std::vector<Sample>& samples) {
   for (const Sample& raw : samples) {
     if (complete_) return;
+    // An unreadable line (NaN or infinite) is not a sample of the record: the record's analysis
+    // refuses NaN readings, and a silent link's NaN lines must leave the record as it was.
+    if (!std::isfinite(raw.t_s) || !raw.raw_counts.allFinite()) continue;
     if (!offset_known_) {
       offset_known_ = true;
       if (resuming()) {

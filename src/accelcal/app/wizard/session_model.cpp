@@ -30,7 +30,17 @@ void SessionModel::RecordCapture(const std::string& step_id, const Capture& capt
   if (ExactCapture(step_id) != nullptr)
     throw Error(fmt::format("step '{}' already has an accepted capture", step_id));
   journal_.RecordCapture(step_id, capture);
-  captures_.push_back({step_id, capture});
+  captures_.push_back({step_id, capture, ""});
+}
+
+void SessionModel::RecordRedoCapture(const std::string& step_id, const Capture& capture,
+                                     const std::string& superseded_step_id) {
+  if (ExactCapture(step_id) != nullptr)
+    throw Error(fmt::format("step '{}' already has an accepted capture", step_id));
+  journal_.RecordRedoCapture(step_id, capture, superseded_step_id);
+  for (JournalCapture& c : captures_)
+    if (c.step_id == superseded_step_id) c.superseded_by = step_id;
+  captures_.push_back({step_id, capture, ""});
 }
 
 void SessionModel::RecordStepDone(const std::string& step_id, const std::string& outcome) {
@@ -85,7 +95,7 @@ void SessionModel::MarkLeftOut(const JournalCapture& c, const std::string& reaso
 const JournalCapture* SessionModel::CaptureOf(const std::string& step_id) const {
   const JournalCapture* found = nullptr;
   for (const JournalCapture& c : captures_)
-    if (ProcedureStepOf(c.step_id) == step_id && LeftOutReason(c).empty()) found = &c;
+    if (ProcedureStepOf(c.step_id) == step_id && LeftOutReason(c).empty() && !c.superseded()) found = &c;
   return found;
 }
 

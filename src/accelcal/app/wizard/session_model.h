@@ -10,6 +10,11 @@
 // "STEP#2", "STEP#3", ... (the journal keeps one capture per step id, and never replaces one).
 // StepRecorded and CaptureOf look through the marks: a step is recorded when it has a capture
 // that is not left out.
+//
+// Redo: the technician takes an accepted capture again (b on a later step); the new one is
+// recorded the same way ("STEP#2", ...) and the old one marked superseded by it in the journal
+// (RecordRedoCapture, one transaction). A superseded capture is never the step's capture and
+// never goes into the fit (CurrentCaptures).
 #pragma once
 
 #include <map>
@@ -29,6 +34,8 @@ class SessionModel final : public SessionJournal {
   void RecordInput(const std::string& step_id, const std::string& key,
                    const std::string& value) override;
   void RecordCapture(const std::string& step_id, const Capture& capture) override;
+  void RecordRedoCapture(const std::string& step_id, const Capture& capture,
+                         const std::string& superseded_step_id) override;
   void RecordStepDone(const std::string& step_id, const std::string& outcome) override;
   void RecordResult(const std::string& calibration_json) override;
   void MarkDone() override;
@@ -47,7 +54,8 @@ class SessionModel final : public SessionJournal {
   const std::vector<JournalCapture>& captures() const { return captures_; }
   const std::map<std::string, std::map<std::string, std::string>>& inputs() const { return inputs_; }
   const std::map<std::string, std::string>& done_steps() const { return done_; }
-  // The accepted capture of procedure step `step_id` that is not left out (the latest retake);
+  // The accepted capture of procedure step `step_id` that is neither left out nor superseded
+  // (the latest retake);
   // nullptr when it has none.
   const JournalCapture* CaptureOf(const std::string& step_id) const;
   // True when the step has such a capture or is done.

@@ -32,9 +32,13 @@ void StepAcquisition::StartCapture(const CaptureRequest& request, const CaptureE
   ended_silent_ = false;
 }
 
-void StepAcquisition::StartRecord(std::unique_ptr<RecordStepWriter> record, bool settle) {
+void StepAcquisition::StartRecord(std::unique_ptr<RecordStepWriter> record, bool settle,
+                                  double wall_now_s, double silence_timeout_s) {
   Stop();
   record_ = std::move(record);
+  timeout_s_ = silence_timeout_s;
+  last_sample_wall_s_ = wall_now_s;
+  ended_silent_ = false;
   settling_ = settle;
   settle_until_s_ = kNaN;
   reason_.clear();
@@ -79,6 +83,7 @@ AcquisitionEvent StepAcquisition::Watch(double wall_now_s) {
     quiet_.reset();
     return AcquisitionEvent::kNoiseFloorSilent;
   }
+  if (record_ && silent_s > timeout_s_) return StopSilentRecord(silent_s);
   if (!capture_) return AcquisitionEvent::kNone;
   const bool capturing = capture_->Snapshot().state == CaptureState::kCapturing;
   const bool too_long = wall_now_s - capture_wall_start_s_ > timeout_s_ && !capturing;
@@ -91,6 +96,19 @@ AcquisitionEvent StepAcquisition::Watch(double wall_now_s) {
                         problem.empty() ? "no data long enough to judge" : problem);
   capture_.reset();
   return AcquisitionEvent::kCaptureRejected;
+}
+
+// A record is never given up for what it records, but a link that sends nothing readable
+// would keep it waiting forever: it is stopped (the chunk being filled committed, so the record
+// holds every sample up to the last good one) and the wizard says why.
+AcquisitionEvent StepAcquisition::StopSilentRecord(double silent_s) {
+  const RecordView v = record_->View();
+  reason_ = fmt::format("no samples for {:.0f} s: the record stopped at {} of {} (kept up to its "
+                        "last sample)", silent_s, FormatLongDuration(v.recorded_s),
+                        FormatLongDuration(v.duration_s));
+  ended_silent_ = true;
+  Stop();
+  return AcquisitionEvent::kRecordSilent;
 }
 
 AcquisitionEvent StepAcquisition::FeedQuiet(const std::vector<Sample>& chunk) {

@@ -24,6 +24,8 @@ enum class AcquisitionEvent {
   kCaptureAccepted,     // TakeCapture() hands it over
   kRecordComplete,      // the record covers its duration
   kNoiseFloorSilent,    // the quiet period had no sample for its timeout (Watch): reason() says
+  kRecordSilent,        // the record had no sample for its silence limit (Watch): it is stopped,
+                        // kept up to its last sample; reason() says
 };
 
 // The computer's monotonic clock (std::chrono::steady_clock), s: the wall clock of
@@ -42,8 +44,10 @@ class StepAcquisition {
   void StartCapture(const CaptureRequest& request, const CaptureEngineOptions& options,
                     const CaptureContext& context, double wall_now_s);
   // Starts streaming `record`; with `settle`, its first kRecordSettleS of samples are dropped
-  // (the hand letting go of a freshly placed sensor).
-  void StartRecord(std::unique_ptr<RecordStepWriter> record, bool settle);
+  // (the hand letting go of a freshly placed sensor). Watch stops it when no finite sample
+  // comes for silence_timeout_s of wall time (> 0) from `wall_now_s` or the last one.
+  void StartRecord(std::unique_ptr<RecordStepWriter> record, bool settle, double wall_now_s,
+                   double silence_timeout_s);
   // Stops what runs: a record commits the chunk being filled; a capture in progress is dropped.
   void Stop();
 
@@ -55,7 +59,10 @@ class StepAcquisition {
   // wall time after it started, or that has had no finite sample for timeout_s, is over
   // (kCaptureRejected; reason() names the silence: "no stable capture within 20 s (wall
   // clock): no samples for 20 s"); a quiet period without a finite sample for its timeout_s is
-  // over (kNoiseFloorSilent). Nothing to do otherwise (kNone).
+  // over (kNoiseFloorSilent); a record without a finite sample for its silence limit is
+  // stopped, kept up to its last sample (kRecordSilent; reason(): "no samples for 61 s: the
+  // record stopped at 3 h 12 min of 12 h 0 min (kept up to its last sample)"). Nothing to do
+  // otherwise (kNone).
   AcquisitionEvent Watch(double wall_now_s);
 
   bool measuring_noise_floor() const { return quiet_.has_value(); }
@@ -88,6 +95,7 @@ class StepAcquisition {
   AcquisitionEvent FeedQuiet(const std::vector<Sample>& chunk);
   AcquisitionEvent FeedCapture(const std::vector<Sample>& chunk);
   AcquisitionEvent FeedRecord(const std::vector<Sample>& chunk);
+  AcquisitionEvent StopSilentRecord(double silent_s);
 
   double quiet_period_s_;
   std::optional<CaptureStats> quiet_;  // while measuring the noise floor

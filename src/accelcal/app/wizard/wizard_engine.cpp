@@ -12,6 +12,7 @@
 #include "accelcal/base/error.h"
 #include "accelcal/base/utc_time.h"
 #include "accelcal/acquire/source/bench_control.h"
+#include "accelcal/app/wizard/resume_summary.h"
 #include "accelcal/app/wizard/session_gaps.h"
 
 namespace accelcal {
@@ -63,10 +64,11 @@ void WizardEngine::ReadJournal() {
   const std::map<std::string, std::string>& done = model_.done_steps();
   for (const JournalCapture& c : captures) {
     next_capture_id_ = std::max(next_capture_id_, c.capture.id + 1);
-    if (c.capture.kind == CaptureKind::kStatic && model_.LeftOutReason(c).empty())
+    if (c.capture.kind == CaptureKind::kStatic && model_.LeftOutReason(c).empty() && !c.superseded())
       captured_.push_back({c.capture.id, c.capture.label, MeasuredUp(c.capture)});
   }
   ReadGravity();
+  ReadEquipment();
   RestoreNoiseFloor();
   // A diagnosis decided in an earlier run: adopted effects go into the report.
   for (const ProcedureStep& s : procedure_.steps)
@@ -76,25 +78,15 @@ void WizardEngine::ReadJournal() {
   if (!resumed_) return;
   resume_lines_.push_back(fmt::format("Resuming session {}: {} captures and {} steps already recorded.",
                                options_.session_name, captures.size(), done.size()));
-  for (const JournalCapture& c : captures) {
-    const std::string left_out = model_.LeftOutReason(c);
-    resume_lines_.push_back(fmt::format("  done: {} (capture {}, {}){}", c.step_id, c.capture.id, c.capture.label,
-                                        left_out.empty() ? "" : ": left out, to be captured again"));
-  }
-  for (const auto& [id, outcome] : done) resume_lines_.push_back(fmt::format("  done: {} ({})", id, outcome));
-  for (const std::string& id : model_.RecordSteps()) {
-    if (done.count(id) != 0) continue;
-    const RecordSummary r = model_.RecordSummaryOf(id);
-    resume_lines_.push_back(fmt::format("  partly recorded: {} ({} recorded over {}, {} chunks)", id,
-                                        FormatLongDuration(r.recorded_s()),
-                                        FormatLongDuration(r.span_s()), r.num_chunks));
-  }
+  // In the procedure's order, with the steps' titles (resume_summary.h).
+  for (std::string& line : ResumeSummaryLines(procedure_, model_, kWelcomeStepId))
+    resume_lines_.push_back(std::move(line));
   if (done.count(kWelcomeStepId) != 0) {
     resume_lines_.push_back("  gravity: " + gravity_.Describe());
     AdvanceFrom(0);
   } else {
     // The welcome was cut short: its answers so far are kept; ask the rest.
-    while (welcome_field_ + 1 < kWelcomeFields && model_.inputs().count(kWelcomeStepId) != 0 &&
+    while (welcome_field_ + 1 < WelcomeFields() && model_.inputs().count(kWelcomeStepId) != 0 &&
            model_.inputs().at(kWelcomeStepId).count(Welcome(welcome_field_).key) != 0)
       ++welcome_field_;
   }
@@ -118,7 +110,10 @@ void WizardEngine::EnterStep(int index) {
   problem_.clear();
   hint_.clear();
   input_error_.clear();
+  input_note_.clear();
   lines_.clear();
+  details_.clear();
+  show_details_ = false;
   if (current_ >= static_cast<int>(procedure_.steps.size())) {
     phase_ = Phase::kDone;
     return;
@@ -147,6 +142,7 @@ void WizardEngine::FinishStep(const std::string& outcome) {
 
 // s: asks first (a skipped required step keeps the report from PASS).
 void WizardEngine::AskSkip() {
+  if (Redoing()) return CancelRedo();  // s in a redo keeps the earlier capture
   const StepKind kind = step().kind;
   if (kind == StepKind::kFit || kind == StepKind::kReport) {
     problem_ = fmt::format("the {} cannot be skipped", StepKindToString(kind));
@@ -173,8 +169,12 @@ void WizardEngine::SkipStep() {
 }
 
 // Back: within a step to its previous question; from a step's start to the nearest earlier
-// step that has no accepted capture (a skipped one). Accepted captures are never replaced.
+// capture step: a skipped one is entered, an accepted capture is offered to be taken again
+// (wizard_engine_redo.cpp). A finished record is kept.
 void WizardEngine::GoBack() {
+  // b at the start of a redo keeps the capture it would have replaced.
+  if (Redoing() && (phase_ == Phase::kPlace || phase_ == Phase::kQuietReady || phase_ == Phase::kRadius))
+    return CancelRedo();
   if (phase_ == Phase::kRpm) {
     phase_ = Phase::kRadius;
     return;
@@ -190,8 +190,10 @@ void WizardEngine::GoBack() {
     return;
   }
   const std::map<std::string, std::string>& done = model_.done_steps();
-  for (int i = current_ - 1; i >= 0; --i) {
+  const int from = phase_ == Phase::kConfirmRedo ? redo_target_ : current_;
+  for (int i = from - 1; i >= 0; --i) {
     const ProcedureStep& s = procedure_.steps[static_cast<size_t>(i)];
+    if (RedoableCapture(s) != nullptr) return AskRedo(i);
     const bool has_capture = model_.CaptureOf(s.id) != nullptr;
     // A record that ran to its end is kept like an accepted capture.
     const auto d = done.find(s.id);
@@ -201,7 +203,7 @@ void WizardEngine::GoBack() {
       return;
     }
   }
-  problem_ = "nothing to go back to: every earlier capture and record is recorded and is kept";
+  problem_ = "nothing to go back to: every earlier record is recorded and is kept";
 }
 
 void WizardEngine::Quit() {
@@ -216,6 +218,8 @@ void WizardEngine::Quit() {
 void WizardEngine::Show(StepOutcome outcome) {
   phase_ = Phase::kResult;
   lines_ = std::move(outcome.lines);
+  details_ = std::move(outcome.details);
+  show_details_ = false;
   problem_ = std::move(outcome.problem);
   hint_ = std::move(outcome.hint);
 }
@@ -263,8 +267,9 @@ void WizardEngine::Poll(double timeout_s) {
     resume_lines_.push_back(clock_.note());
   }
   UpdateLive(chunk);
-  // The capture's timeout on the wall clock too: a silent link sends no sample time.
-  if (phase_ == Phase::kCapture || phase_ == Phase::kQuiet) {
+  // The capture's timeout on the wall clock too: a silent link sends no sample time (a record
+  // has its silence limit).
+  if (phase_ == Phase::kCapture || phase_ == Phase::kQuiet || phase_ == Phase::kRecord) {
     const AcquisitionEvent watched = acq_.Watch(SteadyNowS());
     if (watched != AcquisitionEvent::kNone) return OnAcquisition(watched);
   }
@@ -287,6 +292,7 @@ void WizardEngine::Poll(double timeout_s) {
 
 void WizardEngine::Handle(const Intent& intent) {
   if (phase_ == Phase::kDone) return;
+  notice_.clear();  // a confirmation stays until the next key
   if (intent.kind == IntentKind::kQuit) {
     Quit();
     return;
@@ -297,6 +303,7 @@ void WizardEngine::Handle(const Intent& intent) {
     case Phase::kRpm: HandleTurntableInput(intent); return;
     case Phase::kResult: HandleResult(intent); return;
     case Phase::kConfirmSkip: HandleConfirmSkip(intent); return;
+    case Phase::kConfirmRedo: HandleConfirmRedo(intent); return;
     default: HandleCaptureIntent(intent); return;
   }
 }
@@ -306,6 +313,10 @@ void WizardEngine::HandleResult(const Intent& intent) {
   if (intent.kind == IntentKind::kBack) return GoBack();
   if (intent.kind == IntentKind::kSkip) return AskSkip();
   if (intent.kind == IntentKind::kRetry) return EnterStep(current_);
+  if (intent.kind == IntentKind::kDetails) {
+    show_details_ = !show_details_ && !details_.empty();
+    return;
+  }
   const bool accept = intent.kind == IntentKind::kAccept || intent.kind == IntentKind::kSubmitText;
   const CalibrationOutcome* outcome = steps_.outcome();
   if (kind == StepKind::kFit) {

@@ -24,6 +24,12 @@
 // Skipping a step asks first (s again skips, Enter keeps the step): a skipped required step
 // makes the report INCOMPLETE.
 //
+// Back (b) at a step's start goes to the nearest earlier capture step: a skipped one is entered;
+// an accepted static or turntable capture is offered to be taken again (a redo, asked first:
+// Enter takes it again, b looks further back, n keeps it). The redo's capture supersedes the old
+// one when it is accepted (both stay in the session: SessionJournal::RecordRedoCapture); b or s
+// before then, or q, keeps the old one (wizard_engine_redo.cpp).
+//
 // Time: every sample is put on one session clock (session_clock.h): a resumed run continues
 // after the last recorded sample, with the gap stated.
 //
@@ -106,6 +112,7 @@ class WizardEngine final : public WizardDriver {
     kQuietReady,   // asking the operator to leave the sensor at rest for the noise floor
     kQuiet,        // measuring the noise floor
     kConfirmSkip,  // s was pressed: asking before the step is skipped
+    kConfirmRedo,  // b reached an accepted capture: asking before it is taken again
     kPlace,        // asking to place the prism / mount the turntable
     kCapture,      // the capture engine runs
     kRecord,       // a record step streams to the journal
@@ -131,6 +138,7 @@ class WizardEngine final : public WizardDriver {
   CaptureContext MakeContext() const;
   void StartRecord();
   void FinishRecord();
+  static double RecordSilenceTimeoutS(const ProcedureStep& s);
   void OnAcquisition(AcquisitionEvent event);
   bool RecordResumable() const;
   void OnCaptureAccepted();
@@ -140,6 +148,17 @@ class WizardEngine final : public WizardDriver {
   void AskSkip();
   void HandleConfirmSkip(const Intent& intent);
   void GoBack();
+  // Redo of an accepted capture (wizard_engine_redo.cpp).
+  const JournalCapture* RedoableCapture(const ProcedureStep& s) const;
+  void AskRedo(int step_index);
+  void HandleConfirmRedo(const Intent& intent);
+  void StartRedo();
+  void CancelRedo();
+  bool Redoing() const { return !redo_of_.empty(); }
+  // Records an accepted capture of the current step: superseding the old one in a redo.
+  void RecordAcceptedCapture(const Capture& capture);
+  void SetConfirmRedoView(WizardView& v) const;
+  void AddRedoLines(WizardView& v) const;
   // Noise floor (wizard_engine_capture.cpp).
   void OnQuietMeasured();
   void RecheckNoiseFloor(const Capture& latest);
@@ -152,15 +171,20 @@ class WizardEngine final : public WizardDriver {
   // The welcome's questions in order: {input key, label, default}.
   struct WelcomeField {
     const char* key;
-    const char* label;
+    std::string label;
     std::string default_value;
   };
-  static constexpr int kWelcomeFields = 4;  // device, operator, place, gravity
+  // device, operator, place, gravity, and the equipment when the procedure lists some.
+  int WelcomeFields() const { return procedure_.equipment.empty() ? 4 : 5; }
   WelcomeField Welcome(int field) const;
+  // The welcome's equipment answer (recorded), applied to the calibration steps.
+  void ReadEquipment();
   // The rough model's "up" of a capture (unit, platform frame).
   Eigen::Vector3d MeasuredUp(const Capture& c) const;
   void OnCaptureRejected();
   void HandleTurntableInput(const Intent& intent);
+  void CorrectOtherTurntableField(const std::string& text, bool to_radius);
+  void CheckTurntablePlanAndPlace(double rpm);
   void HandleResult(const Intent& intent);
   void HandleCaptureIntent(const Intent& intent);
   void Show(StepOutcome outcome);
@@ -182,6 +206,10 @@ class WizardEngine final : public WizardDriver {
   void SetDoneView(WizardView& v) const;
   void SetCaptureView(WizardView& v) const;
   void SetRecordView(WizardView& v) const;
+  // Time and confirmations of the capture flow (wizard_engine_flow.cpp).
+  void SetTimeView(WizardView& v) const;
+  double SessionLeftS(bool current_started) const;
+  void ConfirmCapture(const Capture& capture);
 
   Procedure procedure_;
   SampleSource& source_;    // borrowed: outlives the engine
@@ -194,9 +222,14 @@ class WizardEngine final : public WizardDriver {
   Phase phase_ = Phase::kWelcome;
   int welcome_field_ = 0;
   std::string input_error_;
+  std::string input_note_;  // what a typed value set in the other turntable field
   std::string problem_;
   std::string hint_;
   std::vector<std::string> lines_;
+  std::string detail_;  // the figures behind problem_ (a capture that ended unaccepted)
+  std::string notice_;  // the last accepted capture, confirmed until the next key
+  std::vector<std::string> details_;  // the statistics behind lines_ (d shows them)
+  bool show_details_ = false;
   bool resumed_ = false;
   std::vector<std::string> resume_lines_;  // what the journal held at construction
   bool progressed_ = false;                // this run has recorded a step or capture
@@ -215,12 +248,20 @@ class WizardEngine final : public WizardDriver {
   std::optional<Eigen::Vector3d> level_first_counts_;
   Eigen::Vector2d level_tilt_deg_ = Eigen::Vector2d::Constant(kNaN);
   bool level_ok_ = false;
+  // The sensor's own offset measured by the last reversal (leveling.h): taken out of the live tilt.
+  std::optional<Eigen::Vector2d> level_offset_;
 
   double radius_m_ = kNaN;
   double rpm_ = kNaN;
 
   bool adopt_effects_ = true;
   Phase skip_from_ = Phase::kPlace;  // the phase s was pressed in
+  int redo_target_ = -1;    // kConfirmRedo: the step offered to be taken again
+  std::string redo_of_;     // a redo runs: the journal step id of the capture it supersedes
+  int redo_capture_id_ = 0;  // ... and that capture's id
+  Phase redo_from_phase_ = Phase::kPlace;  // the phase b was pressed in
+  std::string redo_note_;          // what the last redo did, shown until the next capture
+  size_t redo_note_captures_ = 0;  // the number of captures when it was said
   std::string analysis_outcome_;  // the analysis step's figures, for the journal
 
   Eigen::Vector3d live_counts_ = Eigen::Vector3d::Constant(kNaN);

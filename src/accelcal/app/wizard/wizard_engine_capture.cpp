@@ -8,7 +8,9 @@
 #include <fmt/format.h>
 
 #include "accelcal/acquire/source/bench_control.h"
+#include "accelcal/app/wizard/capture_messages.h"
 #include "accelcal/app/wizard/leveling.h"
+#include "accelcal/app/wizard/pose_setting.h"
 #include "accelcal/app/wizard/wizard_engine.h"
 
 namespace accelcal {
@@ -81,7 +83,8 @@ void WizardEngine::OnQuietMeasured() {
 void WizardEngine::RecheckNoiseFloor(const Capture& latest) {
   std::vector<const Capture*> used;
   for (const JournalCapture& c : model_.captures())
-    if (c.capture.kind == CaptureKind::kStatic && model_.LeftOutReason(c).empty()) used.push_back(&c.capture);
+    if (c.capture.kind == CaptureKind::kStatic && model_.LeftOutReason(c).empty() && !c.superseded())
+      used.push_back(&c.capture);
   const NoiseFloorRecheck r = floor_guard_.Recheck(latest, used);
   if (!r.lowered) return;
   model_.RecordInput(kNoiseFloorStep, "lowered_std_counts", TriadText(r.after.std_counts));
@@ -129,6 +132,8 @@ CaptureContext WizardEngine::MakeContext() const {
   c.noise_floor = *floor_guard_.floor();
   // Leveling measures the same pose twice: no duplicate check there.
   if (step().kind != StepKind::kLevel) c.captured = captured_;
+  // A redo takes the same pose again: the capture it replaces is no duplicate.
+  std::erase_if(c.captured, [&](const CapturedPose& p) { return Redoing() && p.capture_id == redo_capture_id_; });
   for (const ProcedureStep& s : procedure_.steps)
     if (s.kind == StepKind::kStatic && (s.up.array().abs() > 1e-6).count() > 1)
       c.known_poses.push_back({s.pose_name, s.up});
@@ -160,6 +165,7 @@ void WizardEngine::StartCaptureEngine() {
   acq_.StartCapture(MakeRequest(), o, MakeContext(), SteadyNowS());
   problem_.clear();
   hint_.clear();
+  detail_.clear();
   phase_ = Phase::kCapture;
 }
 
@@ -181,6 +187,13 @@ bool WizardEngine::RecordResumable() const {
   return model_.RecordSummaryOf(step().id).num_chunks > 0;
 }
 
+// How long a record waits on a silent link (connected, sending nothing readable) before it
+// stops: the slack its procedure gives beyond the record's own length (timeout_s - duration_s:
+// the procedure's capture_timeout_s, 60 s, unless the step sets timeout_s), at least 1 s.
+double WizardEngine::RecordSilenceTimeoutS(const ProcedureStep& s) {
+  return std::max(1.0, s.timeout_s - s.duration_s);
+}
+
 void WizardEngine::StartRecord() {
   const ProcedureStep& s = step();
   RecordStepWriterOptions o;
@@ -190,7 +203,8 @@ void WizardEngine::StartRecord() {
   o.wall_now_s = options_.wall_now_s;
   // A fresh placement lets the hand go first; a resumed record goes on at once.
   const bool settle = !RecordResumable();
-  acq_.StartRecord(std::make_unique<RecordStepWriter>(model_, s.id, o), settle);
+  acq_.StartRecord(std::make_unique<RecordStepWriter>(model_, s.id, o), settle, SteadyNowS(),
+                   RecordSilenceTimeoutS(s));
   problem_.clear();
   hint_.clear();
   phase_ = Phase::kRecord;
@@ -211,8 +225,9 @@ void WizardEngine::OnAcquisition(AcquisitionEvent event) {
     case AcquisitionEvent::kCaptureAccepted: OnCaptureAccepted(); break;
     case AcquisitionEvent::kCaptureRejected: OnCaptureRejected(); break;
     case AcquisitionEvent::kCaptureRetrying:
-      problem_ = acq_.reason();
-      hint_ = "retrying by itself once the sensor is still again";
+      // Said in words on the capture screen (capture_messages.h): not a failure to stop on.
+      problem_.clear();
+      hint_.clear();
       break;
     case AcquisitionEvent::kCapturing:
       problem_.clear();
@@ -224,24 +239,36 @@ void WizardEngine::OnAcquisition(AcquisitionEvent event) {
       hint_ = "check the cable or the sample server; Enter measures again, q leaves";
       phase_ = Phase::kQuietReady;
       break;
+    case AcquisitionEvent::kRecordSilent:
+      // Stopped, the chunk being filled committed: Enter resumes it (with the gap stated).
+      problem_ = acq_.reason();
+      hint_ = "check the cable or the sample server; Enter goes on with the record, q leaves "
+              "(what was recorded is in the session)";
+      phase_ = Phase::kProblem;
+      break;
     case AcquisitionEvent::kNone: break;
   }
 }
 
 void WizardEngine::OnCaptureRejected() {
-  problem_ = acq_.reason();
+  const CaptureMessage said = DescribeEnded(acq_.reason(), step().timeout_s);
+  problem_ = said.text;
+  detail_ = said.detail;
   phase_ = Phase::kProblem;
   if (acq_.ended_silent()) {
     hint_ = "check the cable or the sample server; Enter tries again, q leaves";
     return;
   }
   if (step().kind != StepKind::kTurntable) {
-    hint_ = fmt::format("put the prism with {} and let go; Enter tries again", MakeRequest().expected.name);
+    hint_ = IsTiltedPose(step().up)
+                ? fmt::format("set the prism {} and let go; Enter tries again", PrismSetting(step().up, step().pose_name))
+                : fmt::format("put the prism with {} and let go; Enter tries again", MakeRequest().expected.name);
     return;
   }
   const TurntableVerdict& v = acq_.last_turntable();
   hint_ = !v.mounted_as_asked && !v.mounting_found.empty()
-              ? fmt::format("mount the sensor {} as asked; Enter tries again", step().pose_name)
+              ? fmt::format("stop the table, mount the sensor {} as asked and start the table again; "
+                            "Enter tries again", step().pose_name)
           : !v.level ? "level the turntable; Enter tries again"
                      : "check the mounting, radius and speed; Enter tries again, b re-enters the values";
 }
@@ -266,7 +293,8 @@ void WizardEngine::OnCaptureAccepted() {
   }
   // Recorded before moving on: a crash after this line loses nothing.
   progressed_ = true;
-  model_.RecordCapture(model_.NextCaptureStepId(s.id), capture);
+  RecordAcceptedCapture(capture);
+  ConfirmCapture(capture);
   clock_.MarkCapture(capture.stats().t_last_s, model_);
   if (capture.kind == CaptureKind::kStatic) {
     captured_.push_back({capture.id, capture.label, MeasuredUp(capture)});
@@ -286,6 +314,7 @@ void WizardEngine::OnLevelCapture(const Eigen::Vector3d& mean_counts) {
     return;
   }
   level_tilt_deg_ = ReversalTiltDeg(*level_first_counts_, mean_counts, procedure_.nominal);
+  level_offset_ = ReversalOffset(*level_first_counts_, mean_counts, procedure_.nominal);
   const std::string advice = LevelingAdvice(level_tilt_deg_, step().tolerance_deg);
   level_ok_ = advice.empty();
   problem_ = level_ok_ ? "" : "the table is not level: " + advice;

@@ -5,7 +5,11 @@
 #include <algorithm>
 #include <cmath>
 
+#include "accelcal/app/wizard/capture_messages.h"
+#include "accelcal/app/wizard/diagnosis_words.h"
 #include "accelcal/app/wizard/leveling.h"
+#include "accelcal/app/wizard/pose_setting.h"
+#include "accelcal/app/wizard/time_estimate.h"
 #include "accelcal/app/wizard/wizard_engine.h"
 
 namespace accelcal {
@@ -37,7 +41,8 @@ WizardView WizardEngine::View() const {
   v.hint = hint_;
   // The resume summary is shown until this run has recorded something of its own.
   if (resumed_ && !progressed_) v.lines = resume_lines_;
-  v.lines.insert(v.lines.end(), lines_.begin(), lines_.end());
+  const std::vector<std::string>& text = show_details_ ? details_ : lines_;
+  v.lines.insert(v.lines.end(), text.begin(), text.end());
   // What the noise floor's checks said, beside the steps that acquire.
   if (phase_ != Phase::kResult && phase_ != Phase::kDone)
     v.lines.insert(v.lines.end(), floor_lines_.begin(), floor_lines_.end());
@@ -45,10 +50,23 @@ WizardView WizardEngine::View() const {
   v.status = source_.Describe() + ": " + source_.status().BriefReport();
   SetStepView(v);
   SetPhaseView(v);
-  // Leveling: the live tilt (apparent: the bias is not known yet) until the reversal gives it.
+  SetTimeView(v);
+  v.notice = notice_;
+  AddRedoLines(v);
+  // Leveling: the live tilt, without the sensor's own offset once a reversal has measured it
+  // (before, it includes the offset: adjusting the feet by it chases the offset).
   if (current_ >= 0 && current_ < static_cast<int>(procedure_.steps.size()) &&
-      step().kind == StepKind::kLevel && phase_ != Phase::kLevelResult && live_counts_.allFinite())
-    v.tilt_deg = ApparentTiltDeg(live_counts_, procedure_.nominal);
+      step().kind == StepKind::kLevel && phase_ != Phase::kLevelResult && live_counts_.allFinite()) {
+    if (level_offset_) {
+      v.tilt_deg = TiltWithoutOffsetDeg(live_counts_, procedure_.nominal, *level_offset_);
+      const Eigen::Vector2d offset_deg = OffsetAsTiltDeg(*level_offset_);
+      v.tilt_note = fmt::format("sensor's offset (x {:.1f}, y {:.1f} deg) taken out", offset_deg.x(),
+                                offset_deg.y());
+    } else {
+      v.tilt_deg = ApparentTiltDeg(live_counts_, procedure_.nominal);
+      v.tilt_note = "includes the sensor's offset until the reversal";
+    }
+  }
   if (source_.status().link == LinkState::kDead && v.problem.empty()) {
     v.problem = "no samples: " + source_.status().link_error;
     v.hint = "check the cable or the sample server; the wizard goes on when samples return";
@@ -82,6 +100,8 @@ void WizardEngine::SetPhaseView(WizardView& v) const {
       return SetQuietView(v);
     case Phase::kConfirmSkip:
       return SetConfirmSkipView(v);
+    case Phase::kConfirmRedo:
+      return SetConfirmRedoView(v);
     case Phase::kPlace:
       return SetPlaceView(v);
     case Phase::kLevelTurn:
@@ -156,11 +176,15 @@ void WizardEngine::SetPlaceView(WizardView& v) const {
                         "{} record.", step().pose_name, FormatLongDuration(step().duration_s))
       : step().kind == StepKind::kTurntable
           ? fmt::format(
-                "Mount the sensor on the turntable with {} at {:g} mm from the axis and run "
-                "it at {:g} rpm; press Enter when it turns steadily.",
+                "Stop the table before you touch the sensor. Mount it with {} at {:g} mm from the "
+                "axis, then start the table at {:g} rpm and wait for it to settle; press Enter "
+                "when it turns steadily.",
                 step().pose_name, radius_m_ * 1000.0, rpm_)
       : step().kind == StepKind::kLevel
           ? "Put the prism on the table with +z up and let go; press Enter to measure the tilt."
+      : IsTiltedPose(step().up)
+          ? fmt::format("Set the prism {} and let go; press Enter to capture.",
+                        PrismSetting(step().up, step().pose_name))
           : fmt::format("Put the prism on the table with {} and let go; press Enter to capture.",
                         step().pose_name);
   v.keys = WithNavigation({{"Enter", "capture"}});
@@ -185,11 +209,13 @@ void WizardEngine::SetLevelView(WizardView& v) const {
 void WizardEngine::SetInputView(WizardView& v) const {
   const bool radius = phase_ == Phase::kRadius;
   v.screen = WizardScreen::kInput;
-  v.prompt = fmt::format("Turntable run with {}.", step().pose_name);
+  v.prompt = fmt::format("Turntable run with {}: stop the table before you touch the sensor.",
+                         step().pose_name);
+  if (!input_note_.empty()) v.prompt += " " + input_note_;
   v.input = InputRequest{
       radius ? "radius" : "rpm",
       radius ? "Radius from the spin axis to the sensor (e.g. 120 mm)"
-             : "Table speed (e.g. 120 rpm, 2 rps, 12.57 rad/s)",
+             : "Table speed (e.g. 120 rpm, 2 rps or 2 Hz, 12.57 rad/s)",
       radius ? fmt::format("{:g} mm", radius_m_ * 1000.0) : fmt::format("{:g} rpm", rpm_),
       input_error_};
   v.keys = WithNavigation({{"Enter", "accept"}});
@@ -206,14 +232,21 @@ void WizardEngine::SetResultView(WizardView& v) const {
     return;
   }
   const CalibrationOutcome* outcome = steps_.outcome();
-  if (kind == StepKind::kDiagnosis && outcome != nullptr && !outcome->diagnosis.adopted.empty()) {
+  if (kind == StepKind::kDiagnosis && outcome != nullptr && outcome->usable()) {
+    // In plain words (diagnosis_words.h), the recommended choice on Enter, the statistics on d.
+    const DiagnosisWords words = DiagnosisInPlainWords(outcome->diagnosis, gravity_.gravity_mps2);
+    const KeyHint details{"d", show_details_ ? "plain words" : "statistics"};
+    if (!words.asks) {
+      v.prompt = words.prompt;
+      v.keys = WithNavigation({{"Enter", "continue"}, details});
+      return;
+    }
     const bool ambiguous = !GravityAmbiguityNote(gravity_, outcome->diagnosis.adopted_names()).empty();
-    v.prompt = fmt::format("Adopt {} into the calibration? {}Enter adopts, n keeps the base model.",
-                           fmt::join(outcome->diagnosis.adopted_names(), ", "),
-                           ambiguous ? "Gravity is the standard value here, so a gravity error looks "
-                                       "the same (see above): with it the report says INCOMPLETE. "
-                                     : "");
-    v.keys = WithNavigation({{"Enter", "adopt"}, {"n", "keep the base model"}});
+    v.prompt = words.prompt + (ambiguous ? " Gravity is the standard value here, so a gravity error looks "
+                                           "the same (see the gravity note): with it the report says "
+                                           "INCOMPLETE."
+                                         : "");
+    v.keys = WithNavigation({{"Enter", words.recommended_action}, {"n", "keep basic model"}, details});
     return;
   }
   v.prompt = kind == StepKind::kReport
@@ -230,8 +263,14 @@ void WizardEngine::SetDoneView(WizardView& v) const {
   if (quit_) {
     v.prompt = fmt::format("Saved. Everything accepted is in session {}; run the wizard on it again "
                            "to resume.", options_.session_name);
-  } else {
-    v.prompt = calibrates ? "Calibration complete." : "Procedure complete: every step is recorded.";
+    return;
+  }
+  v.prompt = calibrates ? "Calibration complete." : "Procedure complete: every step is recorded.";
+  // The verdict and the headline numbers of this run's report (final_summary.h).
+  if (const FinalSummary* summary = steps_.final_summary()) {
+    v.verdict = std::string(VerdictToString(summary->verdict));
+    v.prompt = fmt::format("Calibration complete: {}.", v.verdict);
+    v.lines = summary->lines;
   }
 }
 
@@ -265,23 +304,30 @@ void WizardEngine::SetCaptureView(WizardView& v) const {
   v.keys = {{"r", "retry"}, {"s", "skip"}, {"b", "back"}, {"q", "save and quit"}};
   if (phase_ == Phase::kProblem) {
     v.prompt = "The capture was not accepted.";
+    v.detail = detail_;
     v.keys.insert(v.keys.begin(), KeyHint{"Enter", "try again"});
     return;
   }
   const CaptureSnapshot snap = acq_.capture_snapshot();
-  v.prompt =
-      fmt::format("{} {} (attempt {}): {}", CaptureStateToString(snap.state), step().pose_name,
-                  std::max(1, snap.attempts),
-                  snap.state == CaptureState::kCapturing
-                      ? fmt::format("{:.0f} %", snap.progress * 100.0)
-                      : (snap.reason.empty() ? "waiting for the sensor to be still" : snap.reason));
+  const bool turntable = step().kind == StepKind::kTurntable;
+  const CaptureMessage said = DescribeCapture(snap, turntable);
+  const bool capturing = snap.state == CaptureState::kCapturing;
+  // Time: the capture's seconds left once it captures, the give-up's countdown (sample time,
+  // as the capture engine counts it), and the session's estimate.
+  v.capture_left_s = capturing ? step().duration_s * (1.0 - snap.progress) : kNaN;
+  v.give_up_in_s = std::max(step().timeout_s - snap.elapsed_s, 0.0);
+  v.session_left_s = (capturing ? v.capture_left_s : step().duration_s) + SessionLeftS(true);
+  v.time_text = CaptureTimeText(step().duration_s, v.capture_left_s, v.give_up_in_s, v.session_left_s);
+  v.prompt = fmt::format("{} {} (attempt {}): {}", CaptureStateToString(snap.state), step().pose_name,
+                         std::max(1, snap.attempts),
+                         capturing ? fmt::format("{:.0f} %, {:.0f} s left; {}", snap.progress * 100.0,
+                                                 std::round(v.capture_left_s), said.text)
+                                   : said.text);
   v.progress = snap.progress;
-  if (step().kind == StepKind::kTurntable) {
-    v.stability_text = snap.turntable.ok ? "turning steadily" : snap.turntable.reason;
-  } else {
-    v.stability = snap.stability.WorstRatio();
-    v.stability_text = snap.stability.stable ? "still" : snap.stability.reason;
-  }
+  v.waiting = said.waiting;
+  v.detail = said.detail;
+  if (!turntable) v.stability = snap.stability.WorstRatio();
+  v.stability_text = capturing ? (turntable ? "turning steadily" : "still") : said.text;
 }
 
 }  // namespace accelcal

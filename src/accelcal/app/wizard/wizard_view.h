@@ -100,6 +100,9 @@ struct WizardView {
   Eigen::Vector3d live_counts = Eigen::Vector3d::Constant(kNaN);
   double live_g = kNaN;           // |f| in g, from the nominal model (approximate before the fit)
   Eigen::Vector2d tilt_deg = Eigen::Vector2d::Constant(kNaN);  // leveling: about x and y
+  // Leveling: what the live tilt holds: "includes the sensor's offset until the reversal", then
+  // "sensor's offset (x 1.5, y -0.2 deg) taken out" (at most 48 characters).
+  std::string tilt_note;
   double stability = kNaN;        // 0 = still ... >= 1 = beyond the limit (worst axis)
   std::string stability_text;     // "still", "moving: x std 4.1 counts, limit 2.5"
   double progress = kNaN;         // 0..1 during a capture
@@ -113,6 +116,24 @@ struct WizardView {
   std::optional<InputRequest> input;
   std::vector<std::string> lines; // fit, diagnosis or report text (80 columns)
   std::vector<KeyHint> keys;      // the keys that mean something now
+
+  // The capture flow in the technician's terms (capture_messages.h, time_estimate.h,
+  // final_summary.h). `stability_text` and `problem` say in plain words what the bench needs;
+  // the statistics behind them are here, for a detail line (line mode) or one key away (TUI).
+  std::string detail;             // "spike: z jumped -231 counts (135.1 sigma) at t = 9.64 s"; may be empty
+  bool waiting = false;           // the normal settling after letting go: a wait, not a warning
+  // Time: this capture's seconds left (NaN before it captures), the countdown to its give-up
+  // (NaN: none), the session's estimated time left (NaN: none), and all three in words.
+  double capture_left_s = kNaN;
+  double give_up_in_s = kNaN;
+  double session_left_s = kNaN;
+  std::string time_text;          // "4 s left of this capture; gives up in 52 s; session: about 14 min left (estimate)"
+  // An accepted capture confirmed with its figures, shown on the next screen until a key:
+  // "+z up done: 10.0 s, |a| ~10.12 m/s^2 by the datasheet, noise 1.6 counts". Empty when none.
+  std::string notice;
+  // The final screen: the report's verdict ("PASS", "FAIL", "INCOMPLETE", "NO LIMITS STATED");
+  // `lines` then hold the summary (limits failed, headline numbers, report paths). Empty before.
+  std::string verdict;
   std::string status;             // the source's brief status ("sim: up, 100.0 Hz, ...")
   bool finished = false;          // nothing more to do; the front end may exit
 };
@@ -125,6 +146,7 @@ enum class IntentKind {
   kQuit,        // q: save and leave (always allowed)
   kSubmitText,  // an answer to the current InputRequest (text may be empty: the default)
   kAnswerNo,    // n: decline (e.g. do not adopt the proposed effect)
+  kDetails,     // d: show or hide the statistics behind a result (the diagnosis's tables)
 };
 
 struct Intent {

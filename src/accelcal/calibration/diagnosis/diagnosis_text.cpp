@@ -29,7 +29,7 @@ std::string FormatDiagnosis(const DiagnosisReport& report) {
                        a.after.max_abs_mps2, a.before.Chi2PerDof(), a.after.Chi2PerDof());
     for (size_t i = 0; i < a.parameters.size(); ++i)
       out += fmt::format("      {:<10} {:>14.6g} +- {:<11.3g} {}\n", a.parameter_names[i],
-                         a.parameters[i], a.uncertainty[i], a.parameter_units[i]);
+                         a.parameters[i], a.uncertainty[i], UnitAfterValue(a.parameter_units[i]));
     if (!a.interpretation.empty()) out += "      that is " + a.interpretation + "\n";
     out += "      evidence: " + a.evidence + "\n";
   }

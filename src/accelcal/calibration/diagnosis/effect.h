@@ -90,6 +90,10 @@ inline bool CorrectsBefore(const Effect* a, const Effect* b) {
 // `effects` sorted by CorrectsBefore (stable): the order in which corrections are applied.
 std::vector<const Effect*> InCorrectionOrder(std::vector<const Effect*> effects);
 
+// A parameter's unit as printed after its value: empty for a dimensionless one ("1"), so a
+// line reads "rpm_scale = 0.00136 +- 4.4e-05", never "... 4.4e-05 1".
+inline std::string_view UnitAfterValue(std::string_view unit) { return unit == "1" ? std::string_view() : unit; }
+
 // The library, in a fixed order. Ownership: the returned effects are static; never freed.
 const std::vector<const Effect*>& AllEffects();
 // nullptr when there is no effect of that name.

@@ -35,8 +35,10 @@ struct LeaveOneOutResult {
   int worst_index = -1;        // its index in the captures
 };
 
-// Refits `model` without each capture from `p_full` (the fit of all of them). A refit that
-// fails predicts from `p_full`.
+// Refits `model` without each capture from `p_full` (the fit of all of them): Gauss-Newton
+// warm-started at p_full (LeastSquaresOptions::warm_start, at most 3 iterations), the full solve
+// (NLopt, then Gauss-Newton) when that does not converge. A refit that fails both ways predicts
+// from `p_full`. tests/unit/leave_one_out_test.cpp holds the result to cold refits.
 LeaveOneOutResult PredictLeftOut(const ResidualModel& model, const std::vector<FitCapture>& captures,
                                  const Eigen::VectorXd& p_full, const LeastSquaresOptions& solver);
 

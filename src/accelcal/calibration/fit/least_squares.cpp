@@ -329,12 +329,17 @@ FitSummary SolveWeightedLeastSquares(const ResidualModel& model,
     return s;
   }
 
-  Eigen::VectorXd p_nlopt = RunNlopt(pr, options.max_evaluations, &s.optimizer_result);
-  s.optimizer_evaluations = pr.evaluations;
-  // SLSQP can run off (to 1e40 from a poor start): polish from whichever is better.
-  if (!(Cost(pr, p_nlopt) <= Cost(pr, initial))) {
-    p_nlopt = initial;
-    s.optimizer_result += " (worse than the initial guess: not used)";
+  Eigen::VectorXd p_nlopt = initial;
+  if (options.warm_start) {
+    s.optimizer_result = "skipped (warm start)";
+  } else {
+    p_nlopt = RunNlopt(pr, options.max_evaluations, &s.optimizer_result);
+    s.optimizer_evaluations = pr.evaluations;
+    // SLSQP can run off (to 1e40 from a poor start): polish from whichever is better.
+    if (!(Cost(pr, p_nlopt) <= Cost(pr, initial))) {
+      p_nlopt = initial;
+      s.optimizer_result += " (worse than the initial guess: not used)";
+    }
   }
   // Re-anchor weights and variable scales at NLopt's answer for the polish.
   pr.p0 = p_nlopt;

@@ -49,6 +49,11 @@ struct LeastSquaresOptions {
   // Parameters held at their initial value (indices into the model's parameter vector, each at
   // most once): not fitted. Empty: all are fitted.
   std::vector<int> held;
+  // The initial guess is already close to the solution (the fit of nearly the same captures, as
+  // in a leave-one-out refit): skip the NLopt stage and run the Gauss-Newton polish from it. The
+  // polish converges to the same minimum by the same criterion; a polish that fails from there
+  // ends the solve as any failed polish does (the caller may retry without warm_start).
+  bool warm_start = false;
 
   std::string Validate() const;
 };

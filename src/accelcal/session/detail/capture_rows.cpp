@@ -24,15 +24,17 @@ constexpr int kFirst = 1;
 constexpr int kStepId = 1, kCaptureId = 2, kKind = 3, kLabel = 4, kRadius = 5, kRpm = 6,
               kUpAxis = 7, kRejection = 8, kN = 9, kSamples = 22;
 constexpr int kChecksum = kFirst + kCaptureChecksumColumnCount;
+constexpr int kSupersededBy = kChecksum + 1;  // version 5; NULL in older files read as they are
 
-std::string SelectSql(bool has_checksum, const std::string& where) {
+std::string SelectSql(bool has_checksum, bool has_superseded, const std::string& where) {
+  const char* superseded = has_superseded ? "superseded_by" : "NULL";
   if (has_checksum)
-    return fmt::format("SELECT seq, {}, checksum FROM captures {} ORDER BY seq",
-                       kCaptureChecksumColumns, where);
+    return fmt::format("SELECT seq, {}, checksum, {} FROM captures {} ORDER BY seq",
+                       kCaptureChecksumColumns, superseded, where);
   return fmt::format("SELECT seq, step_id, capture_id, kind, label, radius_m, rpm, up_axis, "
                      "rejection_reason, n, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL, "
-                     "NULL, NULL, NULL, samples, recorded_utc, NULL FROM captures {} ORDER BY seq",
-                     where);
+                     "NULL, NULL, NULL, samples, recorded_utc, NULL, {} FROM captures {} ORDER BY seq",
+                     superseded, where);
 }
 
 void AddStats(ChecksummedInsert& insert, const CaptureStats& stats) {
@@ -71,7 +73,9 @@ void ReadRow(const SqliteStatement& row, bool has_checksum, CaptureRows* out) {
     damaged.problem = ChecksumProblem(row, kFirst, kCaptureChecksumColumnCount, kChecksum);
   if (damaged.problem.empty()) {
     try {
-      out->intact.push_back({damaged.step_id, CaptureFromRow(row)});
+      JournalCapture intact{damaged.step_id, CaptureFromRow(row), ""};
+      if (!row.ColumnIsNull(kSupersededBy)) intact.superseded_by = row.ColumnText(kSupersededBy);
+      out->intact.push_back(std::move(intact));
       return;
     } catch (const Error& e) {
       damaged.problem = e.what();
@@ -82,8 +86,9 @@ void ReadRow(const SqliteStatement& row, bool has_checksum, CaptureRows* out) {
 
 CaptureRows ReadRows(SqliteDb& db, const std::string& where, const std::string& step_id) {
   const bool has_checksum = HasRowChecksums(db);
+  const bool has_superseded = HasColumn(db, "captures", "superseded_by");
   CaptureRows out;
-  SqliteStatement rows(db, SelectSql(has_checksum, where));
+  SqliteStatement rows(db, SelectSql(has_checksum, has_superseded, where));
   if (!step_id.empty()) rows.Bind(1, step_id);
   while (rows.Step()) ReadRow(rows, has_checksum, &out);
   return out;
@@ -124,5 +129,16 @@ void InsertCaptureRow(SqliteDb& db, const std::string& step_id, const Capture& c
 }
 
 CaptureRows ReadCaptureRows(SqliteDb& db) { return ReadRows(db, "", ""); }
+
+void MarkCaptureRowSuperseded(SqliteDb& db, const std::string& step_id, const std::string& by_step_id) {
+  const CaptureRows existing = ReadRows(db, "WHERE step_id = ?", step_id);
+  if (existing.intact.empty())
+    throw Error(fmt::format("session {}: step '{}' has no capture to supersede", db.path(), step_id));
+  if (!existing.intact.front().superseded_by.empty())
+    throw Error(fmt::format("session {}: the capture of step '{}' is already superseded by '{}'",
+                            db.path(), step_id, existing.intact.front().superseded_by));
+  SqliteStatement(db, "UPDATE captures SET superseded_by = ? WHERE step_id = ?")
+      .Bind(1, by_step_id).Bind(2, step_id).Run();
+}
 
 }  // namespace accelcal::detail

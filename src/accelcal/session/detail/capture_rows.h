@@ -23,5 +23,9 @@ struct CaptureRows {
 // sample count differs from n, or whose samples do not decode is damaged. Rows of a file older
 // than version 4 (read-only opens) have no checksum: only the sample count is checked.
 CaptureRows ReadCaptureRows(SqliteDb& db);
+// Marks the intact capture of `step_id` superseded by the one of `by_step_id` (a redo), inside
+// the caller's transaction. Throws accelcal::Error when `step_id` has no intact capture or its
+// capture is already superseded.
+void MarkCaptureRowSuperseded(SqliteDb& db, const std::string& step_id, const std::string& by_step_id);
 
 }  // namespace accelcal::detail

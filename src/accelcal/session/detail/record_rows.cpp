@@ -1,6 +1,7 @@
 #include "accelcal/session/detail/record_rows.h"
 
 #include <cmath>
+#include <optional>
 
 #include <fmt/core.h>
 
@@ -69,7 +70,7 @@ namespace {
 
 // Columns 0..7 are those of kChunkChecksumColumns, 8 the checksum (NULL in a file older than
 // version 4, read as it is), 9..11 the gap before the chunk.
-constexpr int kIndex = 1, kN = 2, kWallEnd = 5, kSamples = 6, kChecksum = 8, kGapStart = 9;
+constexpr int kIndex = 1, kN = 2, kTLast = 4, kWallEnd = 5, kSamples = 6, kChecksum = 8, kGapStart = 9;
 
 std::string SelectSql(bool has_checksum) {
   return fmt::format("SELECT c.step_id, c.chunk_index, c.n, c.t_first_s, c.t_last_s, c.wall_end_s, "
@@ -109,6 +110,15 @@ void AddDamageGap(const std::string& damage, double last_good_t_s, RecordChunk* 
   chunk->gap_before = gap;
 }
 
+// The hole that damaged last chunks leave after the last good one: to the end the damaged row
+// states (its t_last_s column, unverified: used only when it lies after the last good sample),
+// or of no length when it states none.
+void AddEndGap(const std::string& damage, double damaged_t_last_s, RecordChunk* chunk) {
+  const double t_start_s = chunk->samples.back().t_s;
+  const double t_end_s = std::isfinite(damaged_t_last_s) && damaged_t_last_s > t_start_s ? damaged_t_last_s : t_start_s;
+  chunk->gap_after = RecordGap{t_start_s, t_end_s, damage};
+}
+
 }  // namespace
 
 void VisitRecordRows(SqliteDb& db, const std::string& step_id,
@@ -117,21 +127,30 @@ void VisitRecordRows(SqliteDb& db, const std::string& step_id,
   const bool has_checksum = HasRowChecksums(db);
   SqliteStatement rows(db, SelectSql(has_checksum));
   rows.Bind(1, step_id);
-  std::string damage;  // of the chunks left out since the last one visited
+  std::string damage;  // of the chunks left out since the last good one
+  double damaged_t_last_s = std::nan("");  // as the last damaged row states it
   double last_good_t_s = std::nan("");
+  // The last good chunk is visited once the row after it is read: when the rows after it are
+  // all damaged, it carries their hole as its gap_after.
+  std::optional<RecordChunk> held;
   while (rows.Step()) {
     RecordChunk chunk;
     const std::string problem = ReadChunk(rows, has_checksum, &chunk);
     if (!problem.empty()) {
       damage += fmt::format("{}chunk {} is damaged in the session file ({}): left out",
                             damage.empty() ? "" : "; ", rows.ColumnInt(kIndex), problem);
+      damaged_t_last_s = rows.ColumnDouble(kTLast);
       continue;
     }
     if (!damage.empty()) AddDamageGap(damage, last_good_t_s, &chunk);
     damage.clear();
     last_good_t_s = chunk.samples.back().t_s;
-    visit(chunk);
+    if (held) visit(*held);
+    held = std::move(chunk);
   }
+  if (!held) return;  // no good chunk: nothing to read (RecordSummary still counts the rows)
+  if (!damage.empty()) AddEndGap(damage, damaged_t_last_s, &*held);
+  visit(*held);
 }
 
 std::vector<std::string> ReadRecordSteps(SqliteDb& db) {

@@ -18,7 +18,9 @@ void InsertRecordChunk(SqliteDb& db, const std::string& step_id, const RecordChu
 RecordSummary ReadRecordSummary(SqliteDb& db, const std::string& step_id);
 // Each chunk in order, decoded one at a time, checked: a chunk whose checksum (version 4) does
 // not match, whose sample count differs from n or whose blob is not whole samples is left out,
-// and the next one carries the hole as its gap_before, the damage in its reason.
+// and the next one carries the hole as its gap_before, the damage in its reason; damaged last
+// chunks are the last good chunk's gap_after (it is visited once the next row is read: two
+// chunks in memory at most).
 void VisitRecordRows(SqliteDb& db, const std::string& step_id,
                      const std::function<void(const RecordChunk&)>& visit);
 // Steps with record chunks, by their first chunk's order of insertion.

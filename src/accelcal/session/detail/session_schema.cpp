@@ -31,7 +31,7 @@ CREATE TABLE captures (
   comoment_xx_counts2 REAL, comoment_xy_counts2 REAL, comoment_xz_counts2 REAL,
   comoment_yy_counts2 REAL, comoment_yz_counts2 REAL, comoment_zz_counts2 REAL,
   t_first_s REAL, t_last_s REAL, mean_temp_c REAL,
-  samples BLOB NOT NULL, recorded_utc TEXT NOT NULL, checksum INTEGER);
+  samples BLOB NOT NULL, recorded_utc TEXT NOT NULL, checksum INTEGER, superseded_by TEXT);
 CREATE TABLE inputs (step_id TEXT NOT NULL, key TEXT NOT NULL, value TEXT NOT NULL,
   recorded_utc TEXT NOT NULL, PRIMARY KEY (step_id, key));
 CREATE TABLE steps_done (step_id TEXT PRIMARY KEY, outcome TEXT NOT NULL, recorded_utc TEXT NOT NULL);
@@ -75,6 +75,13 @@ void MigrateToChecksums(SqliteDb& db) {
       db.Exec(fmt::format("ALTER TABLE {} ADD COLUMN checksum INTEGER", table));
     StoreAllRowChecksums(db, table, columns);
   }
+}
+
+// Version 5: a capture taken again (a redo) is kept, marked superseded by the step id of the
+// capture that replaced it (NULL: current). Older files have no redone capture: all NULL.
+void MigrateToSuperseded(SqliteDb& db) {
+  if (!HasColumn(db, "captures", "superseded_by"))
+    db.Exec("ALTER TABLE captures ADD COLUMN superseded_by TEXT");
 }
 
 }  // namespace
@@ -154,6 +161,7 @@ void MigrateSessionSchema(SqliteDb& db) {
   if (version < 2 && !HasTable(db, "record_chunks")) db.Exec(kRecordTables);
   if (version < 3) db.Exec(kRenameComoments);
   if (version < 4) MigrateToChecksums(db);
+  if (version < 5) MigrateToSuperseded(db);
   db.Exec(fmt::format("PRAGMA user_version = {}", kSessionSchemaVersion));
   transaction.Commit();
 }

@@ -8,7 +8,10 @@
 //              up_axis, rejection_reason, n, mean_{x,y,z}_counts,
 //              comoment_{xx,xy,xz,yy,yz,zz}_counts2 (sum of (x - mean)(y - mean), version 3),
 //              t_first_s, t_last_s, mean_temp_c, samples (BLOB, see sample_blob.h), recorded_utc,
-//              checksum (of every other column, row_checksum.h; version 4)
+//              checksum (of every other column but superseded_by, row_checksum.h; version 4),
+//              superseded_by (version 5: the step id of the capture that replaced this one when
+//              it was taken again; NULL: current. A mark set after the row was written, so it
+//              is outside the checksum)
 //   inputs     (step_id, key) PRIMARY KEY, value, recorded_utc
 //   steps_done step_id PRIMARY KEY, outcome, recorded_utc
 //   results    seq, calibration_json (the calibration file's JSON text), recorded_utc
@@ -21,7 +24,8 @@
 // An older version is migrated by the first read-write open, in one transaction: version 1 gets
 // the two record tables; versions 1 and 2 get the co-moment columns' names (they were called
 // cov_*, for values that were always the co-moment); versions 1 to 3 get the checksum columns,
-// filled for the rows they hold (row_checksum.h). A read-only open of an older file reads it
+// filled for the rows they hold (row_checksum.h); versions 1 to 4 get captures.superseded_by
+// (NULL: no capture of theirs was ever taken again). A read-only open of an older file reads it
 // as it is (a version-1 file has no records; rows
 // of a file older than version 4 have no checksum to verify).
 //
@@ -34,7 +38,7 @@
 
 namespace accelcal::detail {
 
-inline constexpr int kSessionSchemaVersion = 4;
+inline constexpr int kSessionSchemaVersion = 5;
 inline constexpr int kSessionApplicationId = 0x41434331;  // "ACC1"
 
 // Creates the tables and the session row in a new, empty database (one transaction).

@@ -1,0 +1,29 @@
+// The welcome's equipment question: the procedure's [equipment] as the operator finds it on
+// the bench, edited in one line. Empty or "keep" keeps the procedure's; otherwise items separated by
+// ';', each a role (ruler, turntable, level, prism) and what changes: "id TEXT" (one word) and
+// "u NUMBER" in the procedure file's unit (mm, %, deg):
+//     ruler id RUL-07 u 0.4; turntable u 0.3
+// Recorded as the welcome's input "equipment" (as typed), read again on a resume and by
+// `accelcal report`, so every rendering lists the same items.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "accelcal/session/equipment.h"
+
+namespace accelcal {
+
+struct EquipmentAnswer {
+  std::vector<EquipmentItem> items;  // the procedure's with the edits applied
+  std::string error;                 // empty when the answer was understood
+  bool ok() const { return error.empty(); }
+};
+
+// `answer` applied to `items` (an item of a role the procedure does not list is added).
+EquipmentAnswer ApplyEquipmentAnswer(const std::string& answer, std::vector<EquipmentItem> items);
+
+// One line for the question's default: "ruler RUL-01 0.5 mm; turntable TT-01 0.2 %; ...".
+std::string DescribeEquipment(const std::vector<EquipmentItem>& items);
+
+}  // namespace accelcal

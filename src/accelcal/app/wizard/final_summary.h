@@ -1,0 +1,24 @@
+// The wizard's last word: the verdict (PASS / FAIL / INCOMPLETE / NO LIMITS STATED), the limits
+// failed, the calibration's headline numbers with their 1-sigma uncertainties (bias, scale,
+// misalignment, residual RMS) and the paths of the report files. Shown on the final screen, left
+// on the terminal after the TUI exits and printed at the end of line mode; built from the report
+// model (report/report_model.h), so it never says other numbers than the report.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "accelcal/report/report_model.h"
+
+namespace accelcal {
+
+struct FinalSummary {
+  Verdict verdict = Verdict::kNoLimits;
+  // "Verdict: PASS", then the failed limits and what is missing, the headline numbers, the
+  // report paths (report paths aside, within 80 columns).
+  std::vector<std::string> lines;
+};
+
+FinalSummary BuildFinalSummary(const ReportModel& report, const std::vector<std::string>& report_paths);
+
+}  // namespace accelcal

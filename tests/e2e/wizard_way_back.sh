@@ -1,0 +1,50 @@
+#!/usr/bin/env bash
+# Issue 15, the way back and the bench, in line mode on the virtual bench (the real binary):
+#  1. redo: b on the step after an accepted capture asks to take it again; n keeps it; b and
+#     Enter take it again; the old capture stays in the session, superseded, and out of the
+#     export and the report;
+#  2. the resume summary lists the steps in the procedure's order by title;
+#  3. the diagnosis on effects_demo's bench (radius 3 mm long, a quadratic response) in plain
+#     words with the recommended choice, the statistics on d.
+# Usage: bash wizard_way_back.sh ACCELCAL SOURCE_DIR SHARED_DATA_DIR
+set -euo pipefail
+accelcal=$1
+source_dir=$2
+. "$source_dir/tests/e2e/lib/common.bash"
+. "$source_dir/tests/e2e/lib/clumsy.bash"
+short_procedure
+
+# 1. Welcome 4, noise floor 1, leveling 3, then +z up captured; at -z up: b, n, b, Enter, Enter.
+wizard bench_default.toml "$work/redo.db" "$(printf '\\n%.0s' $(seq 9))b\\nn\\nb\\n\\n\\n"
+said "Take '+z up' again? Its capture 1 was accepted."
+said "Enter takes it again, b looks further back, n keeps it."
+said "Taking '+z up' again: capture 1 stays until this one is accepted"
+said "'+z up' taken again: capture 2 replaces capture 1 (kept in the session, marked superseded, out of the fit and the report)."
+said "Verdict: PASS"
+expect 0 "$accelcal" export "$work/redo.db" -o "$work/redo.csv"
+grep -q "18 captures of session" "$work/out" || fail "export: $(cat "$work/out")"
+grep -q "not written: 1 capture taken again (superseded by the redo)" "$work/err" || fail "export did not name the superseded capture"
+grep -v '^#' "$work/redo.csv" | tail -n +2 | cut -d, -f1 | sort -u > "$work/ids"
+grep -qx 1 "$work/ids" && fail "the superseded capture 1 was exported"
+grep -qx 2 "$work/ids" || fail "the redo's capture 2 was not exported"
+"$accelcal" report "$work/redo.db" > "$work/report"
+flat "$work/report" "18 captures: 18 used by the fit, 0 left out." || fail "the report does not hold the 18 current captures"
+grep -Eq '^ +1 \+z up ' "$work/report" && fail "the report lists the superseded capture 1"
+
+# 2. Quit after +z up and a skipped -z up; the rerun lists what the session holds, in order.
+wizard bench_default.toml "$work/resume.db" "$(printf '\\n%.0s' $(seq 9))s\\ns\\nq\\n"
+wizard bench_default.toml "$work/resume.db" 'q\n'
+said "Resuming session"
+said "Welcome: done Level the table: done +z up: done (capture 1) -z up: skipped"
+grep -q "done: pose_\|done: welcome" "$work/out" && fail "the summary still shows internal ids"
+
+# 3. The diagnosis: welcome 4, noise floor 1, leveling 3, 9 poses, 9 runs x 3, fit 1 = 45
+#    answers, then d (statistics), d (plain again), Enter (the recommended choice).
+wizard effects_demo.toml "$work/fx.db" "$(printf '\\n%.0s' $(seq 45))d\\nd\\n\\n"
+said "- the turntable radius seems"
+said "mm longer than entered"
+said "- the sensor's output is not quite a straight line: at 1 g it bends by"
+said "correct the bench and the sensor's model and refit (recommended), or keep the basic model?"
+said "BIC"
+said "Effects adopted: radius_offset"
+echo "wizard_way_back: ok"

@@ -1,0 +1,65 @@
+// The fast decimal scan (issue 18) against std::from_chars, the reference: every token it takes
+// gives the very same double (bit for bit, sign of zero included), and what it declines is left
+// to from_chars (so errors stay worded as before).
+#include "accelcal/base/decimal_scan.h"
+
+#include <charconv>
+#include <cstring>
+#include <random>
+#include <string>
+
+#include <gtest/gtest.h>
+
+namespace accelcal::detail {
+namespace {
+
+bool SameBits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+
+// Scans `token`; when taken, checks it against from_chars. Returns whether it was taken.
+bool TakenAndExact(const std::string& token) {
+  double fast = 0.0;
+  const char* b = token.data();
+  const char* e = b + token.size();
+  if (!ScanSimpleDecimal(b, e, &fast)) return false;
+  double ref = 0.0;
+  const auto [next, ec] = std::from_chars(b, e, ref);
+  EXPECT_TRUE(ec == std::errc() && next == e) << "taken but from_chars refuses '" << token << "'";
+  EXPECT_TRUE(SameBits(fast, ref)) << token << ": " << fast << " vs " << ref;
+  return true;
+}
+
+TEST(DecimalScan, TakesTheFormsOfSampleTablesExactly) {
+  for (const char* t : {"0", "-0", "33096", "-12", "0.03987", "2.9840000e-02", "3.3108000e+04",
+                        "1e22", "9007199254740992", "-0.0", "123.456E3", "1.5e-7", "24.5"})
+    EXPECT_TRUE(TakenAndExact(t)) << t;
+}
+
+TEST(DecimalScan, LeavesEverythingElseToFromChars) {
+  for (const char* t : {"", "-", ".5", "5.", "1e", "1e+", "+1", "--1", "1x", "0x1p3", "inf", "nan",
+                        "1e23", "1e-23", "9007199254740993", "12345678901234567890", "1,5", "1e00001",
+                        " 1", "1 "})
+    EXPECT_FALSE(TakenAndExact(t)) << t;
+}
+
+TEST(DecimalScan, RandomTokensAgreeWithFromCharsBitForBit) {
+  std::mt19937_64 rng(18);
+  std::uniform_int_distribution<int> len(1, 18), digit(0, 9), exp(-30, 30), coin(0, 3);
+  int taken = 0;
+  for (int i = 0; i < 200000; ++i) {
+    std::string t;
+    if (coin(rng) == 0) t += '-';
+    const int n = len(rng);
+    const int point = coin(rng) == 0 ? -1 : std::uniform_int_distribution<int>(1, n)(rng);
+    for (int k = 0; k < n; ++k) {
+      if (k == point) t += '.';
+      t += static_cast<char>('0' + digit(rng));
+    }
+    if (point == n) t += "0";
+    if (coin(rng) == 0) t += (coin(rng) < 2 ? "e" : "E") + std::to_string(exp(rng));
+    taken += TakenAndExact(t);
+  }
+  EXPECT_GT(taken, 100000);  // the common forms do take the fast path
+}
+
+}  // namespace
+}  // namespace accelcal::detail

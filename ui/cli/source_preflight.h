@@ -1,0 +1,16 @@
+// What is checked about a sample source before a command creates anything (a session file): a
+// serial port must exist. While a session runs a port that goes away (a cable pulled) is waited
+// for and retried (acquire/source/source_spec.h); at the start, a port that is not there is a
+// mistyped name or an adapter not plugged in, and a session file made for it would only be
+// litter for `accelcal sessions`.
+#pragma once
+
+#include <string>
+
+namespace accelcal::cli {
+
+// Throws accelcal::Error naming the port and what to check when `spec` is serial:DEVICE@BAUD
+// and DEVICE does not exist. Other specs are left to OpenSource.
+void RefuseAbsentSerialPort(const std::string& spec);
+
+}  // namespace accelcal::cli

@@ -1,0 +1,25 @@
+// The capture flow's blocks (issue 15): the confirmation of an accepted capture, the time line
+// (this capture, its give-up, the session's estimate), the figures behind a message (one key
+// away: `d`), and the final verdict. Stacked by ui/tui/render.cpp with the other blocks.
+#pragma once
+
+#include <vector>
+
+#include "accelcal/app/wizard/wizard_view.h"
+#include "tui/render.h"
+#include "tui/screen_model.h"
+
+namespace accelcal::ui {
+
+// "[DONE] +z up done: 10.0 s, |a| ~10.12 m/s^2 by the datasheet, noise 1.6 counts"; empty without one.
+std::vector<Line> NoticeBlock(const WizardView& view, int width);
+// "time     4 s left of this capture; gives up in 52 s; session: about 14 min left (estimate)",
+// wrapped; empty without a time.
+std::vector<Line> TimeBlock(const WizardView& view, int width);
+// With `state.details`: the figures behind the message, wrapped; without: nothing (the keys
+// line offers `d`).
+std::vector<Line> DetailBlock(const WizardView& view, const RenderState& state, int width);
+// The final screen's verdict, marked and coloured by its outcome: "[PASS] Verdict: PASS".
+std::vector<Line> VerdictBlock(const WizardView& view, int width);
+
+}  // namespace accelcal::ui
