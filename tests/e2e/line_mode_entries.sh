@@ -16,9 +16,9 @@ seed="$src/procedures/seed_calibration.toml"
     $0 ~ "\\[\\[step\\]\\]\nid = \"tt_x_050\"" { sub(/^[^[]*\[\[step\]\]/, "[[step]]"); print }' "$seed"
 } > "$work/tt.toml"
 
-# Welcome: "?" then four defaults (one of them blanks); radius: a speed, "?", a decimal comma;
+# Welcome: "?" then five defaults (the last the equipment) (one of them blanks); radius: a speed, "?", a decimal comma;
 # speed: the default (600 rpm, refused), then q.
-printf '?\n\n   \n\n\n600 rpm\n?\n0,05\n\nq\n' |
+printf '?\n\n   \n\n\n\n600 rpm\n?\n0,05\n\nq\n' |
   "$accelcal" wizard --source sim --speed 0 --plain --procedure "$work/tt.toml" --session "$work/l.db" \
   > "$work/out" 2>&1 || fail "exit status $?"
 squeezed=$(tr -s ' \n' ' ' < "$work/out")

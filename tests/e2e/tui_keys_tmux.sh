@@ -66,7 +66,7 @@ keep welcome_help
 send Enter  # closes the help only
 wait_for "Device serial number"
 screen | grep -q 'answer \[SIM-0001\]: _' || fail "the key that closed the help did something else"
-for i in 1 2 3 4; do send Enter; done
+for i in 1 2 3 4 5; do send Enter; done  # the rest of the welcome (its last: the equipment)
 
 # --- The radius: letters are typed, the bar offers the untypable keys.
 wait_for "Radius from the spin axis"

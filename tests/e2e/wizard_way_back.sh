@@ -14,8 +14,8 @@ source_dir=$2
 . "$source_dir/tests/e2e/lib/clumsy.bash"
 short_procedure
 
-# 1. Welcome 4, noise floor 1, leveling 3, then +z up captured; at -z up: b, n, b, Enter, Enter.
-wizard bench_default.toml "$work/redo.db" "$(printf '\\n%.0s' $(seq 9))b\\nn\\nb\\n\\n\\n"
+# 1. Welcome 5, noise floor 1, leveling 3, then +z up captured; at -z up: b, n, b, Enter, Enter.
+wizard bench_default.toml "$work/redo.db" "$(printf '\\n%.0s' $(seq 10))b\\nn\\nb\\n\\n\\n"
 said "Take '+z up' again? Its capture 1 was accepted."
 said "Enter takes it again, b looks further back, n keeps it."
 said "Taking '+z up' again: capture 1 stays until this one is accepted"
@@ -32,15 +32,20 @@ flat "$work/report" "18 captures: 18 used by the fit, 0 left out." || fail "the 
 grep -Eq '^ +1 \+z up ' "$work/report" && fail "the report lists the superseded capture 1"
 
 # 2. Quit after +z up and a skipped -z up; the rerun lists what the session holds, in order.
-wizard bench_default.toml "$work/resume.db" "$(printf '\\n%.0s' $(seq 9))s\\ns\\nq\\n"
+wizard bench_default.toml "$work/resume.db" "$(printf '\\n%.0s' $(seq 10))s\\ns\\nq\\n"
 wizard bench_default.toml "$work/resume.db" 'q\n'
 said "Resuming session"
 said "Welcome: done Level the table: done +z up: done (capture 1) -z up: skipped"
 grep -q "done: pose_\|done: welcome" "$work/out" && fail "the summary still shows internal ids"
 
-# 3. The diagnosis: welcome 4, noise floor 1, leveling 3, 9 poses, 9 runs x 3, fit 1 = 45
+# 3. The diagnosis: welcome 5, noise floor 1, leveling 3, 9 poses, 9 runs x 3, fit 1 = 46
 #    answers, then d (statistics), d (plain again), Enter (the recommended choice).
-wizard effects_demo.toml "$work/fx.db" "$(printf '\\n%.0s' $(seq 45))d\\nd\\n\\n"
+#    effects_demo's long radius and bent response put the uncalibrated centripetal reading near
+#    the capture check's 10 % (some runs refused, each refusal one more answer): 20 % here, since
+#    this part checks the diagnosis's words, not the capture check (clumsy_wrong_radius does).
+sed -i 's/^turntable_tolerance = 0.10 /turntable_tolerance = 0.20 /' "$work/short.toml"
+grep -q '^turntable_tolerance = 0.20 ' "$work/short.toml" || fail "short procedure: no turntable_tolerance"
+wizard effects_demo.toml "$work/fx.db" "$(printf '\\n%.0s' $(seq 46))d\\nd\\n\\n"
 said "- the turntable radius seems"
 said "mm longer than entered"
 said "- the sensor's output is not quite a straight line: at 1 g it bends by"
