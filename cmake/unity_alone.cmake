@@ -21,6 +21,7 @@ set(_accelcal_unity_alone
   tests/unit/wizard_record_test.cpp
   tests/unit/spike_reason_test.cpp
   tests/unit/capture_set_writer_test.cpp
+  src/accelcal/app/wizard/resume_summary.cpp
 )
 # Source file properties belong to a directory: set them where the targets using the files live.
 set(_accelcal_unity_dirs ${CMAKE_SOURCE_DIR})
