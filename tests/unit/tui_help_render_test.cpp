@@ -9,22 +9,11 @@
 #include <gtest/gtest.h>
 
 #include "tui/render.h"
+#include "tui_golden.h"
 #include "tui_test_views.h"
 
 namespace accelcal::ui {
 namespace {
-
-void ExpectGolden(const std::string& name, const ScreenModel& screen) {
-  const std::string path = std::string(ACCELCAL_SOURCE_DIR) + "/tests/data/tui/" + name + ".txt";
-  const std::string text = screen.Text();
-  const char* update = std::getenv("ACCELCAL_UPDATE_GOLDEN");
-  if (update != nullptr && std::string(update) == "1") std::ofstream(path) << text;
-  std::ifstream in(path);
-  ASSERT_TRUE(in) << "missing golden file " << path;
-  std::stringstream golden;
-  golden << in.rdbuf();
-  EXPECT_EQ(golden.str(), text) << name << " rendered as:\n" << text;
-}
 
 // The radius asked at a turntable step, as the engine offers it (its keys by letter).
 WizardView RadiusView() {

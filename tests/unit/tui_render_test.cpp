@@ -9,29 +9,13 @@
 
 #include "test_support.h"
 #include "tui/render.h"
+#include "tui_golden.h"
 #include "tui_test_views.h"
 
 namespace accelcal::ui {
 namespace {
 
 using accelcal::testing::Contains;
-
-std::string GoldenPath(const std::string& name) {
-  return std::string(ACCELCAL_SOURCE_DIR) + "/tests/data/tui/" + name + ".txt";
-}
-
-void ExpectGolden(const std::string& name, const ScreenModel& screen) {
-  const std::string text = screen.Text();
-  const char* update = std::getenv("ACCELCAL_UPDATE_GOLDEN");
-  if (update != nullptr && std::string(update) == "1") {
-    std::ofstream(GoldenPath(name)) << text;
-  }
-  std::ifstream in(GoldenPath(name));
-  ASSERT_TRUE(in) << "missing golden file " << GoldenPath(name);
-  std::stringstream golden;
-  golden << in.rdbuf();
-  EXPECT_EQ(golden.str(), text) << name << " rendered as:\n" << text;
-}
 
 TEST(TuiRender, WelcomeWithInput80x24) {
   ExpectGolden("welcome_80x24", Render(accelcal::testing::WelcomeView(), {"Ann", 0}, 80, 24));
