@@ -22,6 +22,15 @@ set(_accelcal_unity_alone
   tests/unit/spike_reason_test.cpp
   tests/unit/capture_set_writer_test.cpp
   src/accelcal/app/wizard/resume_summary.cpp
+  tests/unit/leveling_test.cpp
+  tests/unit/wizard_engine_test.cpp
+  tests/unit/wizard_level_offset_test.cpp
+  tests/unit/wizard_redo_test.cpp
+  tests/unit/wizard_resume_summary_test.cpp
+  tests/unit/certificate_test.cpp
+  tests/unit/wizard_checks_test.cpp
+  tests/physics/apply_check.cpp
+  bench/capture_engine_bench.cpp
 )
 # Source file properties belong to a directory: set them where the targets using the files live.
 set(_accelcal_unity_dirs ${CMAKE_SOURCE_DIR})
