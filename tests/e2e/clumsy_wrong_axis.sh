@@ -16,4 +16,10 @@ said "hint: stop the table, mount the sensor +x radial, +z up as asked and start
 said "Verdict: PASS"
 calibration "$work/s.db"
 within_truth 4
+# The finished session opened again says its verdict and numbers, not a bare "complete".
+mv "$work/out" "$work/first_out"
+wizard clumsy_wrong_axis.toml "$work/s.db" ''
+said "Verdict: PASS"
+said "bias (counts)"
+said "Calibration complete (in an earlier run): nothing left to do."
 echo "clumsy_wrong_axis: ok"

@@ -4,6 +4,7 @@
 // The engine runs on the clumsy bench (scenarios/clumsy_bump.toml: a knock during the tilted
 // pose +x+y+z) at speed 0; line mode through its real Printer.
 #include <cmath>
+#include <memory>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -226,7 +227,7 @@ TEST(CaptureFlow, TheFinalScreenSaysTheVerdictTheNumbersAndTheFiles) {
   const WizardView& v = views.back();
   ASSERT_TRUE(v.finished);
   EXPECT_EQ(v.verdict, "PASS");
-  EXPECT_EQ(v.prompt, "Calibration complete: PASS.");
+  EXPECT_EQ(v.prompt, "Calibration complete.");  // the verdict once, in the lines
   ASSERT_FALSE(v.lines.empty());
   EXPECT_EQ(v.lines.front(), "Verdict: PASS");
   const std::string all = [&] {
@@ -253,6 +254,25 @@ TEST(CaptureFlow, AFailedLimitIsNamedOnTheFinalScreen) {
   EXPECT_EQ(v.lines[1].rfind("  limit failed: ", 0), 0u) << v.lines[1];
 }
 
+// Reproduces a defect: a finished session opened again said only "Calibration complete.", with
+// no verdict and no numbers.
+TEST(CaptureFlow, AFinishedSessionOpenedAgainShowsItsSummary) {
+  std::shared_ptr<SessionJournal> journal(MakeMemoryJournal());
+  std::vector<std::string> first_lines;
+  {
+    testing::WizardRig rig(ShortProcedure(), Clumsy("clumsy_bump.toml"), journal);
+    const WizardView last = WholeSession(rig.engine).back();
+    ASSERT_EQ(last.verdict, "PASS");
+    first_lines = last.lines;
+  }
+  testing::WizardRig again(ShortProcedure(), Clumsy("clumsy_bump.toml"), journal);
+  const WizardView v = again.engine.View();
+  ASSERT_TRUE(v.finished);
+  EXPECT_EQ(v.verdict, "PASS");
+  EXPECT_EQ(v.prompt, "Calibration complete (in an earlier run): nothing left to do.");
+  EXPECT_EQ(v.lines, first_lines);  // the same verdict and numbers, computed from the journal
+}
+
 // ---- line mode ------------------------------------------------------------------------------
 
 TEST(CaptureFlow, LineModeSaysTheWordsTheDetailTheTimeTheConfirmationAndTheVerdict) {
@@ -269,8 +289,11 @@ TEST(CaptureFlow, LineModeSaysTheWordsTheDetailTheTimeTheConfirmationAndTheVerdi
   EXPECT_TRUE(Contains(text, "s left of this capture; gives up in ")) << tail;
   EXPECT_TRUE(Contains(text, "(estimate)")) << tail;
   EXPECT_TRUE(Contains(text, "\n  +z up done: 3.0 s, |a| ~")) << tail;
-  EXPECT_TRUE(Contains(text, "Calibration complete: PASS.")) << tail;
   EXPECT_TRUE(Contains(text, "  Verdict: PASS\n")) << tail;
+  // The final summary says the verdict once: its prompt does not repeat it.
+  const std::string summary = text.substr(text.rfind("  Verdict: PASS\n"));
+  EXPECT_TRUE(Contains(summary, "\nCalibration complete.\n")) << summary;
+  EXPECT_FALSE(Contains(summary, "complete: PASS")) << summary;
   EXPECT_TRUE(Contains(text, "  bias (counts)")) << tail;
   // The statistics never on a main line: every line with "sigma" is a detail line.
   std::istringstream lines(text);

@@ -92,7 +92,7 @@ WizardView VerdictView() {
   v.step_title = "Done";
   v.finished = true;
   v.verdict = "PASS";
-  v.prompt = "Calibration complete: PASS.";
+  v.prompt = "Calibration complete.";
   v.lines = {
       "Verdict: PASS",
       "bias (counts)        x 2051.31 +- 0.12  y 2039.58 +- 0.12  z 2062.83 +- 0.13",
@@ -157,6 +157,11 @@ TEST(TuiCaptureFlow, TheFinalScreenShowsTheVerdict100x30) {
   ExpectGolden("flow_verdict_100x30", s);
   EXPECT_EQ(s.RoleAt(2, 0), Role::kPass);
   EXPECT_TRUE(Contains(s.Text(), "[PASS] Verdict: PASS"));
+  // Said once: the summary's own "Verdict: PASS" line is the block above, not repeated below.
+  const std::string text = s.Text();
+  size_t said = 0;
+  for (size_t at = text.find("PASS"); at != std::string::npos; at = text.find("PASS", at + 1)) ++said;
+  EXPECT_EQ(said, 2u) << text;  // "[PASS] Verdict: PASS" and nowhere else
   EXPECT_TRUE(Contains(s.Text(), "bench.db.report.html"));
 }
 
@@ -171,7 +176,7 @@ TEST(TuiCaptureFlow, AFailingVerdictIsMarkedAsAFailure) {
 TEST(TuiExitSummary, TheVerdictAndNumbersStayOnTheTerminal) {
   std::ostringstream out;
   PrintExitSummary(VerdictView(), out);
-  EXPECT_EQ(out.str().rfind("Calibration complete: PASS.\n  Verdict: PASS\n  bias (counts)", 0), 0u) << out.str();
+  EXPECT_EQ(out.str().rfind("Calibration complete.\n  Verdict: PASS\n  bias (counts)", 0), 0u) << out.str();
   EXPECT_TRUE(Contains(out.str(), "  Report: /home/tech/")) << out.str();
 }
 

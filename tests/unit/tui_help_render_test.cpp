@@ -61,6 +61,28 @@ TEST(TuiHelpRender, CommandScreenKeysAreLettersAndHelp) {
   EXPECT_NE(keys.find("? help"), std::string::npos) << keys;
 }
 
+// Reproduces a defect: at 60 columns the bar ended in "? he", the help key cut in its word.
+TEST(TuiHelpRender, ANarrowKeyBarKeepsQuitAndHelpWholeAndCutsNoWord) {
+  for (int width : {40, 60}) {
+    WizardView v = accelcal::testing::StaticPoseView();
+    v.keys.push_back({"Enter", "refit (recommended)"});
+    const std::string keys = LastRow(Render(v, {}, width, 20));
+    EXPECT_EQ(keys.rfind("q save and quit  ? help", 0), 0u) << keys;
+    // Every entry shown is whole: the bar ends in an action the view offers, not a cut word.
+    std::string trimmed = keys.substr(0, keys.find_last_not_of(' ') + 1);
+    bool ends_whole = trimmed.size() >= 6 && trimmed.compare(trimmed.size() - 6, 6, "? help") == 0;
+    for (const KeyHint& k : v.keys) {
+      for (const std::string& action : {k.action, k.action.substr(0, k.action.find(" ("))}) {
+        const std::string entry = k.key + " " + action;
+        if (trimmed.size() >= entry.size() &&
+            trimmed.compare(trimmed.size() - entry.size(), entry.size(), entry) == 0)
+          ends_whole = true;
+      }
+    }
+    EXPECT_TRUE(ends_whole) << width << " columns: " << keys;
+  }
+}
+
 TEST(TuiHelpRender, HelpOverATextField) {
   RenderState state;
   state.edit_text = "12";

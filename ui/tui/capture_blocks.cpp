@@ -42,4 +42,11 @@ std::vector<Line> VerdictBlock(const WizardView& view, int width) {
   return Led(mark, "Verdict: " + view.verdict, width, role, role);
 }
 
+std::vector<std::string> ScreenTextLines(const WizardView& view, int width) {
+  std::vector<std::string> lines = view.lines;
+  if (!view.verdict.empty() && !lines.empty() && lines.front() == "Verdict: " + view.verdict)
+    lines.erase(lines.begin());
+  return WrapLines(lines, width);
+}
+
 }  // namespace accelcal::ui

@@ -3,6 +3,7 @@
 // away: `d`), and the final verdict. Stacked by ui/tui/render.cpp with the other blocks.
 #pragma once
 
+#include <string>
 #include <vector>
 
 #include "accelcal/app/wizard/wizard_view.h"
@@ -21,5 +22,9 @@ std::vector<Line> TimeBlock(const WizardView& view, int width);
 std::vector<Line> DetailBlock(const WizardView& view, const RenderState& state, int width);
 // The final screen's verdict, marked and coloured by its outcome: "[PASS] Verdict: PASS".
 std::vector<Line> VerdictBlock(const WizardView& view, int width);
+// The view's text lines as the TUI shows them, fitted to `width`: on the final screen without
+// the summary's "Verdict: ..." line, which VerdictBlock already draws above them (line mode and
+// the exit summary print it, having no verdict block). Scrolling counts these lines.
+std::vector<std::string> ScreenTextLines(const WizardView& view, int width);
 
 }  // namespace accelcal::ui

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 
+#include "tui/capture_blocks.h"
 #include "tui/text_util.h"
 
 namespace accelcal::ui {
@@ -17,7 +18,7 @@ bool IsPrintable(int key) { return key >= 32 && key < 127; }
 
 // Scrolling works on every screen; returns nothing for other keys.
 std::optional<KeyOutcome> Scroll(const WizardView& view, EditState& state, int key) {
-  const int last = std::max(static_cast<int>(WrapLines(view.lines, state.width).size()) - 1, 0);
+  const int last = std::max(static_cast<int>(ScreenTextLines(view, state.width).size()) - 1, 0);
   int to = state.scroll;
   switch (key) {
     case kKeyUp: to -= 1; break;

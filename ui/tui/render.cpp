@@ -111,7 +111,7 @@ ScreenModel Render(const WizardView& view, const RenderState& state, int width, 
   Shrink(blocks, middle_rows);
   const int free_rows = middle_rows - Rows(blocks);
   // Lines wider than the screen are wrapped, never cut at the right edge.
-  const std::vector<std::string> lines = WrapLines(view.lines, width);
+  const std::vector<std::string> lines = ScreenTextLines(view, width);
   const bool scrollable = static_cast<int>(lines.size()) > free_rows;
   // The status sits just above the keys; the text lines take the rows in between.
   const std::vector<Line> status = std::move(blocks.back().lines);
@@ -125,7 +125,7 @@ ScreenModel Render(const WizardView& view, const RenderState& state, int width, 
   row = height - 1 - static_cast<int>(status.size());
   for (const Line& line : status) screen.PutLine(row++, 0, line);
   screen.PutLine(height - 1, 0,
-                 KeysLine(view, scrollable && !lines.empty(), !state.edit_text.empty()));
+                 KeysLine(view, scrollable && !lines.empty(), !state.edit_text.empty(), width));
   return screen;
 }
 

@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include <fmt/core.h>
 
@@ -15,6 +18,19 @@
 namespace accelcal::ui {
 
 namespace {
+
+// "refit (recommended)" -> "refit": a key bar's action without its remarks in brackets.
+std::string WithoutRemarks(const std::string& action) {
+  std::string out;
+  int depth = 0;
+  for (char c : action) {
+    if (c == '(') ++depth;
+    if (depth == 0) out += c;
+    if (c == ')' && depth > 0) --depth;
+  }
+  while (!out.empty() && out.back() == ' ') out.pop_back();
+  return out;
+}
 
 constexpr int kBarCells = 16;
 constexpr int kLabelWidth = 9;  // "stable   " and the like, so the values line up
@@ -213,33 +229,51 @@ std::vector<Line> StatusBlock(const WizardView& view) {
   return {{{Asciify(view.status), Role::kDim}}};
 }
 
-Line KeysLine(const WizardView& view, bool scrollable, bool typed) {
-  Line line;
-  auto add = [&line](const std::string& key, const std::string& action) {
-    if (!line.empty()) line.push_back({"  ", Role::kNormal});
-    line.push_back({Asciify(key), Role::kTitle});
-    line.push_back({" " + Asciify(action), Role::kNormal});
+Line KeysLine(const WizardView& view, bool scrollable, bool typed, int width) {
+  std::vector<std::pair<std::string, std::string>> entries;  // key, action
+  auto add = [&entries](const std::string& key, const std::string& action) {
+    entries.emplace_back(Asciify(key), Asciify(action));
   };
   if (view.finished) {
     add("any key", "leave");
   } else {
-    // q works at any moment; it comes first so that a narrow terminal still shows it.
+    // q and ? work at any moment (help names every other key); they come first so that a
+    // narrow terminal still shows them.
     const bool text_field = view.input.has_value();
     std::string quit_action = "save and quit";
     for (const KeyHint& hint : view.keys) {
       if (hint.key == "q") quit_action = hint.action;
     }
     add(KeyName("q", text_field), quit_action);
+    add("?", "help");
     for (const KeyHint& hint : view.keys) {
       if (hint.key == "q") continue;
       const std::string key = KeyName(hint.key, text_field);
       if (key.empty()) continue;  // a letter: it would be typed, not obeyed
       add(key, key == "Esc" && typed ? "clear" : hint.action);
     }
-    add("?", "help");
   }
   if (!view.finished && !view.detail.empty()) add("d", "figures");
   if (scrollable) add("PgUp/PgDn", "scroll");
+  // Too wide: the actions lose their remarks in brackets first ("refit (recommended)": the
+  // question says it), then the last entries are left off whole, never cut in a word.
+  auto width_of = [](const std::vector<std::pair<std::string, std::string>>& all) {
+    int total = 0;
+    for (const auto& [key, action] : all) total += (total == 0 ? 0 : 2) + static_cast<int>(key.size() + 1 + action.size());
+    return total;
+  };
+  if (width > 0 && width_of(entries) > width)
+    for (auto& entry : entries) entry.second = WithoutRemarks(entry.second);
+  Line line;
+  int used = 0;
+  for (const auto& [key, action] : entries) {
+    const int cost = (line.empty() ? 0 : 2) + static_cast<int>(key.size() + 1 + action.size());
+    if (width > 0 && used + cost > width && !line.empty()) break;
+    if (!line.empty()) line.push_back({"  ", Role::kNormal});
+    line.push_back({key, Role::kTitle});
+    line.push_back({" " + action, Role::kNormal});
+    used += cost;
+  }
   return line;
 }
 

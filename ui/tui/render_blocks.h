@@ -24,7 +24,8 @@ std::vector<Line> ProblemBlock(const WizardView& view, int width);
 std::vector<Line> InputBlock(const WizardView& view, const RenderState& state, int width);
 std::vector<Line> StatusBlock(const WizardView& view);
 // The keys that work now, named as the TUI sends them (tui/keys.h KeyName: in a text field the
-// navigation has keys that cannot be typed; Esc clears first when text is `typed`), then the help.
-Line KeysLine(const WizardView& view, bool scrollable, bool typed = false);
+// navigation has keys that cannot be typed; Esc clears first when text is `typed`), after the
+// two that always work (quit and help). Within `width` columns (0: no limit) whole entries only.
+Line KeysLine(const WizardView& view, bool scrollable, bool typed = false, int width = 0);
 
 }  // namespace accelcal::ui

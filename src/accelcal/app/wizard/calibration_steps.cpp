@@ -155,6 +155,21 @@ StepOutcome CalibrationSteps::Diagnosis() {
   return out;
 }
 
+ReportInputs CalibrationSteps::Inputs(const Calibration& cal, const ReportMeta& meta,
+                                      const SessionGaps& gaps) const {
+  ReportInputs in;
+  in.calibration = cal;
+  in.meta = meta;
+  FillMetaFromInputs(model_.inputs(), &in.meta);  // what was typed wins over the defaults
+  for (const JournalCapture& c : model_.captures())
+    if (!c.superseded()) in.captures.push_back(c.capture);
+  in.limits = procedure_.limits;
+  in.equipment = equipment_;
+  in.nominal_bias_counts = procedure_.nominal.bias_counts;
+  in.gaps = gaps;
+  return in;
+}
+
 StepOutcome CalibrationSteps::Report(bool adopt_effects, const ReportMeta& meta,
                                      const SessionGaps& session_gaps) {
   const CalibrationOutcome& o = Run();
@@ -175,16 +190,7 @@ StepOutcome CalibrationSteps::Report(bool adopt_effects, const ReportMeta& meta,
   out.lines.insert(out.lines.begin(), gravity.begin(), gravity.end());
   out.lines.push_back(adopt ? fmt::format("Effects adopted: {}", fmt::join(o.diagnosis.adopted_names(), ", "))
                             : "Model: the nine-parameter base model");
-  ReportInputs in;
-  in.calibration = cal;
-  in.meta = meta;
-  FillMetaFromInputs(model_.inputs(), &in.meta);  // what was typed wins over the defaults
-  for (const JournalCapture& c : model_.captures())
-    if (!c.superseded()) in.captures.push_back(c.capture);
-  in.limits = procedure_.limits;
-  in.equipment = equipment_;
-  in.nominal_bias_counts = procedure_.nominal.bias_counts;
-  in.gaps = gaps;
+  const ReportInputs in = Inputs(cal, meta, gaps);
   const ReportModel verdict = BuildReportModel(in);
   out.lines.push_back(fmt::format("Verdict: {}", VerdictToString(verdict.verdict)));
   for (const SessionGaps::Step& s : gaps.steps)
@@ -204,6 +210,17 @@ StepOutcome CalibrationSteps::Report(bool adopt_effects, const ReportMeta& meta,
   }
   final_summary_ = BuildFinalSummary(verdict, paths);
   return out;
+}
+
+void CalibrationSteps::Recap(bool adopt_effects, const ReportMeta& meta, const SessionGaps& session_gaps) {
+  const CalibrationOutcome& o = Run();
+  const bool adopt = adopt_effects && !o.diagnosis.adopted.empty();
+  if (!o.Fit(adopt).IsUsable()) return;  // the report step said so; nothing to recap
+  SessionGaps gaps = session_gaps;
+  gaps.gravity_ambiguity = GravityAmbiguityNote(gravity_, o.diagnosis.adopted_names());
+  const ReportModel verdict = BuildReportModel(Inputs(o.MakeCalibration(adopt), meta, gaps));
+  final_summary_ = BuildFinalSummary(verdict, outputs_ != nullptr ? outputs_->ReportPaths()
+                                                                 : std::vector<std::string>{});
 }
 
 // The analysis of a record step: read back from the journal one chunk at a time (a 12-hour

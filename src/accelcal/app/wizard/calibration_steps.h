@@ -44,6 +44,10 @@ class CalibrationSteps {
   // the session's `gaps` beside it, the verdict said, and the report files written (through
   // the outputs) with `meta`.
   StepOutcome Report(bool adopt_effects, const ReportMeta& meta, const SessionGaps& gaps);
+  // A session resumed after its report step: the final summary (final_summary()) computed again
+  // from the journal, exactly as Report computed it, with the report files already written;
+  // records nothing and writes no file.
+  void Recap(bool adopt_effects, const ReportMeta& meta, const SessionGaps& gaps);
   // The analysis step `step` of an earlier record; `outcome` gets its figures in one line.
   StepOutcome Analysis(const ProcedureStep& step, std::string* outcome);
 
@@ -65,6 +69,8 @@ class CalibrationSteps {
 
  private:
   const CalibrationOutcome& Run();
+  // What the report of `cal` is made from: the session's captures, inputs, limits, equipment.
+  ReportInputs Inputs(const Calibration& cal, const ReportMeta& meta, const SessionGaps& gaps) const;
 
   const Procedure& procedure_;  // borrowed
   SessionModel& model_;         // borrowed

@@ -116,6 +116,7 @@ void WizardEngine::EnterStep(int index) {
   show_details_ = false;
   if (current_ >= static_cast<int>(procedure_.steps.size())) {
     phase_ = Phase::kDone;
+    if (!progressed_) RecapReport();  // resumed after the end: the summary, not a bare "complete"
     return;
   }
   const ProcedureStep& s = step();
@@ -236,15 +237,33 @@ void WizardEngine::RunDiagnosis() {
   Show(steps_.Diagnosis());
 }
 
-void WizardEngine::RunReport() {
-  steps_.set_gravity(gravity_);
-  steps_.set_noise_floor(floor_guard_.floor());
+ReportMeta WizardEngine::MetaForReport() const {
   ReportMeta meta;
   meta.session_path = options_.report_beside;
   meta.procedure = procedure_.title;
   meta.source = source_.Describe();
   meta.date_utc = UtcNowIso8601();
-  Show(steps_.Report(adopt_effects_, meta, CollectSessionGaps(procedure_, model_)));
+  return meta;
+}
+
+void WizardEngine::RunReport() {
+  steps_.set_gravity(gravity_);
+  steps_.set_noise_floor(floor_guard_.floor());
+  Show(steps_.Report(adopt_effects_, MetaForReport(), CollectSessionGaps(procedure_, model_)));
+}
+
+void WizardEngine::RecapReport() {
+  const bool reported = std::any_of(procedure_.steps.begin(), procedure_.steps.end(), [&](const ProcedureStep& s) {
+    return s.kind == StepKind::kReport && StepRecorded(s.id);
+  });
+  if (!reported || steps_.final_summary() != nullptr) return;
+  steps_.set_gravity(gravity_);
+  steps_.set_noise_floor(floor_guard_.floor());
+  try {
+    steps_.Recap(adopt_effects_, MetaForReport(), CollectSessionGaps(procedure_, model_));
+  } catch (const Error&) {
+    // The summary is a convenience: the session and its reports stand without it.
+  }
 }
 
 void WizardEngine::RunAnalysis() { Show(steps_.Analysis(step(), &analysis_outcome_)); }

@@ -191,6 +191,9 @@ class WizardEngine final : public WizardDriver {
   void RunFit();
   void RunDiagnosis();
   void RunReport();
+  // A session resumed after its report step: the final summary computed again (no file written).
+  void RecapReport();
+  ReportMeta MetaForReport() const;
   void RunAnalysis();
   void UpdateLive(const std::vector<Sample>& chunk);
   void SetStepView(WizardView& v) const;

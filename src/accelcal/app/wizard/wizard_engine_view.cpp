@@ -269,7 +269,8 @@ void WizardEngine::SetDoneView(WizardView& v) const {
   // The verdict and the headline numbers of this run's report (final_summary.h).
   if (const FinalSummary* summary = steps_.final_summary()) {
     v.verdict = std::string(VerdictToString(summary->verdict));
-    v.prompt = fmt::format("Calibration complete: {}.", v.verdict);
+    // The verdict is the summary's first line; the prompt does not say it again.
+    if (resumed_ && !progressed_) v.prompt = "Calibration complete (in an earlier run): nothing left to do.";
     v.lines = summary->lines;
   }
 }

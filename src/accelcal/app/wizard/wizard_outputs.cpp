@@ -1,5 +1,7 @@
 #include "accelcal/app/wizard/wizard_outputs.h"
 
+#include <filesystem>
+
 #include "accelcal/app/report_files.h"
 #include "accelcal/io/allan_file.h"
 
@@ -12,6 +14,16 @@ class OutputsBesideSession final : public WizardOutputs {
 
   std::vector<std::string> WriteReports(const ReportInputs& inputs) override {
     return WriteSessionReports(inputs, session_path_);
+  }
+
+  std::vector<std::string> ReportPaths() const override {
+    std::vector<std::string> paths;
+    for (const char* extension : {"html", "txt"}) {
+      std::string path = ReportPathFor(session_path_, extension);
+      std::error_code ignored;  // a path that cannot be checked is not named
+      if (std::filesystem::exists(path, ignored)) paths.push_back(std::move(path));
+    }
+    return paths;
   }
 
   std::string WriteAllan(const RecordAnalysis& analysis, const std::string& source,

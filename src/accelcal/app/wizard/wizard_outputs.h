@@ -16,6 +16,9 @@ class WizardOutputs {
   virtual ~WizardOutputs() = default;
   // The report of a finished calibration; returns the paths written. Throws accelcal::Error.
   virtual std::vector<std::string> WriteReports(const ReportInputs& inputs) = 0;
+  // The report files an earlier run wrote and that are still there (a resumed session's
+  // summary names them); none by default.
+  virtual std::vector<std::string> ReportPaths() const { return {}; }
   // The Allan analysis of a record; returns the path written. Throws accelcal::Error.
   virtual std::string WriteAllan(const RecordAnalysis& analysis, const std::string& source,
                                  double drift_window_s) = 0;
