@@ -127,4 +127,17 @@ expect 1 "$accelcal" export "$db" -o "$work/c.csv"
 grep -q "holds records (drift: 1[12] h [0-9]* min recorded over 12 h 0 min, 2 gaps" "$work/err" || { cat "$work/err"; fail "export message"; }
 expect 1 "$accelcal" report "$db"
 grep -q "holds records" "$work/err" || { cat "$work/err"; fail "report message"; }
+
+# Every chunk of the record damaged (its stored size no longer matches: a bad copy): the Allan
+# analysis refuses it by name; it was read as an empty record before.
+cp "$db" "$work/damaged.db"
+python3 - "$work/damaged.db" <<'PY'
+import sqlite3, sys
+db = sqlite3.connect(sys.argv[1])
+db.execute("UPDATE record_chunks SET n = n + 1")
+db.commit()
+PY
+expect 1 "$accelcal" allan "$work/damaged.db" -o "$work/damaged.allan.json"
+grep -q "record 'drift': none of its [0-9]* stored chunks can be read" "$work/err" || { cat "$work/err"; fail "all-damaged message"; }
+[ ! -e "$work/damaged.allan.json" ] || fail "an Allan file was written from a damaged record"
 echo "ok"

@@ -215,6 +215,28 @@ TEST_F(SessionIntegrityTest, DamagedChunksInTheMiddleAndAtTheEndAreEachNamed) {
   EXPECT_DOUBLE_EQ(record.gaps[1].t_start_s, NoisyChunk(5, kN).samples.back().t_s);
 }
 
+// Every chunk damaged: nothing of the record can be read. Reproduces a defect: the record was
+// read as empty and its analysis said nothing of the damage.
+TEST_F(SessionIntegrityTest, ARecordWithEveryChunkDamagedIsNamedNotReadAsEmpty) {
+  constexpr int kN = 200;
+  {
+    auto store = SessionStore::Open(path_, Writer());
+    for (long i = 0; i < 3; ++i) store->AppendRecordChunk("drift", NoisyChunk(i, kN));
+  }
+  Exec(path_, "UPDATE record_chunks SET n = n + 1");
+  auto store = SessionStore::Open(path_, Reader());
+  try {
+    ReadRecord(*store, "drift");
+    ADD_FAILURE() << "a record whose every chunk is damaged was read";
+  } catch (const Error& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("record 'drift'"), std::string::npos) << what;
+    EXPECT_NE(what.find("none of its 3 stored chunks can be read"), std::string::npos) << what;
+    EXPECT_NE(what.find("record it again"), std::string::npos) << what;
+  }
+  EXPECT_THROW(AnalyzeJournalRecord(*store, "drift", RecordAnalysisOptions{}), Error);
+}
+
 // Version 4 adds the checksums: a version-3 file (no checksum column) is read as it is by a
 // reader, and a writer's migration computes the checksums of the rows it holds, values
 // unchanged; damage after that is caught.
@@ -241,7 +263,8 @@ TEST_F(SessionIntegrityTest, AVersionThreeSessionGetsItsChecksumsFromAWriter) {
   auto store = SessionStore::Open(path_, Reader());
   ASSERT_EQ(store->DamagedCaptures().size(), 1u);
   EXPECT_EQ(store->DamagedCaptures()[0].step_id, "face_5");
-  EXPECT_TRUE(ReadRecord(*store, "drift").samples.empty());
+  // Its only chunk damaged: named, not read as an empty record (it was read as empty before).
+  EXPECT_THROW(ReadRecord(*store, "drift"), Error);
 }
 
 }  // namespace

@@ -76,12 +76,15 @@ RecordAnalysis AnalyzeJournalRecord(const SessionJournal& journal, const std::st
   if (calibration) applier = std::make_unique<CalibrationApplier>(*calibration);
   RecordAnalyzer analyzer(options, applier ? "m/s^2" : "counts");
   std::optional<RecordGap> end_gap;
+  long samples_read = 0;
   journal.VisitRecordChunks(step_id, [&](const RecordChunk& chunk) {
+    samples_read += static_cast<long>(chunk.samples.size());
     for (const Sample& s : chunk.samples)
       analyzer.Add(s.t_s, applier ? applier->Apply(s) : s.raw_counts,
                    std::isfinite(s.temp_c) ? s.temp_c : kNaN);
     if (chunk.gap_after) end_gap = chunk.gap_after;
   });
+  CheckRecordReadable(journal, step_id, samples_read);
   RecordAnalysis result = analyzer.Result();
   if (end_gap) AddEndGap(*end_gap, &result);
   return result;

@@ -58,7 +58,18 @@ JournalRecord ReadRecord(const SessionJournal& journal, const std::string& step_
     out.samples.insert(out.samples.end(), chunk.samples.begin(), chunk.samples.end());
     if (chunk.gap_after) out.gaps.push_back(*chunk.gap_after);
   });
+  CheckRecordReadable(journal, step_id, static_cast<long>(out.samples.size()));
   return out;
+}
+
+void CheckRecordReadable(const SessionJournal& journal, const std::string& step_id, long samples_read) {
+  if (samples_read > 0) return;
+  const RecordSummary stored = journal.RecordSummaryOf(step_id);
+  if (stored.num_chunks == 0) return;  // nothing was recorded: not damage
+  throw Error(fmt::format("record '{}': none of its {} stored chunks can be read: the session file "
+                          "is damaged there (their checksums or sizes do not match what was "
+                          "written); nothing of this record is used: record it again",
+                          step_id, stored.num_chunks));
 }
 
 std::string DescribeRecords(const SessionJournal& journal) {

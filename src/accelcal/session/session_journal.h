@@ -147,7 +147,12 @@ struct JournalRecord {
   std::vector<Sample> samples;
   std::vector<RecordGap> gaps;
 };
+// Throws accelcal::Error naming the damage when the record has chunks but none of them can be
+// read (every one damaged in the session file): never an empty record read as if it were one.
 JournalRecord ReadRecord(const SessionJournal& journal, const std::string& step_id);
+// The check ReadRecord makes, for readers that visit the chunks themselves: throws
+// accelcal::Error when `step_id` holds chunks and `samples_read` of them could be read is 0.
+void CheckRecordReadable(const SessionJournal& journal, const std::string& step_id, long samples_read);
 
 // The checks every journal makes on AppendRecordChunk against what it holds; throws
 // accelcal::Error naming the step (shared by the store and the memory journal).
