@@ -119,7 +119,14 @@ TEST(WizardEngineTest, WelcomeTakesTypedAnswersAndGoesBack) {
   EXPECT_EQ(rig.engine.View().input->key, "operator");
   rig.engine.Handle({IntentKind::kBack, ""});
   EXPECT_EQ(rig.engine.View().input->key, "device");
+  EXPECT_EQ(rig.engine.View().prompt.find("first question"), std::string::npos);
+  // Back again from the first question: it says there is nothing before it (it did nothing).
+  rig.engine.Handle({IntentKind::kBack, ""});
+  EXPECT_EQ(rig.engine.View().input->key, "device");
+  EXPECT_NE(rig.engine.View().prompt.find("This is the first question"), std::string::npos)
+      << rig.engine.View().prompt;
   rig.engine.Handle({IntentKind::kSubmitText, "SN43"});
+  EXPECT_EQ(rig.engine.View().prompt.find("first question"), std::string::npos);
   rig.engine.Handle({IntentKind::kSubmitText, "ada"});
   EXPECT_EQ(rig.engine.View().input->key, "place");
   rig.engine.Handle({IntentKind::kSubmitText, "Lab 2, bench B <east>"});

@@ -71,11 +71,15 @@ std::string WizardEngine::CheckWelcomeAnswer(const std::string& key, const std::
 
 void WizardEngine::HandleWelcome(const Intent& intent) {
   if (intent.kind == IntentKind::kBack) {
-    welcome_field_ = std::max(0, welcome_field_ - 1);
     input_error_.clear();
+    input_note_.clear();
+    // Back from the first question: nothing is before it; say so rather than do nothing.
+    if (welcome_field_ == 0) input_note_ = "This is the first question: there is nothing before it.";
+    welcome_field_ = std::max(0, welcome_field_ - 1);
     return;
   }
   if (intent.kind != IntentKind::kSubmitText && intent.kind != IntentKind::kAccept) return;
+  input_note_.clear();
   const WelcomeField field = Welcome(welcome_field_);
   std::string value = intent.kind == IntentKind::kSubmitText ? intent.text : "";
   if (IsBlank(value)) value = field.default_value;  // blanks only: the default, as for ""

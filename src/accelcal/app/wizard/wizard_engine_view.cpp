@@ -126,6 +126,7 @@ void WizardEngine::SetWelcomeView(WizardView& v) const {
   const WelcomeField field = Welcome(welcome_field_);
   v.screen = WizardScreen::kWelcome;
   v.prompt = fmt::format("Welcome to {}.", procedure_.title);
+  if (!input_note_.empty()) v.prompt += " " + input_note_;
   v.input = InputRequest{field.key, field.label, field.default_value, input_error_};
   v.keys = {{"Enter", "accept"}, {"b", "back"}, {"q", "save and quit"}};
 }
