@@ -14,37 +14,8 @@ sed -e 's/^capture_timeout_s = 60 /capture_timeout_s = 3 /' \
   "$source_dir/procedures/seed_calibration.toml" > "$work/short.toml"
 grep -q '^capture_timeout_s = 3 ' "$work/short.toml" || fail "short procedure: no capture_timeout_s"
 
-cat > "$work/server.py" <<'PY'
-import socket, sys, time
-mode = sys.argv[1]
-s = socket.socket()
-s.setsockopt(socket.SOL_SOCKET, socket.SO_REUSEADDR, 1)
-s.bind(("127.0.0.1", 0))
-s.listen(4)
-print(s.getsockname()[1], flush=True)
-s.settimeout(60)
-held = []
-try:
-    while True:
-        c, _ = s.accept()
-        held.append(c)
-        if mode == "nan":  # lines that are not samples, for as long as the client listens
-            try:
-                while True:
-                    c.sendall(b"nan nan nan nan\n")
-                    time.sleep(0.01)
-            except OSError:
-                pass
-except socket.timeout:
-    pass
-PY
-
 for mode in silent nan; do
-  python3 "$work/server.py" "$mode" > "$work/port" &
-  server=$!
-  for _ in $(seq 50); do [ -s "$work/port" ] && break; sleep 0.1; done
-  port=$(head -1 "$work/port")
-  [ -n "$port" ] || fail "$mode: the test server did not start"
+  start_silent_server "$mode" 0
   # Serial, operator, place, gravity, equipment, then Enter to measure the noise floor; then
   # end of input.
   set +e
@@ -52,9 +23,7 @@ for mode in silent nan; do
     --procedure "$work/short.toml" --session "$work/$mode.db" --plain > "$work/out" 2> "$work/err"
   code=$?
   set -e
-  kill "$server" 2>/dev/null || true
-  wait "$server" 2>/dev/null || true
-  rm -f "$work/port"
+  stop_silent_server
   [ "$code" -ne 124 ] || { tail -5 "$work/out" >&2; fail "$mode: the wizard hung on a silent link"; }
   [ "$code" -eq 0 ] || { cat "$work/err" >&2; fail "$mode: the wizard exited $code"; }
   grep -q "problem: no samples for [0-9]* s: the noise floor cannot be measured" "$work/out" \
