@@ -14,6 +14,7 @@
 #include "accelcal/calibration/diagnosis/diagnosis.h"
 #include "accelcal/calibration/diagnosis/leave_one_out.h"
 #include "accelcal/calibration/diagnosis/residual_structure.h"
+#include "accelcal/calibration/diagnosis/rival_explanations.h"
 #include "physics_captures.h"
 #include "test_support.h"
 
@@ -77,11 +78,9 @@ struct Outside {
 class OutsideTheLibrary : public ::testing::TestWithParam<Outside> {};
 
 // The base model is kept, the conclusion says so in the words, and what to capture next
-// is said. A regression test of that path on fixed seeds where it holds, NOT evidence that the
-// guard meets the 5 % target: over 50 seeds of the CLI it does not yet (asym_scale 27/50,
-// bias_jump 18/50 and turntable_bias 32/50 adopt a library effect after the disagreement rule;
-// tests/physics/README.md, open). turntable_bias is not here: on seed 2 a bias drift explains it within noise (the
-// turntable runs come last in the plan, so a turntable-only bias reads as a drift in time).
+// is said. A regression test of that path on fixed seeds; the many-seed rates are in
+// tests/physics/README.md (with the rival explanations: asym_scale and bias_jump 0/50,
+// turntable_bias 4/50).
 TEST_P(OutsideTheLibrary, NoEffectIsBlamedAndTheNextCapturesAreNamed) {
   physgen::Effects e;
   GetParam().inject(&e);
@@ -116,6 +115,81 @@ TEST(Guard, ACaptureIsNotLeftOutToMakeRoomForANewEffect) {
     for (const Capture& c : o.captures) EXPECT_TRUE(c.used()) << "seed " << seed << ": " << c.rejection_reason;
     EXPECT_TRUE(testing::Contains(o.diagnosis.conclusion, "no effect of the library explains them"))
         << o.diagnosis.conclusion;
+  }
+}
+
+// The rival explanations (rival_explanations.h): a bias that shifts while the table turns is
+// explained about as well by a warm-up or a drift, because every turntable run follows every
+// static pose on the seed plan. Before the rivals, temperature_bias or bias_drift was adopted
+// on 32 of 50 seeds (these two among them); now the candidate is not named, the rival is named
+// beside it, and what to capture to tell them apart is said.
+TEST(RivalExplanations, ABiasThatShiftsWhileTurningIsNotNamedAWarmUp) {
+  physgen::Effects e;
+  e.turntable_bias = {0.8, -0.5, -1.0};
+  for (unsigned long long seed : {1ull, 3ull}) {
+    const DiagnosisReport r = DiagnosePhysics(e, seed);
+    EXPECT_TRUE(r.adopted.empty()) << "seed " << seed << "\n" << FormatDiagnosis(r);
+    EXPECT_TRUE(r.unexplained) << FormatDiagnosis(r);
+    ASSERT_EQ(r.ambiguous.size(), 2u) << FormatDiagnosis(r);
+    EXPECT_EQ(r.ambiguous[1], "turntable_bias_shift") << FormatDiagnosis(r);
+    EXPECT_TRUE(testing::Contains(r.next_captures, "take a static pose again between the turntable runs"))
+        << r.next_captures;
+    EXPECT_EQ(r.final_fit.parameters, r.base.parameters);
+  }
+}
+
+// Where the plan does separate them, the library's effect beats the rivals and is named: a
+// warm-up inside the static poses is not a shift of the turntable runs.
+TEST(RivalExplanations, AWarmUpIsStillNamedWhereThePlanSeparatesIt) {
+  physgen::Effects e;
+  e.temp_bias = {0.5, -0.3, 0.8};  // the physics bench's temperature_bias case
+  const DiagnosisReport r = DiagnosePhysics(e, 3);
+  ASSERT_EQ(r.adopted_names(), std::vector<std::string>{"temperature_bias"}) << FormatDiagnosis(r);
+  bool weighed = false;
+  for (const CandidateScore& c : r.rounds.front().candidates)
+    weighed = weighed || testing::Contains(c.rejected_reason, "a rival outside the library");
+  EXPECT_TRUE(weighed) << FormatDiagnosis(r);
+}
+
+TEST(RivalExplanations, EachKindIsOfferedWhereTheCapturesIdentifyIt) {
+  const testing::PhysicsSet set = testing::MakePhysicsSet(physgen::Effects{}, 1);
+  const std::vector<FitCapture> captures = FitCaptures(set);
+  const std::vector<RivalExplanation> rivals = RivalExplanations(captures);
+  int shifts = 0, asymmetries = 0;
+  for (const RivalExplanation& r : rivals) {
+    shifts += r.effect->Name() == "turntable_bias_shift";
+    asymmetries += r.effect->Name() == "scale_asymmetry";
+  }
+  EXPECT_EQ(rivals.size(), 2u);
+  EXPECT_EQ(shifts, 1);
+  EXPECT_EQ(asymmetries, 1);
+  // Static captures only: no shift while turning can be told.
+  std::vector<FitCapture> still;
+  for (const FitCapture& c : captures)
+    if (c.kind == CaptureKind::kStatic) still.push_back(c);
+  for (const RivalExplanation& r : RivalExplanations(still)) EXPECT_NE(r.effect->Name(), "turntable_bias_shift");
+}
+
+// The asymmetry's correction inverts raw = b + k u + d |u| on both sides of zero.
+TEST(RivalExplanations, TheScaleAsymmetryInvertsItsResponse) {
+  const testing::PhysicsSet set = testing::MakePhysicsSet(physgen::Effects{}, 1);
+  const std::vector<FitCapture> captures = FitCaptures(set);
+  const Effect* asym = nullptr;
+  const std::vector<RivalExplanation> rivals = RivalExplanations(captures);
+  for (const RivalExplanation& r : rivals)
+    if (r.effect->Name() == "scale_asymmetry") asym = r.effect.get();
+  ASSERT_NE(asym, nullptr);
+  SensorModel base;
+  base.bias_counts = {2048.0, 2040.0, 2060.0};
+  base.scale_counts_per_mps2 = {34.8, 35.0, 34.4};
+  const double d[3] = {0.1, -0.05, 0.2};
+  for (double u : {-9.8, -3.0, 4.0, 19.6}) {
+    CorrectedCapture out{};
+    for (int j = 0; j < 3; ++j)
+      out.raw_counts(j) = base.bias_counts(j) + base.scale_counts_per_mps2(j) * u + d[j] * std::fabs(u);
+    asym->Correct(d, base, captures.front(), EffectContext{}, &out);
+    for (int j = 0; j < 3; ++j)
+      EXPECT_NEAR(out.raw_counts(j), base.bias_counts(j) + base.scale_counts_per_mps2(j) * u, 1e-9) << u;
   }
 }
 

@@ -100,6 +100,21 @@ TEST(DiagnosisWordsTest, ABenchErrorAndASensorEffectTogether) {
             std::string::npos) << sensor.prompt;
 }
 
+// A rival outside the library (rival_explanations.h) is said in bench words, never by its name.
+TEST(DiagnosisWordsTest, ARivalExplanationIsSaidInBenchWords) {
+  DiagnosisReport r;
+  r.unexplained = true;
+  r.ambiguous = {"temperature_bias", "turntable_bias_shift"};
+  r.next_captures = "to tell turntable_bias_shift apart: take a static pose again between the turntable runs";
+  const DiagnosisWords w = DiagnosisInPlainWords(r, 9.80665);
+  std::string all;
+  for (const std::string& line : w.lines) all += line + "\n";
+  EXPECT_NE(all.find("a zero-g level that shifts while the table turns"), std::string::npos) << all;
+  EXPECT_NE(all.find("take a static pose again between the turntable runs"), std::string::npos) << all;
+  EXPECT_EQ(all.find("turntable_bias_shift"), std::string::npos) << all;
+  EXPECT_EQ(all.find("temperature_bias"), std::string::npos) << all;
+}
+
 TEST(DiagnosisWordsTest, NothingFoundSaysSoWithoutJargon) {
   DiagnosisReport r;
   r.consistent = true;

@@ -49,7 +49,11 @@ std::string PlainEffectName(const std::string& name) {
       {"cross_axis_coupling", "axes responding to each other"},
       {"temperature_bias", "a zero-g level moving with temperature"},
       {"temperature_scale", "a sensitivity changing with temperature"},
-      {"bias_drift", "a drifting zero-g level"}};
+      {"bias_drift", "a drifting zero-g level"},
+      // Rivals outside the library (calibration/diagnosis/rival_explanations.h).
+      {"turntable_bias_shift", "a zero-g level that shifts while the table turns"},
+      {"bias_step", "a zero-g level that jumped once (a knock, the sensor reseated)"},
+      {"scale_asymmetry", "a sensitivity that differs for up and down"}};
   for (const auto& [key, words] : kNames)
     if (name == key) return words;
   return name;
@@ -111,7 +115,8 @@ DiagnosisWords DiagnosisInPlainWords(const DiagnosisReport& r, double g) {
       if (r.ambiguous.size() == 2)
         say(fmt::format("Two explanations fit alike and these captures cannot tell them apart: {} or {}.",
                         PlainEffectName(r.ambiguous[0]), PlainEffectName(r.ambiguous[1])));
-      if (!r.next_captures.empty()) say("To find out, capture " + r.next_captures);
+      if (!r.next_captures.empty())
+        say("To find out, capture " + WithPlainEffectNames(r.next_captures, r.ambiguous));
     }
     w.prompt = "Press Enter to continue (d shows the statistics).";
     return w;

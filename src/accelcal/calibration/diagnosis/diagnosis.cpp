@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <numeric>
 
 #include <fmt/core.h>
@@ -11,6 +12,7 @@
 #include "accelcal/calibration/diagnosis/evidence.h"
 #include "accelcal/calibration/diagnosis/extended_model.h"
 #include "accelcal/calibration/diagnosis/leave_one_out.h"
+#include "accelcal/calibration/diagnosis/rival_explanations.h"
 #include "accelcal/calibration/fit/least_squares.h"
 
 namespace accelcal {
@@ -202,6 +204,72 @@ std::string WhyNotAdopted(const Trial& t, const std::vector<const Effect*>& adop
   return {};
 }
 
+// The last test of step 3 (rival_explanations.h): the chosen candidate must explain the
+// captures better than each rival outside the library, on the terms two candidates are compared
+// on (PreferredOf): a BIC 6 or more better ("strong" on the Kass & Raftery scale), or 2 to 6
+// better and the better prediction of the captures left out. A rival scanned over positions
+// (the bias step) pays one parameter for the scan. The rival named is the one that explains the
+// captures best among those the candidate does not beat. Empty when the candidate stands; else why
+// not, and `rival` names the rival.
+std::string RivalVerdict(const Trial& chosen, const std::vector<const Effect*>& adopted,
+                         const FitSummary& current, const std::vector<FitCapture>& captures,
+                         const FitOptions& fit_options, const EffectContext& ctx,
+                         const DiagnosisOptions& options, double scale, DiagnosisRound* round,
+                         std::string* rival) {
+  const int n = static_cast<int>(captures.size());
+  const std::vector<RivalExplanation> rivals = RivalExplanations(captures);
+  DiagnosisOptions no_loo = options;
+  no_loo.leave_one_out = false;  // only the close rivals' predictions are needed
+  struct Best {
+    Trial trial;
+    double bic;
+    const Effect* effect;
+  };
+  std::map<std::string, Best> best_of_kind;  // the bias step: its best position
+  for (const RivalExplanation& r : rivals) {
+    // A rival challenges the effects that correct at its stage: what tells them apart is the
+    // variable the correction follows (time or temperature, against the table's state or one
+    // jump; the input's square or cube, against its sign), not a different mechanism.
+    if (r.effect->CorrectionStage() != chosen.effect->CorrectionStage()) continue;
+    Trial t = TryCandidate(r.effect.get(), adopted, current, captures, fit_options, ctx, no_loo);
+    if (!t.score.skipped_reason.empty()) continue;
+    const double bic = ScaledBic(t, n, scale) + r.scanned_parameters * std::log(static_cast<double>(n));
+    const std::string kind = t.score.effect;  // before t is moved from
+    auto found = best_of_kind.find(kind);
+    if (found == best_of_kind.end() || bic < found->second.bic)
+      best_of_kind[kind] = Best{std::move(t), bic, r.effect.get()};
+  }
+  const double chosen_bic = ScaledBic(chosen, n, scale);
+  const Best* blocking = nullptr;  // the rival that explains the captures best among those that stand
+  for (auto& [kind, best] : best_of_kind) {
+    Trial& r = best.trial;
+    const double margin = best.bic - chosen_bic;
+    if (margin < 6.0 && margin >= 2.0 && options.leave_one_out) {
+      std::vector<const Effect*> effects = adopted;
+      effects.push_back(best.effect);
+      ScoreLeftOut(ExtendedResidualModel(effects, ctx), captures, SolverOptions(fit_options), &r);
+    }
+    const bool predicts_better = chosen.score.loo_rms_mps2 >= 0.0 && r.score.loo_rms_mps2 >= 0.0 &&
+                                 chosen.score.loo_rms_mps2 < r.score.loo_rms_mps2;
+    // Without leave-one-out, BIC decides the band (as in PreferredOf).
+    const bool stands = margin >= 6.0 || (margin >= 2.0 && (!options.leave_one_out || predicts_better));
+    r.score.rejected_reason = fmt::format("a rival outside the library, BIC {:+.1f} from {}", margin,
+                                          chosen.score.effect);
+    round->candidates.push_back(r.score);
+    if (!stands && (blocking == nullptr || best.bic < blocking->bic)) blocking = &best;
+  }
+  if (blocking == nullptr) return {};
+  const CandidateScore& r = blocking->trial.score;
+  *rival = r.effect;
+  return fmt::format("{} ({}) explains the captures as well (BIC {:+.1f}{}): these captures cannot "
+                     "name {}", r.effect, RivalStory(r.effect), blocking->bic - chosen_bic,
+                     r.loo_rms_mps2 >= 0.0
+                         ? fmt::format(", leave-one-out RMS {:.5f} against {:.5f} m/s^2",
+                                       r.loo_rms_mps2, chosen.score.loo_rms_mps2)
+                         : std::string(),
+                     chosen.score.effect);
+}
+
 // Runs one round: scores every candidate and returns the index of the one to adopt (the best
 // by ScaledBic among those that pass WhyNotAdopted; when another that passes is within 6 of it
 // and implies a different calibration, PreferredOf decides between them, and when it cannot, the
@@ -257,6 +325,19 @@ int RunRound(const std::vector<const Effect*>& adopted, const FitSummary& curren
     chosen = -1;
   }
   for (const Trial& t : *trials) round->candidates.push_back(t.score);
+  if (chosen >= 0 && tie.empty()) {
+    Trial& c = (*trials)[static_cast<size_t>(chosen)];
+    std::string rival;
+    const std::string why = RivalVerdict(c, adopted, current, captures, fit_options, ctx, options,
+                                         scale, round, &rival);
+    if (!why.empty()) {
+      c.score.rejected_reason = why;
+      round->candidates[static_cast<size_t>(chosen)].rejected_reason = why;
+      *ambiguous = {c.score.effect, rival};
+      tie = why;
+      chosen = -1;
+    }
+  }
   if (tried == 0) {
     round->outcome = "no candidate effect can be identified from these captures";
   } else if (!tie.empty()) {
@@ -350,9 +431,12 @@ std::string NextCaptures(const DiagnosisReport& report, const std::vector<FitCap
   if (!worst.empty())
     parts.push_back(fmt::format("re-take the captures that disagree most ({}) to tell a bad capture "
                                 "from an effect", fmt::join(worst, ", ")));
-  for (const std::string& name : report.ambiguous)
+  for (const std::string& name : report.ambiguous) {
     if (const Effect* e = FindEffect(name))
       parts.push_back(fmt::format("to tell {} apart: {}", name, e->CapturePlan()));
+    else if (std::string plan = RivalCapturePlan(name); !plan.empty())
+      parts.push_back(fmt::format("to tell {} apart: {}", name, plan));
+  }
   if (!report.rounds.empty()) {
     for (const CandidateScore& c : report.rounds.front().candidates) {
       const Effect* e = FindEffect(c.effect);
