@@ -28,9 +28,8 @@
 //       predicts the first and last poses better); two within 2 of each other cannot be told
 //       apart by these captures: neither is adopted, and both are named;
 //     - it beats the rival explanations outside the library that challenge its correction
-//       stage (rival_explanations.h) on the same terms: BIC 6 better, or 2 to 6 better and the
-//       better left-out prediction; otherwise it is not adopted, and it and the rival are named
-//       (`ambiguous`) with what to capture to tell them apart.
+//       stage (rival_explanations.h) by a BIC 6 or more; otherwise it is not adopted, and it and
+//       the rival are named (`ambiguous`) with what to capture to tell them apart.
 //     A candidate that fits but fails a test is named with the reason. Then back to 1.
 //  4. The adopted set must explain the residuals: the final model's residuals are what noise
 //     explains (chi-square p >= consistency_p), show no structure in pose or time
