@@ -87,6 +87,17 @@ void Exec(const std::string& path, const std::string& sql) {
   sqlite3_close(db);
 }
 
+// A record of `chunks` chunks of `n` samples at step "drift", then `damage` (SQL) run on the file
+// behind the store's back, as a bad disk or copy would.
+void WriteDamagedRecord(const std::string& path, const SessionOpenOptions& writer, long chunks, int n,
+                        const std::string& damage) {
+  {
+    auto store = SessionStore::Open(path, writer);
+    for (long i = 0; i < chunks; ++i) store->AppendRecordChunk("drift", NoisyChunk(i, n));
+  }
+  Exec(path, damage);
+}
+
 std::vector<Capture> WriteTwelveCaptures(const std::string& path) {
   std::vector<Capture> stored;
   SessionOpenOptions writer;
@@ -150,11 +161,7 @@ TEST_F(SessionIntegrityTest, ADamagedCaptureCanBeTakenAgain) {
 // A damaged record chunk is left out as a gap whose reason names it, never read as samples.
 TEST_F(SessionIntegrityTest, ADamagedRecordChunkBecomesANamedGap) {
   constexpr int kN = 1000;
-  {
-    auto store = SessionStore::Open(path_, Writer());
-    for (long i = 0; i < 8; ++i) store->AppendRecordChunk("drift", NoisyChunk(i, kN));
-  }
-  Exec(path_, "UPDATE record_chunks SET samples = CAST(zeroblob(40000) AS BLOB) WHERE chunk_index = 3");
+  WriteDamagedRecord(path_, Writer(), 8, kN, "UPDATE record_chunks SET samples = CAST(zeroblob(40000) AS BLOB) WHERE chunk_index = 3");
   auto store = SessionStore::Open(path_, Reader());
   const JournalRecord record = ReadRecord(*store, "drift");
   EXPECT_EQ(record.samples.size(), 7u * kN);
@@ -172,11 +179,7 @@ TEST_F(SessionIntegrityTest, ADamagedRecordChunkBecomesANamedGap) {
 // in the record's analysis (what `accelcal allan` writes and prints for a session).
 TEST_F(SessionIntegrityTest, ADamagedLastRecordChunkIsNamedAsAGapToo) {
   constexpr int kN = 1000;
-  {
-    auto store = SessionStore::Open(path_, Writer());
-    for (long i = 0; i < 8; ++i) store->AppendRecordChunk("drift", NoisyChunk(i, kN));
-  }
-  Exec(path_, "UPDATE record_chunks SET samples = CAST(zeroblob(40000) AS BLOB) WHERE chunk_index = 7");
+  WriteDamagedRecord(path_, Writer(), 8, kN, "UPDATE record_chunks SET samples = CAST(zeroblob(40000) AS BLOB) WHERE chunk_index = 7");
   auto store = SessionStore::Open(path_, Reader());
   const JournalRecord record = ReadRecord(*store, "drift");
   EXPECT_EQ(record.samples.size(), 7u * kN);
@@ -200,11 +203,7 @@ TEST_F(SessionIntegrityTest, ADamagedLastRecordChunkIsNamedAsAGapToo) {
 // naming both of its chunks.
 TEST_F(SessionIntegrityTest, DamagedChunksInTheMiddleAndAtTheEndAreEachNamed) {
   constexpr int kN = 200;
-  {
-    auto store = SessionStore::Open(path_, Writer());
-    for (long i = 0; i < 8; ++i) store->AppendRecordChunk("drift", NoisyChunk(i, kN));
-  }
-  Exec(path_, "UPDATE record_chunks SET n = n + 1 WHERE chunk_index IN (2, 6, 7)");
+  WriteDamagedRecord(path_, Writer(), 8, kN, "UPDATE record_chunks SET n = n + 1 WHERE chunk_index IN (2, 6, 7)");
   auto store = SessionStore::Open(path_, Reader());
   const JournalRecord record = ReadRecord(*store, "drift");
   EXPECT_EQ(record.samples.size(), 5u * kN);
@@ -219,11 +218,7 @@ TEST_F(SessionIntegrityTest, DamagedChunksInTheMiddleAndAtTheEndAreEachNamed) {
 // read as empty and its analysis said nothing of the damage.
 TEST_F(SessionIntegrityTest, ARecordWithEveryChunkDamagedIsNamedNotReadAsEmpty) {
   constexpr int kN = 200;
-  {
-    auto store = SessionStore::Open(path_, Writer());
-    for (long i = 0; i < 3; ++i) store->AppendRecordChunk("drift", NoisyChunk(i, kN));
-  }
-  Exec(path_, "UPDATE record_chunks SET n = n + 1");
+  WriteDamagedRecord(path_, Writer(), 3, kN, "UPDATE record_chunks SET n = n + 1");
   auto store = SessionStore::Open(path_, Reader());
   try {
     ReadRecord(*store, "drift");
