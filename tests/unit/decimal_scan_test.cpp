@@ -61,5 +61,50 @@ TEST(DecimalScan, RandomTokensAgreeWithFromCharsBitForBit) {
   EXPECT_GT(taken, 100000);  // the common forms do take the fast path
 }
 
+// The digits are read eight at a time while eight bytes remain (decimal_scan.h): whatever byte
+// ends a run, at whatever place in the eight, the number ends there with the same value.
+TEST(DecimalScan, PrefixEndsAtTheFirstByteThatCannotContinueItInEveryLane) {
+  for (int stop = 1; stop <= 15; ++stop) {  // 15 digits: below 2^53, so never declined
+    for (int c = 0; c < 256; ++c) {
+      if ((c >= '0' && c <= '9') || c == '.' || c == 'e' || c == 'E') continue;
+      std::string text;
+      for (int k = 0; k < stop; ++k) text += static_cast<char>('1' + (k * 7) % 9);
+      const std::string token = text;
+      text += static_cast<char>(c);
+      text += "9876543210987654";
+      double value = 0.0;
+      const char* end = ScanDecimalPrefix(text.data(), text.data() + text.size(), &value);
+      ASSERT_EQ(end, text.data() + stop) << "stop " << stop << ", byte " << c;
+      double ref = 0.0;
+      std::from_chars(token.data(), token.data() + token.size(), ref);
+      ASSERT_TRUE(SameBits(value, ref)) << token;
+    }
+  }
+}
+
+TEST(DecimalScan, PrefixOfTokensInsideALineAgreesWithFromChars) {
+  std::mt19937_64 rng(1818);
+  std::uniform_int_distribution<int> len(1, 18), digit(0, 9), coin(0, 3);
+  for (int i = 0; i < 100000; ++i) {
+    std::string token;
+    if (coin(rng) == 0) token += '-';
+    const int n = len(rng);
+    const int point = coin(rng) == 0 ? -1 : std::uniform_int_distribution<int>(1, n - 1 > 0 ? n - 1 : 1)(rng);
+    for (int k = 0; k < n; ++k) {
+      if (k == point && point < n) token += '.';
+      token += static_cast<char>('0' + digit(rng));
+    }
+    const std::string line = token + (coin(rng) < 2 ? " " : ",") + "33096 33336 36437";
+    double value = 0.0;
+    const char* end = ScanDecimalPrefix(line.data(), line.data() + line.size(), &value);
+    double ref = 0.0;
+    const auto [next, ec] = std::from_chars(token.data(), token.data() + token.size(), ref);
+    if (end == nullptr) continue;  // declined: from_chars reads it
+    ASSERT_EQ(end, line.data() + token.size()) << line;
+    ASSERT_TRUE(ec == std::errc() && next == token.data() + token.size()) << token;
+    ASSERT_TRUE(SameBits(value, ref)) << token;
+  }
+}
+
 }  // namespace
 }  // namespace accelcal::detail

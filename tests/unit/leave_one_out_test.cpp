@@ -73,7 +73,8 @@ std::vector<size_t> RankByAbs(const std::vector<double>& z) {
   return order;
 }
 
-void ExpectSameAsCold(const std::vector<FitCapture>& captures, const char* effect_name) {
+void ExpectSameAsCold(const std::vector<FitCapture>& captures, const char* effect_name,
+                      int max_refitted = 0) {
   const DiagnosisReport base = Diagnose(captures, FitOptions{}, DiagnosisOptions{});
   ASSERT_TRUE(base.base.IsUsable()) << base.base.message;
   std::vector<const Effect*> effects;
@@ -89,17 +90,22 @@ void ExpectSameAsCold(const std::vector<FitCapture>& captures, const char* effec
   const LeaveOneOutResult warm = PredictLeftOut(model, captures, full.parameters, solver);
   const Reference cold = ColdLeaveOneOut(model, captures, full.parameters, solver);
   ASSERT_EQ(warm.predictions.size(), captures.size());
+  // The one-capture update, not the refits it falls back to, is what is held to cold refits.
+  EXPECT_LE(warm.refitted, max_refitted);
   std::vector<double> warm_z;
   double worst = 0.0;
   for (size_t i = 0; i < captures.size(); ++i) {
     const LeaveOneOutPrediction& p = warm.predictions[i];
     EXPECT_EQ(p.id, captures[i].id);
-    // Both converge to one minimum by the polish's test; their weights are anchored at p_full
-    // (warm) or at NLopt's answer (cold), which moves an outlier's prediction by a few 1e-4 of
-    // itself: far below the noise (~1e-3 m/s^2).
-    EXPECT_NEAR(p.residual_mps2, cold.residual_mps2[i], 1e-6 + 1e-3 * std::fabs(cold.residual_mps2[i]))
+    // Both converge to one minimum; their weights are anchored at p_full (PredictLeftOut) or at
+    // NLopt's answer (cold), which moves an outlier's prediction by a few 1e-4 of itself, and
+    // the cold polish also stops where the cost no longer falls beyond round-off (its stall
+    // test), which with an outlier's cost of ~1e3 leaves the minimum by up to ~1.5e-3 of a
+    // prediction (the update, whose stop is a step below the tolerance, reaches a lower cost
+    // there): far below the noise either way (~1e-3 m/s^2 against predictions of 0.1 m/s^2).
+    EXPECT_NEAR(p.residual_mps2, cold.residual_mps2[i], 1e-6 + 2e-3 * std::fabs(cold.residual_mps2[i]))
         << "capture " << i;
-    EXPECT_NEAR(p.z, cold.z[i], 1e-3 + 1e-3 * std::fabs(cold.z[i])) << "capture " << i;
+    EXPECT_NEAR(p.z, cold.z[i], 1e-3 + 2e-3 * std::fabs(cold.z[i])) << "capture " << i;
     warm_z.push_back(p.z);
     worst = std::max(worst, std::fabs(cold.z[i]));
   }
@@ -136,7 +142,8 @@ TEST(LeaveOneOut, WarmStartedNamesTheSameDisagreeingCapture) {
   ASSERT_GT(captures.size(), 10u);
   // One pose read 0.5 % high on every axis (a capture that no model predicts).
   captures[5].mean_counts = captures[5].mean_counts * 1.005;
-  ExpectSameAsCold(captures, nullptr);
+  // The outlier moves the fits without some captures far enough for a refit (6 of 18 here).
+  ExpectSameAsCold(captures, nullptr, static_cast<int>(captures.size()) / 2);
   const DiagnosisReport base = Diagnose(captures, FitOptions{}, DiagnosisOptions{});
   // The base model itself (its gradient is written into a vector PredictLeftOut must size: this
   // crashed before issue 18).

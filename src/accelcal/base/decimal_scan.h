@@ -9,10 +9,53 @@
 #pragma once
 
 #include <cstdint>
+#include <cstring>
 
 namespace accelcal::detail {
 
-inline bool ScanSimpleDecimal(const char* p, const char* end, double* value) {
+// Appends the run of decimal digits at p to m (m = 10 m + digit for each) and returns the first
+// character after it. Eight characters at a time while eight remain before `end` (SWAR: which
+// bytes are digits, and their value, from one 64-bit load; D. Lemire, "Fast parsing of
+// floating-point numbers", 2021, for the eight-digit step); byte by byte near the end.
+// Overflow of m is the caller's to judge from the count of digits.
+inline const char* ScanDigitRun(const char* p, const char* end, std::uint64_t* m) {
+  static constexpr std::uint64_t kPow10Int[] = {1, 10, 100, 1000, 10000, 100000, 1000000,
+                                                10000000, 100000000};
+  std::uint64_t acc = *m;
+  while (end - p >= 8) {
+    std::uint64_t v;
+    std::memcpy(&v, p, 8);  // little-endian: the first character in the lowest byte
+    // A byte is a digit when its high nibble is 3 and its low nibble at most 9.
+    const std::uint64_t non_digit = ((v ^ 0x3030303030303030ULL) & 0xF0F0F0F0F0F0F0F0ULL) |
+                                    (((v & 0x0F0F0F0F0F0F0F0FULL) + 0x0606060606060606ULL) &
+                                     0x1010101010101010ULL);
+    const int n = non_digit == 0 ? 8 : __builtin_ctzll(non_digit) / 8;
+    if (n == 0) break;
+    // Keep the n digits, as the last n of eight with leading zeros, then combine pairs, quads,
+    // octets.
+    std::uint64_t d = (v << (8 * (8 - n))) & 0x0F0F0F0F0F0F0F0FULL;
+    d = (d * 10 + (d >> 8)) & 0x00FF00FF00FF00FFULL;
+    d = (d * 100 + (d >> 16)) & 0x0000FFFF0000FFFFULL;
+    d = (d * 10000 + (d >> 32)) & 0xFFFFFFFFULL;
+    acc = acc * kPow10Int[n] + d;
+    p += n;
+    if (n < 8) {
+      *m = acc;
+      return p;
+    }
+  }
+  while (p < end && static_cast<unsigned>(*p - '0') < 10u) {
+    acc = acc * 10 + static_cast<unsigned>(*p - '0');
+    ++p;
+  }
+  *m = acc;
+  return p;
+}
+
+// The longest prefix of [p, end) in that form: returns the character after it, with *value
+// set, or nullptr when the text at p does not start with such a number (or it is not exact).
+// The caller decides whether what follows may end a number.
+inline const char* ScanDecimalPrefix(const char* p, const char* end, double* value) {
   static constexpr double kPow10[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,
                                       1e8,  1e9,  1e10, 1e11, 1e12, 1e13, 1e14, 1e15,
                                       1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
@@ -24,28 +67,21 @@ inline bool ScanSimpleDecimal(const char* p, const char* end, double* value) {
     ++p;
   }
   std::uint64_t m = 0;
-  int digits = 0;
   const char* start = p;
-  while (p < end && static_cast<unsigned>(*p - '0') < 10u) {
-    m = m * 10 + static_cast<unsigned>(*p - '0');
-    ++p;
-  }
-  digits = static_cast<int>(p - start);
-  if (digits == 0) return false;
+  p = ScanDigitRun(p, end, &m);
+  int digits = static_cast<int>(p - start);
+  if (digits == 0) return nullptr;
   int exponent = 0;
   if (p < end && *p == '.') {
     ++p;
     const char* frac = p;
-    while (p < end && static_cast<unsigned>(*p - '0') < 10u) {
-      m = m * 10 + static_cast<unsigned>(*p - '0');
-      ++p;
-    }
+    p = ScanDigitRun(p, end, &m);
     const int frac_digits = static_cast<int>(p - frac);
-    if (frac_digits == 0) return false;
+    if (frac_digits == 0) return nullptr;
     digits += frac_digits;
     exponent = -frac_digits;
   }
-  if (digits > kMaxDigits) return false;  // m may have wrapped: let from_chars read it
+  if (digits > kMaxDigits) return nullptr;  // m may have wrapped: let from_chars read it
   if (p < end && (*p == 'e' || *p == 'E')) {
     ++p;
     bool exp_negative = false;
@@ -56,13 +92,21 @@ inline bool ScanSimpleDecimal(const char* p, const char* end, double* value) {
       e = e * 10 + (*p - '0');
       ++p;
     }
-    if (p == exp_start) return false;
+    if (p == exp_start) return nullptr;
     exponent += exp_negative ? -e : e;
   }
-  if (p != end || m > kMaxExact || exponent < -22 || exponent > 22) return false;
+  if (m > kMaxExact || exponent < -22 || exponent > 22) return nullptr;
   double v = static_cast<double>(m);
   v = exponent < 0 ? v / kPow10[-exponent] : v * kPow10[exponent];
   *value = negative ? -v : v;
+  return p;
+}
+
+// True when all of [p, end) is such a number, read into *value.
+inline bool ScanSimpleDecimal(const char* p, const char* end, double* value) {
+  double v = 0.0;
+  if (ScanDecimalPrefix(p, end, &v) != end) return false;
+  *value = v;
   return true;
 }
 

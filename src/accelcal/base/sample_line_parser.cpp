@@ -120,7 +120,53 @@ void SampleLineParser::ReadNumber(const char* start, const char* token_end, int 
   }
 }
 
+// The common line of a logger's file, in one pass: the positional layout split by blanks and/or
+// one comma or semicolon, every field a plain decimal (decimal_scan.h), as many fields as the
+// first data line. False, with *sample untouched, for anything else: Parse's general path then
+// reads the line, so values and messages are those of the general path. A number's end needs no
+// separate token scan: a number ends at a separator or the end of the line, or the line is not
+// plain.
+bool SampleLineParser::ParsePlainPositional(std::string_view line, Sample* sample,
+                                            size_t* t_offset) const {
+  const char* const begin = line.data();
+  const char* const end = begin + line.size();
+  const char* p = begin;
+  while (p < end && (*p == ' ' || *p == '\t')) ++p;
+  const char* const t_begin = p;
+  std::array<double, kMaxPositional> values;
+  int count = 0;
+  while (p < end) {
+    if (count == kMaxPositional) return false;
+    p = ScanDecimalPrefix(p, end, &values[static_cast<size_t>(count)]);
+    if (p == nullptr) return false;
+    ++count;
+    // Blanks, then at most one comma or semicolon with blanks after it; then a field or the end.
+    const char* field_end = p;
+    while (p < end && (*p == ' ' || *p == '\t')) ++p;
+    if (p < end && (*p == ',' || *p == ';')) {
+      ++p;
+      while (p < end && (*p == ' ' || *p == '\t')) ++p;
+      if (p == end) return false;  // a trailing comma: the general path words it
+    } else if (p == field_end && p < end) {
+      return false;  // the number runs into something that is not a separator
+    }
+  }
+  if (count != fields_per_line_) return false;
+  sample->t_s = values[kSlotT];
+  sample->raw_counts = {values[kSlotAx], values[kSlotAy], values[kSlotAz]};
+  if (reading_scale_ != 1.0) sample->raw_counts *= reading_scale_;
+  sample->temp_c = count == kMaxPositional ? values[kSlotTemp] : kNaN;
+  *t_offset = static_cast<size_t>(t_begin - begin);
+  return true;
+}
+
 size_t SampleLineParser::Parse(std::string_view line, long line_number, Sample* sample) {
+  // Positional, blank/comma-separated, after the first line set the field count (the first
+  // line's errors and count come from the general path).
+  if (positional_ && delimiter_ == 0 && fields_per_line_ != 0) {
+    size_t t_offset = 0;
+    if (ParsePlainPositional(line, sample, &t_offset)) return t_offset;
+  }
   line_ = line;
   line_number_ = line_number;
   const char* const begin = line.data();

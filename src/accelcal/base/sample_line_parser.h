@@ -61,6 +61,7 @@ class SampleLineParser {
  private:
   enum Slot : std::int8_t { kSlotT = 0, kSlotAx, kSlotAy, kSlotAz, kSlotTemp, kSlotIgnore };
 
+  bool ParsePlainPositional(std::string_view line, Sample* sample, size_t* t_offset) const;
   bool IsSeparator(char c) const;
   const char* TokenEnd(const char* p, const char* end) const;
   void ReadNumber(const char* start, const char* token_end, int field, double* value) const;

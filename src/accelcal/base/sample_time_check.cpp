@@ -8,14 +8,7 @@
 #include "accelcal/base/text_scan.h"
 
 namespace accelcal::detail {
-namespace {
-
-constexpr size_t kMarks = 16;             // stamps the typical interval is taken over
-constexpr size_t kRateIntervals = 1024;   // intervals the reported rate is the median of
-
-}  // namespace
-
-void SampleTimeCheck::Add(const Sample& sample, std::string_view line, long line_number,
+void SampleTimeCheck::AddInOrder(const Sample& sample, std::string_view line, long line_number,
                           size_t t_offset, std::vector<Sample>* out,
                           std::vector<InputError>* errors) {
   Held h{sample, line_number, 0};
@@ -142,29 +135,6 @@ double SampleTimeCheck::TypicalIntervalS() const {
   const StampMark& oldest = marks_.size() < kMarks ? marks_.front() : marks_[marks_next_];
   if (newest.index <= oldest.index) return kNaN;
   return (newest.t_s - oldest.t_s) / static_cast<double>(newest.index - oldest.index);
-}
-
-void SampleTimeCheck::NoteStamp(double t_s) {
-  if (std::isfinite(last_stamp_s_) && t_s > last_stamp_s_) {
-    const double step = t_s - last_stamp_s_;
-    if (!(step >= stamp_step_s_)) stamp_step_s_ = step;
-  }
-  last_stamp_s_ = t_s;
-  const StampMark mark{t_s, delivered_};
-  if (marks_.size() < kMarks) {
-    marks_.push_back(mark);
-  } else {
-    marks_[marks_next_] = mark;
-    marks_next_ = (marks_next_ + 1) % kMarks;
-  }
-}
-
-void SampleTimeCheck::Deliver(const Sample& s, std::vector<Sample>* out) {
-  out->push_back(s);
-  if (first_intervals_s_.size() < kRateIntervals && std::isfinite(last_delivered_t_s_))
-    first_intervals_s_.push_back(s.t_s - last_delivered_t_s_);
-  last_delivered_t_s_ = s.t_s;
-  ++delivered_;
 }
 
 InputError SampleTimeCheck::TieError(const Held& h) const {

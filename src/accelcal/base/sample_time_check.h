@@ -18,6 +18,7 @@
 // A refused sample is dropped and its error returned; what was accepted is unaffected.
 #pragma once
 
+#include <cmath>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -40,7 +41,18 @@ class SampleTimeCheck {
   // messages). Appends the samples now final to *out, in order; a refused sample's error goes
   // to *errors.
   void Add(const Sample& sample, std::string_view line, long line_number, size_t t_offset,
-           std::vector<Sample>* out, std::vector<InputError>* errors);
+           std::vector<Sample>* out, std::vector<InputError>* errors) {
+    // The common case, inline: nothing held, t after the last sample (in kStrict the last seen
+    // is the last accepted), which AddInOrder would accept the same way.
+    if (mode_ == Mode::kStrict && has_previous_ && sample.t_s > last_seen_t_s_) {
+      previous_t_s_ = last_seen_t_s_ = sample.t_s;
+      previous_line_ = last_seen_line_ = line_number;
+      NoteStamp(sample.t_s);
+      Deliver(sample, out);
+      return;
+    }
+    AddInOrder(sample, line, line_number, t_offset, out, errors);
+  }
   // The end of the stream: held samples are judged and delivered.
   void Finish(std::vector<Sample>* out, std::vector<InputError>* errors);
 
@@ -61,14 +73,37 @@ class SampleTimeCheck {
     long column = 0;  // of t, for a tie's message
   };
 
-  void Deliver(const Sample& s, std::vector<Sample>* out);
+  void AddInOrder(const Sample& sample, std::string_view line, long line_number, size_t t_offset,
+                  std::vector<Sample>* out, std::vector<InputError>* errors);
+  void Deliver(const Sample& s, std::vector<Sample>* out) {
+    out->push_back(s);
+    if (first_intervals_s_.size() < kRateIntervals && std::isfinite(last_delivered_t_s_))
+      first_intervals_s_.push_back(s.t_s - last_delivered_t_s_);
+    last_delivered_t_s_ = s.t_s;
+    ++delivered_;
+  }
   void StrictAdd(const Held& h, std::vector<Sample>* out, std::vector<InputError>* errors);
   void ResolveSuspect(bool rounded, std::vector<Sample>* out, std::vector<InputError>* errors);
   void RepairAdd(const Held& h, std::vector<Sample>* out, std::vector<InputError>* errors);
   void CloseGroup(double next_stamp_s, std::vector<Sample>* out, std::vector<InputError>* errors);
   double TypicalIntervalS() const;
   InputError TieError(const Held& h) const;
-  void NoteStamp(double t_s);
+  void NoteStamp(double t_s) {
+    if (std::isfinite(last_stamp_s_) && t_s > last_stamp_s_) {
+      const double step = t_s - last_stamp_s_;
+      if (!(step >= stamp_step_s_)) stamp_step_s_ = step;
+    }
+    last_stamp_s_ = t_s;
+    const StampMark mark{t_s, delivered_};
+    if (marks_.size() < kMarks) {
+      marks_.push_back(mark);
+    } else {
+      marks_[marks_next_] = mark;
+      marks_next_ = marks_next_ + 1 == kMarks ? 0 : marks_next_ + 1;
+    }
+  }
+  static constexpr size_t kMarks = 16;             // stamps the typical interval is taken over
+  static constexpr size_t kRateIntervals = 1024;   // intervals the reported rate is the median of
 
   std::string source_name_;
   bool repair_ties_;

@@ -5,6 +5,7 @@
 #include <fstream>
 #include <iterator>
 
+#include <fmt/compile.h>
 #include <fmt/format.h>
 
 #include "accelcal/base/error.h"
@@ -19,14 +20,20 @@ std::string Number(double value) { return fmt::format("{}", value); }
 // Appends Number(value)'s text. Readings in counts are whole numbers: those print as the
 // integer they are (fmt's shortest form of such a double, below 1e15 and but for -0),
 // without the shortest-digits search.
+// Both forms go straight into the buffer: fmt::format_int for the integer, and the "{}" format
+// compiled (FMT_COMPILE: the same text, without parsing the format string at every value,
+// which cost as much as the formatting).
 void AppendNumber(double value, fmt::memory_buffer* out) {
   constexpr double kExactInteger = 1e15;
   const bool negative_zero = value == 0.0 && std::signbit(value);
   if (std::fabs(value) < kExactInteger && value == std::trunc(value) && !negative_zero) {
-    fmt::format_to(std::back_inserter(*out), "{}", static_cast<long long>(value));
+    const fmt::format_int text(static_cast<long long>(value));
+    out->append(text.data(), text.data() + text.size());
     return;
   }
-  fmt::format_to(std::back_inserter(*out), "{}", value);
+  char text[32];  // the longest shortest form of a double is 24 characters
+  const auto end = fmt::format_to(text, FMT_COMPILE("{}"), value);
+  out->append(text, end);
 }
 
 // Empty for NaN: the format's "unknown".

@@ -1,19 +1,195 @@
 #include "accelcal/calibration/diagnosis/leave_one_out.h"
 
+#include <algorithm>
 #include <cmath>
+
+#include <Eigen/Cholesky>
+#include <Eigen/SVD>
 
 namespace accelcal {
 namespace {
 
 constexpr int kMaxWarmIterations = 3;  // Gauss-Newton iterations, the converging one included
+// The one-capture update (below) is used only while the others still determine the fit: at a
+// leverage h_ii above this the capture carries nearly all the information on some combination
+// of parameters, the rank-one downdate divides by 1 - h_ii < 1e-3, and the fit without it moves
+// far (hundreds of scaled units on the Xsens data, where the held-Jacobian steps do not settle):
+// refit instead.
+constexpr double kMaxLeverage = 0.999;
+constexpr int kMaxChordIterations = 6;  // steps with one Jacobian held
+constexpr int kMaxJacobianChecks = 3;   // Jacobians evaluated per capture
+// A weighted Jacobian whose smallest singular value is below this fraction of its largest: the
+// update, which solves normal equations (squaring the condition number), is not used; the
+// refits then also say what the captures do not determine.
+constexpr double kMinRelativeSingularValue = 1e-6;
 
-}  // namespace
+// The fit of all captures, linearised: the weighted residuals rho and the weighted Jacobian J in
+// the solver's scaled free variables (as least_squares.h scales them), and J's SVD.
+struct Linearised {
+  std::vector<int> free;          // indices of the fitted parameters
+  Eigen::VectorXd scales;         // ParameterScale of every parameter at p_full
+  Eigen::VectorXd sigmas;         // each capture's 1-sigma, m/s^2
+  Eigen::VectorXd rho;            // r_i / sigma_i at p_full
+  Eigen::MatrixXd jac;            // d rho_i / d x_k
+  Eigen::MatrixXd u, v;           // thin SVD: jac = u diag(s) v^T
+  Eigen::VectorXd s;
+  bool usable = false;
 
-LeaveOneOutResult PredictLeftOut(const ResidualModel& model, const std::vector<FitCapture>& captures,
-                                 const Eigen::VectorXd& p_full, const LeastSquaresOptions& solver) {
-  LeaveOneOutResult out;
-  const Eigen::VectorXd sigmas = ResidualSigmas(model, captures, p_full, solver.gravity_mps2);
+  // A^-1 b with A = J^T J.
+  Eigen::VectorXd SolveNormal(const Eigen::VectorXd& b) const {
+    return v * (s.array().square().inverse().matrix().asDiagonal() * (v.transpose() * b));
+  }
+  Eigen::VectorXd Parameters(const Eigen::VectorXd& p_full, const Eigen::VectorXd& x) const {
+    Eigen::VectorXd p = p_full;
+    for (size_t k = 0; k < free.size(); ++k) p(free[k]) += scales(free[k]) * x(static_cast<Eigen::Index>(k));
+    return p;
+  }
+};
+
+Linearised Linearise(const ResidualModel& model, const std::vector<FitCapture>& captures,
+                     const Eigen::VectorXd& p_full, const LeastSquaresOptions& solver) {
+  Linearised lin;
+  const int n = static_cast<int>(captures.size());
+  const int np = model.NumParameters();
+  for (int i = 0; i < np; ++i)
+    if (std::find(solver.held.begin(), solver.held.end(), i) == solver.held.end()) lin.free.push_back(i);
+  const int nf = static_cast<int>(lin.free.size());
+  lin.sigmas = ResidualSigmas(model, captures, p_full, solver.gravity_mps2);
+  lin.scales.resize(np);
+  for (int i = 0; i < np; ++i) lin.scales(i) = model.ParameterScale(p_full, i);
+  lin.rho.resize(n);
+  lin.jac.resize(n, nf);
+  Eigen::VectorXd grad(np);
+  for (int i = 0; i < n; ++i) {
+    const double r = model.Residual(p_full, captures[static_cast<size_t>(i)], solver.gravity_mps2, &grad, nullptr);
+    lin.rho(i) = r / lin.sigmas(i);
+    for (int k = 0; k < nf; ++k) lin.jac(i, k) = grad(lin.free[k]) * lin.scales(lin.free[k]) / lin.sigmas(i);
+  }
+  if (nf == 0 || n <= nf + 1 || !lin.rho.allFinite() || !lin.jac.allFinite()) return lin;
+  const Eigen::JacobiSVD<Eigen::MatrixXd> svd(lin.jac, Eigen::ComputeThinU | Eigen::ComputeThinV);
+  lin.u = svd.matrixU();
+  lin.v = svd.matrixV();
+  lin.s = svd.singularValues();
+  lin.usable = lin.s(nf - 1) > kMinRelativeSingularValue * lin.s(0);
+  return lin;
+}
+
+struct LeftOutFit {
+  Eigen::VectorXd p;        // the parameters without the capture
+  double extra_var = 0.0;   // g^T C_(-i) g, m/s^2 squared: the prediction's own spread
+};
+
+// The weighted residuals (and, with `jac`, the weighted Jacobian in the scaled free variables)
+// of every capture at x, the step from p_full.
+bool EvaluateAt(const ResidualModel& model, const std::vector<FitCapture>& captures,
+                const Eigen::VectorXd& p_full, const Linearised& lin, const Eigen::VectorXd& x,
+                double gravity_mps2, Eigen::VectorXd* rho, Eigen::MatrixXd* jac) {
+  const Eigen::VectorXd p = lin.Parameters(p_full, x);
+  const int n = static_cast<int>(captures.size());
+  const int nf = static_cast<int>(lin.free.size());
+  Eigen::VectorXd grad(model.NumParameters());
+  rho->resize(n);
+  if (jac != nullptr) jac->resize(n, nf);
+  for (int j = 0; j < n; ++j) {
+    const double r = model.Residual(p, captures[static_cast<size_t>(j)], gravity_mps2,
+                                    jac != nullptr ? &grad : nullptr, nullptr);
+    (*rho)(j) = r / lin.sigmas(j);
+    if (jac != nullptr)
+      for (int k = 0; k < nf; ++k) (*jac)(j, k) = grad(lin.free[k]) * lin.scales(lin.free[k]) / lin.sigmas(j);
+  }
+  return rho->allFinite() && (jac == nullptr || jac->allFinite());
+}
+
+// The polish's test (least_squares.cpp) of a Gauss-Newton step at x for the captures but i:
+// converged when the step is below the step tolerance, or when the cost no longer falls
+// beyond round-off while the Gauss-Newton model predicts no more than a round-off decrease
+// (large residuals make Gauss-Newton converge only linearly: the refits stop by this second
+// test). Takes the step into *x when it lowers the cost.
+bool IsPolishConverged(const ResidualModel& model, const std::vector<FitCapture>& captures,
+                       const Eigen::VectorXd& p_full, const Linearised& lin, int i,
+                       const Eigen::MatrixXd& jac, const Eigen::VectorXd& rho,
+                       const Eigen::VectorXd& step, const LeastSquaresOptions& solver,
+                       Eigen::VectorXd* x) {
+  const double cost = rho.squaredNorm() - rho(i) * rho(i);
+  Eigen::VectorXd jstep = jac * step;
+  jstep(i) = 0.0;
+  const double predicted = jstep.squaredNorm();
+  const Eigen::VectorXd candidate = *x + step;
+  Eigen::VectorXd rho_new;
+  double new_cost = cost;
+  if (EvaluateAt(model, captures, p_full, lin, candidate, solver.gravity_mps2, &rho_new, nullptr)) {
+    const double c = rho_new.squaredNorm() - rho_new(i) * rho_new(i);
+    if (c <= cost) {
+      new_cost = c;
+      *x = candidate;
+    }
+  }
+  const bool stalled = cost - new_cost <= 1e-12 * (1.0 + cost);
+  return step.lpNorm<Eigen::Infinity>() < solver.step_tolerance ||
+         (stalled && predicted <= 1e-9 * (1.0 + cost));
+}
+
+// The fit without capture i from the full fit, without a solve from scratch. The rank-one
+// (Sherman-Morrison) downdate of the normal equations gives the step to the fit of the others,
+// x = A^-1 J_i^T rho_i / (1 - h_ii) (exact for a linear model). Gauss-Newton steps with the
+// Jacobian held (each costs one evaluation of the residuals) settle it; but with the Jacobian
+// held they settle where J_held^T rho = 0, not where the others' cost is least (off by
+// A^-1 (J - J_held)^T rho: a few % of an outlier's prediction), so the Jacobian is then
+// evaluated where they settled and its Gauss-Newton step taken: when the polish's own test
+// (IsPolishConverged) says converged, that is the minimum a refit would stop at; else the steps
+// go on with the new Jacobian held. False when the capture's leverage is too high or the
+// steps do not settle by then: the caller refits.
+bool UpdateLeftOut(const ResidualModel& model, const std::vector<FitCapture>& captures,
+                   const Eigen::VectorXd& p_full, const Linearised& lin, int i,
+                   const LeastSquaresOptions& solver, LeftOutFit* out) {
+  const double h = lin.u.row(i).squaredNorm();
+  if (!(h < kMaxLeverage)) return false;
+  const Eigen::VectorXd ji = lin.jac.row(i).transpose();
+  const Eigen::VectorXd a_inv_ji = lin.SolveNormal(ji);
+  Eigen::VectorXd x = a_inv_ji * (lin.rho(i) / (1.0 - h));
+  // The normal matrix of the others from a Jacobian of every capture.
+  const auto others_normal = [i](const Eigen::MatrixXd& jac) -> Eigen::LDLT<Eigen::MatrixXd> {
+    const Eigen::VectorXd row = jac.row(i).transpose();
+    return Eigen::LDLT<Eigen::MatrixXd>(jac.transpose() * jac - row * row.transpose());
+  };
+  Eigen::MatrixXd held = lin.jac;
+  Eigen::LDLT<Eigen::MatrixXd> held_normal = others_normal(held);
+  Eigen::VectorXd rho;
+  Eigen::MatrixXd jac;
+  for (int check = 0; check < kMaxJacobianChecks; ++check) {
+    bool settled = false;
+    for (int it = 0; it < kMaxChordIterations && !settled; ++it) {
+      if (!EvaluateAt(model, captures, p_full, lin, x, solver.gravity_mps2, &rho, nullptr)) return false;
+      const Eigen::VectorXd b = held.transpose() * rho - held.row(i).transpose() * rho(i);
+      const Eigen::VectorXd step = -held_normal.solve(b);
+      x += step;
+      settled = step.lpNorm<Eigen::Infinity>() < solver.step_tolerance;
+    }
+    if (!settled) return false;
+    if (!EvaluateAt(model, captures, p_full, lin, x, solver.gravity_mps2, &rho, &jac)) return false;
+    held_normal = others_normal(jac);
+    if (held_normal.info() != Eigen::Success) return false;
+    const Eigen::VectorXd b = jac.transpose() * rho - jac.row(i).transpose() * rho(i);
+    const Eigen::VectorXd step = -held_normal.solve(b);
+    if (IsPolishConverged(model, captures, p_full, lin, i, jac, rho, step, solver, &x)) {
+      out->p = lin.Parameters(p_full, x);
+      // g^T C_(-i) g = sigma_i^2 J_i (J_(-i)^T J_(-i))^-1 J_i^T, weighted rows at the fit.
+      const Eigen::VectorXd row = jac.row(i).transpose();
+      out->extra_var = lin.sigmas(i) * lin.sigmas(i) * row.dot(held_normal.solve(row));
+      return true;
+    }
+    held = jac;
+  }
+  return false;
+}
+
+// The fit without capture i by refitting: Gauss-Newton warm-started at p_full, the full solve
+// when that does not converge; p_full itself (with no spread) when both fail.
+LeftOutFit RefitLeftOut(const ResidualModel& model, const std::vector<FitCapture>& captures,
+                        const Eigen::VectorXd& p_full, size_t i, const LeastSquaresOptions& solver) {
   std::vector<FitCapture> rest;
+  for (size_t j = 0; j < captures.size(); ++j)
+    if (j != i) rest.push_back(captures[j]);
   // Without one capture the minimum usually moves little from p_full: Gauss-Newton from there
   // reaches the same minimum as the full solve (by the same convergence test) at a fraction of
   // the cost. When it needs more than kMaxWarmIterations steps the capture moved the fit far
@@ -23,24 +199,35 @@ LeaveOneOutResult PredictLeftOut(const ResidualModel& model, const std::vector<F
   LeastSquaresOptions warm = solver;
   warm.warm_start = true;
   warm.max_gauss_newton_iterations = kMaxWarmIterations;  // not converged by then: not usable
+  FitSummary s = SolveWeightedLeastSquares(model, rest, p_full, warm);
+  if (!s.IsUsable()) s = SolveWeightedLeastSquares(model, rest, p_full, solver);
+  LeftOutFit out{s.IsUsable() ? s.parameters : p_full, 0.0};
+  if (s.IsUsable() && s.uncertainty_scale > 0.0) {
+    Eigen::VectorXd grad(model.NumParameters());  // the base model writes it unsized
+    model.Residual(out.p, captures[i], solver.gravity_mps2, &grad, nullptr);
+    // The fit's covariance carries the factor max(1, chi2/dof); the noise-only one does not.
+    const double unscale = 1.0 / (s.uncertainty_scale * s.uncertainty_scale);
+    out.extra_var = unscale * grad.dot(s.covariance * grad);
+  }
+  return out;
+}
+
+}  // namespace
+
+LeaveOneOutResult PredictLeftOut(const ResidualModel& model, const std::vector<FitCapture>& captures,
+                                 const Eigen::VectorXd& p_full, const LeastSquaresOptions& solver) {
+  LeaveOneOutResult out;
+  const Linearised lin = Linearise(model, captures, p_full, solver);
   double sum_sq = 0.0, chi2 = 0.0;
   for (size_t i = 0; i < captures.size(); ++i) {
-    rest.clear();
-    for (size_t j = 0; j < captures.size(); ++j)
-      if (j != i) rest.push_back(captures[j]);
-    FitSummary s = SolveWeightedLeastSquares(model, rest, p_full, warm);
-    if (!s.IsUsable()) s = SolveWeightedLeastSquares(model, rest, p_full, solver);
-    const bool usable = s.IsUsable();
-    const Eigen::VectorXd& p = usable ? s.parameters : p_full;
-    Eigen::VectorXd grad(model.NumParameters());  // the base model writes it unsized
-    const double r = model.Residual(p, captures[i], solver.gravity_mps2, &grad, nullptr);
-    double var = sigmas(static_cast<Eigen::Index>(i)) * sigmas(static_cast<Eigen::Index>(i));
-    if (usable && s.uncertainty_scale > 0.0) {
-      // The fit's covariance carries the factor max(1, chi2/dof); the noise-only one does not.
-      const double unscale = 1.0 / (s.uncertainty_scale * s.uncertainty_scale);
-      var += unscale * grad.dot(s.covariance * grad);
+    LeftOutFit fit;
+    if (!lin.usable || !UpdateLeftOut(model, captures, p_full, lin, static_cast<int>(i), solver, &fit)) {
+      fit = RefitLeftOut(model, captures, p_full, i, solver);
+      ++out.refitted;
     }
-    LeaveOneOutPrediction pred{captures[i].id, r, r / std::sqrt(var)};
+    const double r = model.Residual(fit.p, captures[i], solver.gravity_mps2, nullptr, nullptr);
+    const double sigma = lin.sigmas(static_cast<Eigen::Index>(i));
+    LeaveOneOutPrediction pred{captures[i].id, r, r / std::sqrt(sigma * sigma + fit.extra_var)};
     sum_sq += r * r;
     chi2 += pred.z * pred.z;
     if (!(std::fabs(pred.z) <= out.worst_abs_z)) {

@@ -1,5 +1,5 @@
-// Leave-one-capture-out prediction: refit a model without each capture in turn (warm-started at
-// the full fit) and predict the capture it did not see. Judged against noise, not only ranked:
+// Leave-one-capture-out prediction: fit a model without each capture in turn and predict the
+// capture it did not see. Judged against noise, not only ranked:
 // each prediction error r_i is divided by what noise explains of it,
 //
 //   z_i = r_i / sqrt(sigma_i^2 + g_i^T C_(-i) g_i),
@@ -33,12 +33,19 @@ struct LeaveOneOutResult {
   double chi2 = kNaN;          // sum of z_i^2
   double worst_abs_z = kNaN;   // the largest |z_i|
   int worst_index = -1;        // its index in the captures
+  int refitted = 0;            // captures whose fit without them needed a refit (header comment)
 };
 
-// Refits `model` without each capture from `p_full` (the fit of all of them): Gauss-Newton
-// warm-started at p_full (LeastSquaresOptions::warm_start, at most 3 iterations), the full solve
-// (NLopt, then Gauss-Newton) when that does not converge. A refit that fails both ways predicts
-// from `p_full`. tests/unit/leave_one_out_test.cpp holds the result to cold refits.
+// The fit of `model` without each capture, from `p_full` (the fit of all of them): by the
+// rank-one downdate of the full fit's normal equations (the exact leave-one-out step of a linear
+// model), then Gauss-Newton steps with a Jacobian held, checked by a Jacobian evaluated where
+// they settle: done when its step is below the polish's step tolerance (the polish's own test),
+// so each capture costs a few evaluations of the residuals and one or two Jacobians. Where that
+// does not apply (a capture of leverage above 0.999, a condition number above 1e6) or does not
+// settle within 3 Jacobians, a refit: Gauss-Newton warm-started at p_full
+// (LeastSquaresOptions::warm_start, at most 3 iterations), the full solve (NLopt, then
+// Gauss-Newton) when that does not converge. A refit that fails both ways predicts from
+// `p_full`. tests/unit/leave_one_out_test.cpp holds the result to cold refits.
 LeaveOneOutResult PredictLeftOut(const ResidualModel& model, const std::vector<FitCapture>& captures,
                                  const Eigen::VectorXd& p_full, const LeastSquaresOptions& solver);
 
