@@ -110,12 +110,13 @@ class AveragedSeriesStats {
     const Eigen::Index k = s.size() - 1;
     const auto head = s.head(k);
     const auto tail = s.tail(k);
+    const double tail_sum = tail.sum();  // both s and sb: summed once
     sums->n += static_cast<double>(k);
-    sums->s += tail.sum();
+    sums->s += tail_sum;
     sums->ss += tail.square().sum();
     sums->np += static_cast<double>(k);
     sums->sa += head.sum();
-    sums->sb += tail.sum();
+    sums->sb += tail_sum;
     sums->sab += (head * tail).sum();
   }
 
