@@ -1,12 +1,14 @@
 #!/usr/bin/env bash
 # Side-by-side speed of accelcal and its peer tools as whole processes (issue 18).
 #
-#   scripts/bench_peers.sh [--accelcal PATH] [--imu-tk-acc CMD] [--allantools CMD]
+#   scripts/bench_peers.sh [--accelcal PATH] [--peers DIR] [--imu-tk-acc CMD] [--allantools CMD]
 #                          [--hours H] [--rate-hz R] [--read-hours H] [--runs N]
 #                          [--allan-runs N] [--reps N] [--xsens FILE] [--workdir DIR]
 #
-# This script builds nothing and fetches nothing: the peers are commands you give it (options
-# or environment variables). A peer not given is said and its rows are skipped.
+# The peers are built from their public sources, outside the repository, by
+# scripts/bench_peers_build.sh; --peers DIR takes the two it built in DIR. They can also be any
+# commands given as options or environment variables (below). A peer not given is said and its
+# rows are skipped.
 #   IMU_TK_ACC_CMD  (--imu-tk-acc)  runs imu_tk's accelerometer calibration alone
 #       (MultiPosCalibration::calibrateAcc with the settings of imu_tk's apps/test_imu_calib.cpp
 #       for the Xsens data: init static 50 s, 100 samples per interval, g = 9.81744, initial
@@ -48,7 +50,7 @@ xsens=$repo/../shared/data/imu_tk/xsens_acc.mat
 workdir=${TMPDIR:-/tmp}/accelcal-bench-peers
 
 die() { echo "bench_peers: $*" >&2; exit 2; }
-opts=" --accelcal --imu-tk-acc --allantools --hours --rate-hz --read-hours --runs --allan-runs"
+opts=" --accelcal --peers --imu-tk-acc --allantools --hours --rate-hz --read-hours --runs --allan-runs"
 opts+=" --reps --xsens --workdir "
 while (($#)); do
   if [[ $1 == -h || $1 == --help ]]; then
@@ -59,6 +61,10 @@ while (($#)); do
   (($# >= 2)) || die "$1 needs a value (--help)"
   case $1 in
     --accelcal) accelcal=$2 ;;
+    --peers)
+      [[ -x $2/imu_tk/imu_tk_acc ]] && imu_tk_cmd=$2/imu_tk/imu_tk_acc
+      [[ -f $2/allantools/oadev_axes.py ]] && allantools_cmd="/usr/bin/python3 $2/allantools/oadev_axes.py"
+      [[ -n $imu_tk_cmd || -n $allantools_cmd ]] || die "no peers built in $2 (scripts/bench_peers_build.sh)" ;;
     --imu-tk-acc) imu_tk_cmd=$2 ;;
     --allantools) allantools_cmd=$2 ;;
     --hours) hours=$2 ;;
