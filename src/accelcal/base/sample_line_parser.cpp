@@ -163,7 +163,7 @@ bool SampleLineParser::ParsePlainPositional(std::string_view line, Sample* sampl
 size_t SampleLineParser::Parse(std::string_view line, long line_number, Sample* sample) {
   // Positional, blank/comma-separated, after the first line set the field count (the first
   // line's errors and count come from the general path).
-  if (positional_ && delimiter_ == 0 && fields_per_line_ != 0) {
+  if (plain_fast_path_ && positional_ && delimiter_ == 0 && fields_per_line_ != 0) {
     size_t t_offset = 0;
     if (ParsePlainPositional(line, sample, &t_offset)) return t_offset;
   }

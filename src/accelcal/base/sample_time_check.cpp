@@ -8,7 +8,7 @@
 #include "accelcal/base/text_scan.h"
 
 namespace accelcal::detail {
-void SampleTimeCheck::AddInOrder(const Sample& sample, std::string_view line, long line_number,
+void SampleTimeCheck::AddWithChecks(const Sample& sample, std::string_view line, long line_number,
                           size_t t_offset, std::vector<Sample>* out,
                           std::vector<InputError>* errors) {
   Held h{sample, line_number, 0};

@@ -43,7 +43,7 @@ class SampleTimeCheck {
   void Add(const Sample& sample, std::string_view line, long line_number, size_t t_offset,
            std::vector<Sample>* out, std::vector<InputError>* errors) {
     // The common case, inline: nothing held, t after the last sample (in kStrict the last seen
-    // is the last accepted), which AddInOrder would accept the same way.
+    // is the last accepted), which AddWithChecks would accept the same way.
     if (mode_ == Mode::kStrict && has_previous_ && sample.t_s > last_seen_t_s_) {
       previous_t_s_ = last_seen_t_s_ = sample.t_s;
       previous_line_ = last_seen_line_ = line_number;
@@ -51,7 +51,7 @@ class SampleTimeCheck {
       Deliver(sample, out);
       return;
     }
-    AddInOrder(sample, line, line_number, t_offset, out, errors);
+    AddWithChecks(sample, line, line_number, t_offset, out, errors);
   }
   // The end of the stream: held samples are judged and delivered.
   void Finish(std::vector<Sample>* out, std::vector<InputError>* errors);
@@ -73,7 +73,7 @@ class SampleTimeCheck {
     long column = 0;  // of t, for a tie's message
   };
 
-  void AddInOrder(const Sample& sample, std::string_view line, long line_number, size_t t_offset,
+  void AddWithChecks(const Sample& sample, std::string_view line, long line_number, size_t t_offset,
                   std::vector<Sample>* out, std::vector<InputError>* errors);
   void Deliver(const Sample& s, std::vector<Sample>* out) {
     out->push_back(s);
