@@ -74,7 +74,7 @@ std::vector<size_t> RankByAbs(const std::vector<double>& z) {
 }
 
 void ExpectSameAsCold(const std::vector<FitCapture>& captures, const char* effect_name,
-                      int max_refitted = 0) {
+                      int max_refitted = 0, double relative_tolerance = 1e-3) {
   const DiagnosisReport base = Diagnose(captures, FitOptions{}, DiagnosisOptions{});
   ASSERT_TRUE(base.base.IsUsable()) << base.base.message;
   std::vector<const Effect*> effects;
@@ -97,15 +97,17 @@ void ExpectSameAsCold(const std::vector<FitCapture>& captures, const char* effec
   for (size_t i = 0; i < captures.size(); ++i) {
     const LeaveOneOutPrediction& p = warm.predictions[i];
     EXPECT_EQ(p.id, captures[i].id);
-    // Both converge to one minimum; their weights are anchored at p_full (PredictLeftOut) or at
-    // NLopt's answer (cold), which moves an outlier's prediction by a few 1e-4 of itself, and
-    // the cold polish also stops where the cost no longer falls beyond round-off (its stall
-    // test), which with an outlier's cost of ~1e3 leaves the minimum by up to ~1.5e-3 of a
-    // prediction (the update, whose stop is a step below the tolerance, reaches a lower cost
-    // there): far below the noise either way (~1e-3 m/s^2 against predictions of 0.1 m/s^2).
-    EXPECT_NEAR(p.residual_mps2, cold.residual_mps2[i], 1e-6 + 2e-3 * std::fabs(cold.residual_mps2[i]))
+    // Both converge to one minimum, each stopping by the polish's test; their weights are
+    // anchored at p_full (PredictLeftOut) or at NLopt's answer (cold), which moves an outlier's
+    // prediction by a few 1e-4 of itself. With an outlier the polish's second stopping rule
+    // decides (the cost no longer falls beyond round-off and Gauss-Newton predicts a decrease
+    // of at most 1e-9 of it: with costs of ~2000 a band the two solves stop at different places
+    // in, ~3e-3 of a prediction apart): the outlier case passes its own tolerance. Far below the
+    // noise either way (~1e-3 m/s^2 against predictions of 0.05 m/s^2, z of 21.3 against 21.26).
+    EXPECT_NEAR(p.residual_mps2, cold.residual_mps2[i],
+                1e-6 + relative_tolerance * std::fabs(cold.residual_mps2[i]))
         << "capture " << i;
-    EXPECT_NEAR(p.z, cold.z[i], 1e-3 + 2e-3 * std::fabs(cold.z[i])) << "capture " << i;
+    EXPECT_NEAR(p.z, cold.z[i], 1e-3 + relative_tolerance * std::fabs(cold.z[i])) << "capture " << i;
     warm_z.push_back(p.z);
     worst = std::max(worst, std::fabs(cold.z[i]));
   }
@@ -143,7 +145,7 @@ TEST(LeaveOneOut, WarmStartedNamesTheSameDisagreeingCapture) {
   // One pose read 0.5 % high on every axis (a capture that no model predicts).
   captures[5].mean_counts = captures[5].mean_counts * 1.005;
   // The outlier moves the fits without some captures far enough for a refit (6 of 18 here).
-  ExpectSameAsCold(captures, nullptr, static_cast<int>(captures.size()) / 2);
+  ExpectSameAsCold(captures, nullptr, static_cast<int>(captures.size()) / 2, 5e-3);
   const DiagnosisReport base = Diagnose(captures, FitOptions{}, DiagnosisOptions{});
   // The base model itself (its gradient is written into a vector PredictLeftOut must size: this
   // crashed before issue 18).
