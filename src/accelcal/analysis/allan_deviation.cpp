@@ -2,8 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdint>
-#include <cstring>
 #include <set>
 #include <string>
 #include <utility>
@@ -14,35 +12,6 @@
 
 namespace accelcal {
 namespace {
-
-// Sum over k < n of (x[k + 2 g] - 2 x[k + g] + x[k])^2: the Allan term sums, where the
-// accumulator spends most of its time. Sixteen partial sums in four vectors of four: the
-// additions into one sum wait on each other, and with the two-by-two sums of an Eigen
-// expression that wait was the loop's speed (issue 18); sixteen keep the adder busy on any
-// x86-64 (GCC's vector extension: two SSE2 registers a vector without -mavx). The order of
-// the additions differs from a plain loop's by rounding only.
-double SumSquaredSecondDifferences(const double* x, std::int64_t g, std::int64_t n) {
-  typedef double Vec4 __attribute__((vector_size(32)));
-  Vec4 acc[4] = {};
-  std::int64_t k = 0;
-  for (; k + 16 <= n; k += 16) {
-    for (int u = 0; u < 4; ++u) {
-      Vec4 x0, x1, x2;
-      std::memcpy(&x0, x + k + 4 * u, sizeof x0);
-      std::memcpy(&x1, x + k + g + 4 * u, sizeof x1);
-      std::memcpy(&x2, x + k + 2 * g + 4 * u, sizeof x2);
-      const Vec4 d = x2 - 2.0 * x1 + x0;
-      acc[u] += d * d;
-    }
-  }
-  const Vec4 total = (acc[0] + acc[1]) + (acc[2] + acc[3]);
-  double sum = (total[0] + total[1]) + (total[2] + total[3]);
-  for (; k < n; ++k) {
-    const double d = x[k + 2 * g] - 2.0 * x[k + g] + x[k];
-    sum += d * d;
-  }
-  return sum;
-}
 
 // Running sums of a series with gaps and of its lag-1 pairs (consecutive valid values), from
 // which its lag-1 autocorrelation follows exactly as Lag1Autocorrelation computes it.
@@ -313,7 +282,7 @@ struct AllanAccumulator::Impl {
         Eigen::Map<const Eigen::ArrayXd> x1(l.x.data() + b0 + gm, n);
         Eigen::Map<const Eigen::ArrayXd> x2(l.x.data() + b0 + 2 * gm, n);
         if (l.c[b0 + n - 1 + 2 * gm] == l.c[b0]) {  // no missing reading under these terms
-          f.sum_sq += SumSquaredSecondDifferences(l.x.data() + b0, gm, n);
+          f.sum_sq += (x2 - 2.0 * x1 + x0).square().sum();
           f.terms += n;
         } else {
           Eigen::Map<const Eigen::ArrayXd> c0(l.c.data() + b0, n);
