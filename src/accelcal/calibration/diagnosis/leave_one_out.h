@@ -42,7 +42,7 @@ struct LeaveOneOutResult {
 // they settle: done when its step is below the polish's step tolerance (the polish's own test),
 // so each capture costs a few evaluations of the residuals and one or two Jacobians. Where that
 // does not apply (a capture of leverage above 0.999, a condition number above 1e6) or does not
-// settle within 3 Jacobians, a refit: Gauss-Newton warm-started at p_full
+// settle within 8 Jacobians, a refit: Gauss-Newton warm-started at p_full
 // (LeastSquaresOptions::warm_start, at most 3 iterations), the full solve (NLopt, then
 // Gauss-Newton) when that does not converge. A refit that fails both ways predicts from
 // `p_full`. tests/unit/leave_one_out_test.cpp holds the result to cold refits.
