@@ -18,8 +18,8 @@ constexpr int kMaxWarmIterations = 3;  // Gauss-Newton iterations, the convergin
 constexpr double kMaxLeverage = 0.999;
 constexpr int kMaxChordIterations = 6;  // steps with one Jacobian held
 // Jacobians evaluated per capture before a refit decides. Large residuals make Gauss-Newton
-// converge linearly: on the Xsens file the 336 fits without one capture took 1 to 5 (a limit of 3
-// sent 16 of them to the full NLopt solve; now 2 go, whose steps do not settle), and the
+// converge linearly: on the Xsens file 336 of the 338 fits without one capture took 1 to 5 (a
+// limit of 3 sent 16 of them to the full NLopt solve; now 2 go, whose steps do not settle), and the
 // printout of that file and of all 700 runs of the physics bench (tests/physics) is the same as
 // with refits throughout.
 constexpr int kMaxJacobianChecks = 8;
