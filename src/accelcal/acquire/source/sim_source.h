@@ -87,6 +87,7 @@ class SimSource final : public SampleSource, public BenchControl {
   std::vector<JitterTone> tones_;  // 3 per world axis
   long next_k_ = 0;                // index of the next sample on the simulated clock
   double wall_origin_s_;           // wall time at which sample 0 (t = 0) was due, s
+  double last_burst_wall_s_ = -1e300;  // wall time of the last paced delivery, s
   long bumps_scheduled_ = 0;
   sim::SensorAxis turntable_up_ = sim::SensorAxis::kPlusZ;  // of the latest turntable mounting
 };
