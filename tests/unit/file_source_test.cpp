@@ -1,6 +1,8 @@
 // file:PATH: replay as fast as possible or paced by t; the end of the file ends the source.
 #include <unistd.h>
 
+#include <chrono>
+#include <cstdio>
 #include <fstream>
 
 #include <gtest/gtest.h>
@@ -55,6 +57,30 @@ TEST(FileSourceTest, RealtimeReplayIsPacedByTAndKeepsOrder) {
   ASSERT_TRUE(ReadUntil(*source, &samples, Ended));
   ASSERT_EQ(samples.size(), 40u);
   EXPECT_TRUE(Consecutive(samples));
+  std::remove(path.c_str());
+}
+
+// Issue 18: a paced replay of a 10 kHz recording delivered each sample as it fell due, one read
+// (and one wake-up of the wizard's loop) per sample; deliveries are now at least 5 ms apart, so
+// 0.2 s of replay takes at most ~40 reads however fast the machine, every sample in order.
+TEST(FileSourceTest, APacedFastReplayComesInBurstsNotOneReadPerSample) {
+  std::string text;
+  for (int i = 0; i < 5000; ++i) text += std::to_string(i * 1e-4) + " 1 2000 3000\n";  // 0.5 s
+  const std::string path = TempFile("paced10k.txt", text);
+  SourceOptions options;
+  options.realtime = true;
+  auto source = OpenSource("file:" + path, options);
+  std::vector<Sample> samples;
+  int reads = 0;
+  const auto start = std::chrono::steady_clock::now();
+  while (std::chrono::steady_clock::now() - start < std::chrono::milliseconds(200)) {
+    source->Read(1.0, &samples);
+    ++reads;
+  }
+  EXPECT_LE(reads, 42);
+  ASSERT_GT(samples.size(), 1u);
+  for (size_t i = 1; i < samples.size(); ++i)
+    ASSERT_NEAR(samples[i].t_s - samples[i - 1].t_s, 1e-4, 1e-9) << "sample " << i;
   std::remove(path.c_str());
 }
 

@@ -3,6 +3,7 @@
 #include <poll.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstring>
@@ -21,6 +22,10 @@ constexpr size_t kReadChunkBytes = 64 * 1024;
 constexpr size_t kMaxBytesPerCall = 1024 * 1024;
 // Paced replay: parsed samples held ahead of the clock at most (bounds memory on big files).
 constexpr size_t kMaxPacedBacklog = 20000;
+// Paced replay: deliveries at least this far apart (a read's timeout may come sooner), bursts
+// as a live link delivers them; one sample per wake-up at 10 kHz cost the reader a quarter of a
+// core (issue 18; the sim source does the same).
+constexpr double kMinPacedBurstS = 0.005;
 
 int PollTimeoutMs(double deadline_s) {
   const double left_s = deadline_s - WallNowS();
@@ -51,12 +56,18 @@ ReadResult StreamSource::Read(double timeout_s, std::vector<Sample>* out) {
   for (;;) {
     if (!input_done_ && !Backlogged()) Fill(deadline_s, &result);
     const double now_s = WallNowS();
-    Deliver(now_s, out, &result);
+    const bool paced = pacing_ == Pacing::kByT;
+    if (!paced || now_s >= last_burst_wall_s_ + kMinPacedBurstS || now_s >= deadline_s) {
+      Deliver(now_s, out, &result);
+      if (paced && result.samples > 0) last_burst_wall_s_ = now_s;
+    }
     if (input_done_ && pending() == 0) tracker_.OnEnded(&result);
     if (result.samples > 0 || status().link == LinkState::kEnded || now_s >= deadline_s) break;
     // Waiting on the clock rather than on the link: a paced replay ahead of time.
-    if (pending() > 0 && (Backlogged() || input_done_))
-      SleepS(std::min(deadline_s, NextDueWallS()) - now_s);
+    if (pending() > 0 && (Backlogged() || input_done_)) {
+      const double wake_s = std::max(NextDueWallS(), last_burst_wall_s_ + kMinPacedBurstS);
+      SleepS(std::min(deadline_s, wake_s) - now_s);
+    }
   }
   tracker_.Tick(WallNowS(), &result);
   return result;

@@ -61,6 +61,7 @@ class StreamSource final : public SampleSource {
   size_t next_ = 0;
   double pace_origin_wall_s_;   // kByT: wall time the first sample was delivered
   double pace_origin_t_s_;      // kByT: its t
+  double last_burst_wall_s_ = -1e300;  // kByT: wall time of the last delivery, s
   std::vector<char> buffer_;
 };
 
