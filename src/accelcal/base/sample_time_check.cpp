@@ -8,9 +8,9 @@
 #include "accelcal/base/text_scan.h"
 
 namespace accelcal::detail {
-void SampleTimeCheck::AddWithChecks(const Sample& sample, std::string_view line, long line_number,
-                          size_t t_offset, std::vector<Sample>* out,
-                          std::vector<InputError>* errors) {
+void SampleTimeCheck::AddWithChecks(const Sample& sample, std::string_view line,
+                                    long line_number, size_t t_offset, std::vector<Sample>* out,
+                                    std::vector<InputError>* errors) {
   Held h{sample, line_number, 0};
   if (has_previous_ && sample.t_s < last_seen_t_s_) {
     errors->emplace_back(source_name_, line_number, ColumnAt(line, t_offset),
@@ -62,13 +62,7 @@ void SampleTimeCheck::StrictAdd(const Held& h, std::vector<Sample>* out,
     errors->push_back(TieError(h));
     return;
   }
-  has_previous_ = true;
-  previous_t_s_ = h.sample.t_s;
-  previous_line_ = h.line;
-  last_seen_t_s_ = h.sample.t_s;
-  last_seen_line_ = h.line;
-  NoteStamp(h.sample.t_s);
-  Deliver(h.sample, out);
+  Accept(h.sample, h.line, out);
 }
 
 // The samples held since a first tie: rounded stamps (repair them, and every later tie), or

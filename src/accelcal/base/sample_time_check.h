@@ -45,10 +45,7 @@ class SampleTimeCheck {
     // The common case, inline: nothing held, t after the last sample (in kStrict the last seen
     // is the last accepted), which AddWithChecks would accept the same way.
     if (mode_ == Mode::kStrict && has_previous_ && sample.t_s > last_seen_t_s_) {
-      previous_t_s_ = last_seen_t_s_ = sample.t_s;
-      previous_line_ = last_seen_line_ = line_number;
-      NoteStamp(sample.t_s);
-      Deliver(sample, out);
+      Accept(sample, line_number, out);
       return;
     }
     AddWithChecks(sample, line, line_number, t_offset, out, errors);
@@ -73,8 +70,16 @@ class SampleTimeCheck {
     long column = 0;  // of t, for a tie's message
   };
 
-  void AddWithChecks(const Sample& sample, std::string_view line, long line_number, size_t t_offset,
-                  std::vector<Sample>* out, std::vector<InputError>* errors);
+  void AddWithChecks(const Sample& sample, std::string_view line, long line_number,
+                     size_t t_offset, std::vector<Sample>* out, std::vector<InputError>* errors);
+  // A sample after the last accepted one, in strict order: now the last accepted and seen.
+  void Accept(const Sample& s, long line_number, std::vector<Sample>* out) {
+    has_previous_ = true;
+    previous_t_s_ = last_seen_t_s_ = s.t_s;
+    previous_line_ = last_seen_line_ = line_number;
+    NoteStamp(s.t_s);
+    Deliver(s, out);
+  }
   void Deliver(const Sample& s, std::vector<Sample>* out) {
     out->push_back(s);
     if (first_intervals_s_.size() < kRateIntervals && std::isfinite(last_delivered_t_s_))

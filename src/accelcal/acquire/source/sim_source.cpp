@@ -10,6 +10,7 @@ namespace accelcal {
 namespace {
 
 using source_detail::SleepS;
+using source_detail::kMinPacedBurstS;
 using source_detail::WallNowS;
 
 constexpr int kTonesPerAxis = 3;
@@ -20,11 +21,6 @@ constexpr double kJitterAmplitudeMps2 = 0.4;
 constexpr double kTurnFraction = 0.6;
 // Samples generated per Read at most (a caller that stalls catches up over several calls).
 constexpr long kMaxSamplesPerRead = 200000;
-// Paced deliveries are at least this far apart (a read's timeout may come sooner), the way a
-// real link delivers a fast stream in bursts (USB frames, TCP segments): at 10 kHz one sample
-// per wake-up cost its reader a quarter of a core in wake-ups and per-read work (issue 18);
-// 5 ms is 50 samples at 10 kHz, one at 100 Hz, and no delay a person could see.
-constexpr double kMinBurstS = 0.005;
 
 double SmoothStep(double tau) { return tau * tau * tau * (10.0 - 15.0 * tau + 6.0 * tau * tau); }
 
@@ -66,8 +62,8 @@ ReadResult SimSource::Read(double timeout_s, std::vector<Sample>* out) {
   for (;;) {
     const double wall_s = WallNowS();
     const long due = SamplesDue(wall_s);
-    const bool burst_time = options_.speed == 0.0 || wall_s >= last_burst_wall_s_ + kMinBurstS ||
-                            wall_s >= deadline_s;
+    const double burst_due_s = last_burst_wall_s_ + kMinPacedBurstS;
+    const bool burst_time = options_.speed == 0.0 || wall_s >= burst_due_s || wall_s >= deadline_s;
     if (due > 0 && burst_time) {
       const size_t first = out->size();
       for (long i = 0; i < due; ++i) out->push_back(Generate(next_k_++));
@@ -78,7 +74,7 @@ ReadResult SimSource::Read(double timeout_s, std::vector<Sample>* out) {
     if (wall_s >= deadline_s) break;
     const double next_due_s =
         wall_origin_s_ + static_cast<double>(next_k_) / rate_hz / options_.speed;
-    SleepS(std::min(deadline_s, std::max(next_due_s, last_burst_wall_s_ + kMinBurstS)) - wall_s);
+    SleepS(std::min(deadline_s, std::max(next_due_s, burst_due_s)) - wall_s);
   }
   tracker_.Tick(WallNowS(), &result);
   return result;

@@ -15,6 +15,7 @@ namespace accelcal {
 namespace {
 
 using source_detail::SleepS;
+using source_detail::kMinPacedBurstS;
 using source_detail::WallNowS;
 
 constexpr size_t kReadChunkBytes = 64 * 1024;
@@ -22,10 +23,6 @@ constexpr size_t kReadChunkBytes = 64 * 1024;
 constexpr size_t kMaxBytesPerCall = 1024 * 1024;
 // Paced replay: parsed samples held ahead of the clock at most (bounds memory on big files).
 constexpr size_t kMaxPacedBacklog = 20000;
-// Paced replay: deliveries at least this far apart (a read's timeout may come sooner), bursts
-// as a live link delivers them; one sample per wake-up at 10 kHz cost the reader a quarter of a
-// core (issue 18; the sim source does the same).
-constexpr double kMinPacedBurstS = 0.005;
 
 int PollTimeoutMs(double deadline_s) {
   const double left_s = deadline_s - WallNowS();

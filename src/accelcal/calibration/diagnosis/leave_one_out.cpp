@@ -51,39 +51,6 @@ struct Linearised {
   }
 };
 
-Linearised Linearise(const ResidualModel& model, const std::vector<FitCapture>& captures,
-                     const Eigen::VectorXd& p_full, const LeastSquaresOptions& solver) {
-  Linearised lin;
-  const int n = static_cast<int>(captures.size());
-  const int np = model.NumParameters();
-  for (int i = 0; i < np; ++i)
-    if (std::find(solver.held.begin(), solver.held.end(), i) == solver.held.end()) lin.free.push_back(i);
-  const int nf = static_cast<int>(lin.free.size());
-  lin.sigmas = ResidualSigmas(model, captures, p_full, solver.gravity_mps2);
-  lin.scales.resize(np);
-  for (int i = 0; i < np; ++i) lin.scales(i) = model.ParameterScale(p_full, i);
-  lin.rho.resize(n);
-  lin.jac.resize(n, nf);
-  Eigen::VectorXd grad(np);
-  for (int i = 0; i < n; ++i) {
-    const double r = model.Residual(p_full, captures[static_cast<size_t>(i)], solver.gravity_mps2, &grad, nullptr);
-    lin.rho(i) = r / lin.sigmas(i);
-    for (int k = 0; k < nf; ++k) lin.jac(i, k) = grad(lin.free[k]) * lin.scales(lin.free[k]) / lin.sigmas(i);
-  }
-  if (nf == 0 || n <= nf + 1 || !lin.rho.allFinite() || !lin.jac.allFinite()) return lin;
-  const Eigen::JacobiSVD<Eigen::MatrixXd> svd(lin.jac, Eigen::ComputeThinU | Eigen::ComputeThinV);
-  lin.u = svd.matrixU();
-  lin.v = svd.matrixV();
-  lin.s = svd.singularValues();
-  lin.usable = lin.s(nf - 1) > kMinRelativeSingularValue * lin.s(0);
-  return lin;
-}
-
-struct LeftOutFit {
-  Eigen::VectorXd p;        // the parameters without the capture
-  double extra_var = 0.0;   // g^T C_(-i) g, m/s^2 squared: the prediction's own spread
-};
-
 // The weighted residuals (and, with `jac`, the weighted Jacobian in the scaled free variables)
 // of every capture at x, the step from p_full.
 bool EvaluateAt(const ResidualModel& model, const std::vector<FitCapture>& captures,
@@ -105,11 +72,36 @@ bool EvaluateAt(const ResidualModel& model, const std::vector<FitCapture>& captu
   return rho->allFinite() && (jac == nullptr || jac->allFinite());
 }
 
-// The polish's test (least_squares.cpp) of a Gauss-Newton step at x for the captures but i:
-// converged when the step is below the step tolerance, or when the cost no longer falls
-// beyond round-off while the Gauss-Newton model predicts no more than a round-off decrease
-// (large residuals make Gauss-Newton converge only linearly: the refits stop by this second
-// test). Takes the step into *x when it lowers the cost.
+Linearised Linearise(const ResidualModel& model, const std::vector<FitCapture>& captures,
+                     const Eigen::VectorXd& p_full, const LeastSquaresOptions& solver) {
+  Linearised lin;
+  const int n = static_cast<int>(captures.size());
+  const int np = model.NumParameters();
+  for (int i = 0; i < np; ++i)
+    if (std::find(solver.held.begin(), solver.held.end(), i) == solver.held.end()) lin.free.push_back(i);
+  const int nf = static_cast<int>(lin.free.size());
+  lin.sigmas = ResidualSigmas(model, captures, p_full, solver.gravity_mps2);
+  lin.scales.resize(np);
+  for (int i = 0; i < np; ++i) lin.scales(i) = model.ParameterScale(p_full, i);
+  const bool finite = EvaluateAt(model, captures, p_full, lin, Eigen::VectorXd::Zero(nf),
+                                 solver.gravity_mps2, &lin.rho, &lin.jac);
+  if (nf == 0 || n <= nf + 1 || !finite) return lin;
+  const Eigen::JacobiSVD<Eigen::MatrixXd> svd(lin.jac, Eigen::ComputeThinU | Eigen::ComputeThinV);
+  lin.u = svd.matrixU();
+  lin.v = svd.matrixV();
+  lin.s = svd.singularValues();
+  lin.usable = lin.s(nf - 1) > kMinRelativeSingularValue * lin.s(0);
+  return lin;
+}
+
+struct LeftOutFit {
+  Eigen::VectorXd p;        // the parameters without the capture
+  double extra_var = 0.0;   // g^T C_(-i) g, m/s^2 squared: the prediction's own spread
+};
+
+// The polish's test (IsGaussNewtonConverged) of a Gauss-Newton step at x for the captures but i
+// (large residuals make Gauss-Newton converge only linearly: the refits often stop by its
+// round-off rule). Takes the step into *x when it lowers the cost.
 bool IsPolishConverged(const ResidualModel& model, const std::vector<FitCapture>& captures,
                        const Eigen::VectorXd& p_full, const Linearised& lin, int i,
                        const Eigen::MatrixXd& jac, const Eigen::VectorXd& rho,
@@ -129,9 +121,7 @@ bool IsPolishConverged(const ResidualModel& model, const std::vector<FitCapture>
       *x = candidate;
     }
   }
-  const bool stalled = cost - new_cost <= 1e-12 * (1.0 + cost);
-  return step.lpNorm<Eigen::Infinity>() < solver.step_tolerance ||
-         (stalled && predicted <= 1e-9 * (1.0 + cost));
+  return IsGaussNewtonConverged(step.lpNorm<Eigen::Infinity>(), cost, new_cost, predicted, solver);
 }
 
 // The fit without capture i from the full fit, without a solve from scratch. The rank-one
@@ -157,6 +147,10 @@ bool UpdateLeftOut(const ResidualModel& model, const std::vector<FitCapture>& ca
     const Eigen::VectorXd row = jac.row(i).transpose();
     return Eigen::LDLT<Eigen::MatrixXd>(jac.transpose() * jac - row * row.transpose());
   };
+  // J_(-i)^T rho_(-i): the gradient of the others' cost (halved).
+  const auto others_gradient = [i](const Eigen::MatrixXd& jac, const Eigen::VectorXd& rho) -> Eigen::VectorXd {
+    return jac.transpose() * rho - jac.row(i).transpose() * rho(i);
+  };
   Eigen::MatrixXd held = lin.jac;
   Eigen::LDLT<Eigen::MatrixXd> held_normal = others_normal(held);
   Eigen::VectorXd rho;
@@ -165,8 +159,7 @@ bool UpdateLeftOut(const ResidualModel& model, const std::vector<FitCapture>& ca
     bool settled = false;
     for (int it = 0; it < kMaxChordIterations && !settled; ++it) {
       if (!EvaluateAt(model, captures, p_full, lin, x, solver.gravity_mps2, &rho, nullptr)) return false;
-      const Eigen::VectorXd b = held.transpose() * rho - held.row(i).transpose() * rho(i);
-      const Eigen::VectorXd step = -held_normal.solve(b);
+      const Eigen::VectorXd step = -held_normal.solve(others_gradient(held, rho));
       x += step;
       settled = step.lpNorm<Eigen::Infinity>() < solver.step_tolerance;
     }
@@ -174,8 +167,7 @@ bool UpdateLeftOut(const ResidualModel& model, const std::vector<FitCapture>& ca
     if (!EvaluateAt(model, captures, p_full, lin, x, solver.gravity_mps2, &rho, &jac)) return false;
     held_normal = others_normal(jac);
     if (held_normal.info() != Eigen::Success) return false;
-    const Eigen::VectorXd b = jac.transpose() * rho - jac.row(i).transpose() * rho(i);
-    const Eigen::VectorXd step = -held_normal.solve(b);
+    const Eigen::VectorXd step = -held_normal.solve(others_gradient(jac, rho));
     if (IsPolishConverged(model, captures, p_full, lin, i, jac, rho, step, solver, &x)) {
       out->p = lin.Parameters(p_full, x);
       // g^T C_(-i) g = sigma_i^2 J_i (J_(-i)^T J_(-i))^-1 J_i^T, weighted rows at the fit.

@@ -179,11 +179,8 @@ PolishResult Polish(const Problem& pr, Eigen::VectorXd p, const LeastSquaresOpti
     const double step_size = step.lpNorm<Eigen::Infinity>();
     const double new_cost = decreased ? rho_new.squaredNorm() : cost;
     if (decreased) p = candidate;
-    // Converged: the full step is negligible, or the cost no longer falls beyond round-off while
-    // the Gauss-Newton model predicts no more than a round-off decrease either.
     const double predicted = (jac * step).squaredNorm();
-    const bool stalled = cost - new_cost <= 1e-12 * (1.0 + cost);
-    if (step_size < options.step_tolerance || (stalled && predicted <= 1e-9 * (1.0 + cost))) {
+    if (IsGaussNewtonConverged(step_size, cost, new_cost, predicted, options)) {
       out.converged = true;
       ++out.iterations;
       break;
@@ -274,6 +271,12 @@ void FillStatistics(const Problem& pr, const Eigen::VectorXd& p, const LeastSqua
 }
 
 }  // namespace
+
+bool IsGaussNewtonConverged(double step_size, double cost, double new_cost, double predicted,
+                            const LeastSquaresOptions& options) {
+  const bool stalled = cost - new_cost <= 1e-12 * (1.0 + cost);
+  return step_size < options.step_tolerance || (stalled && predicted <= 1e-9 * (1.0 + cost));
+}
 
 std::string LeastSquaresOptions::Validate() const {
   if (!(gravity_mps2 > 0.0) || !std::isfinite(gravity_mps2)) return "gravity_mps2 must be positive";

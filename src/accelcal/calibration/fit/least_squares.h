@@ -66,6 +66,15 @@ FitSummary SolveWeightedLeastSquares(const ResidualModel& model,
                                      const Eigen::VectorXd& initial,
                                      const LeastSquaresOptions& options);
 
+// The polish's convergence test of one Gauss-Newton step: converged when the step (infinity
+// norm, in the scaled variables) is below options.step_tolerance, or when the cost (the sum of
+// squared weighted residuals) no longer falls beyond round-off, cost -> new_cost (the cost after
+// the step when it fell, else the cost itself), while the Gauss-Newton model predicts no more
+// than a round-off decrease, `predicted` = |J step|^2. Shared with the leave-one-out update
+// (diagnosis/leave_one_out.h), which must stop where a refit would.
+bool IsGaussNewtonConverged(double step_size, double cost, double new_cost, double predicted,
+                            const LeastSquaresOptions& options);
+
 // sigma_i (m/s^2) of every capture's residual at p.
 Eigen::VectorXd ResidualSigmas(const ResidualModel& model, const std::vector<FitCapture>& captures,
                                const Eigen::VectorXd& p, double gravity_mps2);
