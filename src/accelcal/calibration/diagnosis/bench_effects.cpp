@@ -32,7 +32,7 @@ double SmallestRadius(const std::vector<FitCapture>& captures) {
 }
 
 // --- radius_offset ---------------------------------------------------------------------------
-class RadiusOffset final : public Effect {
+class RadiusOffset final : public DifferentiableEffect<RadiusOffset> {
  public:
   std::string_view Name() const override { return "radius_offset"; }
   std::string_view Story() const override {
@@ -57,8 +57,9 @@ class RadiusOffset final : public Effect {
       return "the smallest radius would be negative";
     return {};
   }
-  void Correct(const double* dr, const SensorModel&, const FitCapture& c, const EffectContext&,
-               CorrectedCapture* out) const override {
+  template <class S, class Base>
+  void Apply(const S* dr, const Base&, const FitCapture& c, const EffectContext&,
+             CorrectedCaptureOf<S>* out) const {
     if (c.kind == CaptureKind::kTurntable) out->radius_m += dr[0];
   }
   std::string_view RegressorName() const override { return "w^2 r"; }
@@ -68,7 +69,7 @@ class RadiusOffset final : public Effect {
 };
 
 // --- rpm_scale -------------------------------------------------------------------------------
-class RpmScale final : public Effect {
+class RpmScale final : public DifferentiableEffect<RpmScale> {
  public:
   std::string_view Name() const override { return "rpm_scale"; }
   std::string_view Story() const override {
@@ -90,8 +91,9 @@ class RpmScale final : public Effect {
                          100.0 * s[0], 100.0 * kMaxRpmScale);
     return {};
   }
-  void Correct(const double* s, const SensorModel&, const FitCapture& c, const EffectContext&,
-               CorrectedCapture* out) const override {
+  template <class S, class Base>
+  void Apply(const S* s, const Base&, const FitCapture& c, const EffectContext&,
+             CorrectedCaptureOf<S>* out) const {
     if (c.kind == CaptureKind::kTurntable) out->omega_rad_per_s *= 1.0 + s[0];
   }
   std::string_view RegressorName() const override { return "w^2 r"; }
@@ -104,7 +106,7 @@ class RpmScale final : public Effect {
 // Each axis's proof mass sits d_j along its own axis from the nominal sensing point; an axis in
 // the table's plane then feels the centripetal acceleration of its own radius: -w^2 d_j extra
 // along itself (radial or tangential alike); the vertical axis feels none.
-class SizeEffect final : public Effect {
+class SizeEffect final : public DifferentiableEffect<SizeEffect> {
  public:
   std::string_view Name() const override { return "size_effect"; }
   std::string_view Story() const override {
@@ -142,11 +144,12 @@ class SizeEffect final : public Effect {
                            "beyond {:.0f} mm", kAxes[j], 1000.0 * d[j], 1000.0 * kMaxSizeEffectM);
     return {};
   }
-  void Correct(const double* d, const SensorModel& base, const FitCapture& c, const EffectContext&,
-               CorrectedCapture* out) const override {
+  template <class S, class Base>
+  void Apply(const S* d, const Base& base, const FitCapture& c, const EffectContext&,
+             CorrectedCaptureOf<S>* out) const {
     if (c.kind != CaptureKind::kTurntable || !c.up_axis) return;
     const Eigen::Vector3d up = SensorAxisVector(*c.up_axis);
-    const double w2 = out->omega_rad_per_s * out->omega_rad_per_s;
+    const S w2 = out->omega_rad_per_s * out->omega_rad_per_s;
     for (int j = 0; j < 3; ++j) {
       const double in_plane = 1.0 - up(j) * up(j);
       out->raw_counts(j) += base.scale_counts_per_mps2(j) * w2 * d[j] * in_plane;
@@ -164,7 +167,7 @@ class SizeEffect final : public Effect {
 // it averages out of a capture's mean over whole revolutions. The mean then shows
 // |f| = sqrt((g cos theta)^2 + (w^2 r)^2). The parameter is 1 - cos(theta) (a tilt is felt in
 // its square, so theta itself would be a poor parameter near zero), never negative.
-class TurntableTilt final : public Effect {
+class TurntableTilt final : public DifferentiableEffect<TurntableTilt> {
  public:
   std::string_view Name() const override { return "turntable_tilt"; }
   std::string_view Story() const override {
@@ -199,8 +202,9 @@ class TurntableTilt final : public Effect {
     return fmt::format("a spin axis tilted {:.2f} deg from the vertical",
                        std::acos(std::max(-1.0, 1.0 - loss[0])) * kRadToDeg);
   }
-  void Correct(const double* loss, const SensorModel&, const FitCapture& c, const EffectContext&,
-               CorrectedCapture* out) const override {
+  template <class S, class Base>
+  void Apply(const S* loss, const Base&, const FitCapture& c, const EffectContext&,
+             CorrectedCaptureOf<S>* out) const {
     if (c.kind == CaptureKind::kTurntable) out->gravity_along_axis *= 1.0 - loss[0];
   }
   std::string_view RegressorName() const override { return "w^2 r"; }

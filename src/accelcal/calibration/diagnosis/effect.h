@@ -18,6 +18,7 @@
 
 #include <Eigen/Core>
 
+#include "accelcal/calibration/diagnosis/effect_jet.h"
 #include "accelcal/calibration/fit/fit_capture.h"
 #include "accelcal/base/sensor_model.h"
 
@@ -27,16 +28,6 @@ struct EffectContext {
   double gravity_mps2 = 9.80665;
   double temp_ref_c = 0.0;  // mean temperature of the captures used, degC
   double t_ref_s = 0.0;     // mean time of the captures used, s
-};
-
-// What a capture becomes once an effect is accounted for.
-struct CorrectedCapture {
-  Eigen::Vector3d raw_counts;  // the mean reading as the base model should see it
-  double radius_m;             // turntable: the radius the reference should use
-  double omega_rad_per_s;      // turntable: the speed the reference should use
-  // Turntable: the fraction of gravity along the spin axis the reference should use,
-  // |f| = sqrt((g along)^2 + (w^2 r)^2); 1 for a level table.
-  double gravity_along_axis = 1.0;
 };
 
 class Effect {
@@ -65,6 +56,14 @@ class Effect {
   // Applies the effect with parameters `theta` (NumParameters() values) to capture `c`.
   virtual void Correct(const double* theta, const SensorModel& base, const FitCapture& c,
                        const EffectContext& ctx, CorrectedCapture* out) const = 0;
+  // The same correction carrying derivatives (effect_jet.h): `theta`, `base` and `out` hold
+  // jets over the fit's parameters. False when the effect has no such form (the default): the
+  // fit then differentiates the whole residual by central differences.
+  virtual bool CorrectJet(const EffectJet* /*theta*/, const JetBiasAndScale& /*base*/,
+                          const FitCapture& /*c*/, const EffectContext& /*ctx*/,
+                          CorrectedCaptureOf<EffectJet>* /*out*/) const {
+    return false;
+  }
   // The physical variable the effect grows with, for the evidence in words ("temperature",
   // "w^2 r", ...), and its value for a capture (NaN where it does not apply). Empty name: none
   // (the quadratic depends on each axis's input, not on one variable).
@@ -80,6 +79,25 @@ class Effect {
   // True for properties of the sensor itself, which `accelcal apply` corrects in every reading;
   // false for errors of the bench during calibration (radius, speed), which it does not.
   virtual bool CorrectsReadings() const = 0;
+};
+
+// An effect whose correction is written once, as
+//   template <class S, class Base> void Apply(const S* theta, const Base& base,
+//       const FitCapture& c, const EffectContext& ctx, CorrectedCaptureOf<S>* out) const;
+// (S double with Base SensorModel, or S EffectJet with Base JetBiasAndScale; base gives
+// bias_counts(j) and scale_counts_per_mps2(j)); this gives Effect both corrections from it.
+template <class Derived>
+class DifferentiableEffect : public Effect {
+ public:
+  void Correct(const double* theta, const SensorModel& base, const FitCapture& c,
+               const EffectContext& ctx, CorrectedCapture* out) const final {
+    static_cast<const Derived*>(this)->Apply(theta, base, c, ctx, out);
+  }
+  bool CorrectJet(const EffectJet* theta, const JetBiasAndScale& base, const FitCapture& c,
+                  const EffectContext& ctx, CorrectedCaptureOf<EffectJet>* out) const final {
+    static_cast<const Derived*>(this)->Apply(theta, base, c, ctx, out);
+    return true;
+  }
 };
 
 // True when `a` corrects before `b` (an earlier CorrectionStage).

@@ -56,25 +56,72 @@ double ExtendedResidualModel::Residual(const Eigen::VectorXd& p, const FitCaptur
                                        double gravity_mps2, Eigen::VectorXd* grad_p,
                                        Eigen::Vector3d* grad_raw) const {
   const double r = Value(p, c, gravity_mps2);
-  if (grad_p != nullptr) {
-    grad_p->resize(num_parameters_);
-    Eigen::VectorXd q = p;
-    for (int i = 0; i < num_parameters_; ++i) {
-      const double h = 1e-3 * ParameterScale(p, i);
-      q(i) = p(i) + h;
-      const double up = Value(q, c, gravity_mps2);
-      q(i) = p(i) - h;
-      const double down = Value(q, c, gravity_mps2);
-      q(i) = p(i);
-      (*grad_p)(i) = (up - down) / (2.0 * h);
-    }
-  }
+  if (grad_p != nullptr && !JetGradient(p, c, gravity_mps2, grad_p))
+    NumericGradient(p, c, gravity_mps2, grad_p);
   if (grad_raw != nullptr) {
     // The effects change the reading by small fractions: the base model's sensitivity at the
     // corrected reading is the uncertainty propagation's gradient to well under 1 %.
     CalibratedMagnitude(p, Corrected(p, c).raw_counts, nullptr, grad_raw);
   }
   return r;
+}
+
+bool ExtendedResidualModel::JetGradient(const Eigen::VectorXd& p, const FitCapture& c,
+                                        double gravity_mps2, Eigen::VectorXd* grad_p) const {
+  const int n = num_parameters_;
+  if (n > kMaxJetParameters) return false;
+  using Derivatives = EffectJet::DerType;
+  const auto parameter = [&](int i) { return EffectJet(p(i), n, i); };
+  const auto constant = [&](double v) { return EffectJet(v, Derivatives::Zero(n)); };
+  JetBiasAndScale base;
+  for (int j = 0; j < 3; ++j) {
+    base.bias_counts(j) = parameter(kBiasX + j);
+    base.scale_counts_per_mps2(j) = parameter(kScaleX + j);
+  }
+  EffectJet theta[kMaxJetParameters];  // the effects' parameters, from index kNumBaseParameters
+  for (int i = kNumBaseParameters; i < n; ++i) theta[i - kNumBaseParameters] = parameter(i);
+  CorrectedCaptureOf<EffectJet> cc{
+      {constant(c.mean_counts(0)), constant(c.mean_counts(1)), constant(c.mean_counts(2))},
+      constant(c.radius_m),
+      constant(c.kind == CaptureKind::kTurntable ? RpmToRadPerS(c.rpm) : 0.0),
+      constant(1.0)};
+  for (int e : correction_order_)
+    if (!effects_[e]->CorrectJet(theta + (offsets_[e] - kNumBaseParameters), base, c, context_, &cc))
+      return false;
+
+  // r = |T K^-1 (raw' - b)| - |f'|: the base magnitude's own analytic gradient at the corrected
+  // reading, plus its sensitivity to the reading times the reading's derivatives, less the
+  // reference's derivatives.
+  const Eigen::Vector3d raw(cc.raw_counts(0).value(), cc.raw_counts(1).value(),
+                            cc.raw_counts(2).value());
+  Eigen::VectorXd grad_base(kNumBaseParameters);
+  Eigen::Vector3d grad_raw;
+  CalibratedMagnitude(p, raw, &grad_base, &grad_raw);
+  Eigen::VectorXd& grad = *grad_p;
+  grad = Eigen::VectorXd::Zero(n);
+  grad.head(kNumBaseParameters) = grad_base;
+  for (int j = 0; j < 3; ++j) grad += grad_raw(j) * cc.raw_counts(j).derivatives();
+  if (c.kind == CaptureKind::kTurntable) {
+    const EffectJet along = gravity_mps2 * cc.gravity_along_axis;
+    const EffectJet centripetal = cc.omega_rad_per_s * cc.omega_rad_per_s * cc.radius_m;
+    grad -= sqrt(along * along + centripetal * centripetal).derivatives();
+  }
+  return true;
+}
+
+void ExtendedResidualModel::NumericGradient(const Eigen::VectorXd& p, const FitCapture& c,
+                                            double gravity_mps2, Eigen::VectorXd* grad_p) const {
+  grad_p->resize(num_parameters_);
+  Eigen::VectorXd q = p;
+  for (int i = 0; i < num_parameters_; ++i) {
+    const double h = 1e-3 * ParameterScale(p, i);
+    q(i) = p(i) + h;
+    const double up = Value(q, c, gravity_mps2);
+    q(i) = p(i) - h;
+    const double down = Value(q, c, gravity_mps2);
+    q(i) = p(i);
+    (*grad_p)(i) = (up - down) / (2.0 * h);
+  }
 }
 
 EffectContext MakeEffectContext(const std::vector<FitCapture>& captures, double gravity_mps2) {

@@ -1,8 +1,9 @@
 // The seed's model plus effects (effect.h), as a ResidualModel for the least-squares solver.
 //
 // Parameters: the nine base ones (ParameterIndex order) followed by each effect's, in the order
-// the effects were given. The Jacobian is taken by central differences with steps of 1e-3 of
-// each parameter's scale: the effects are cheap, few, and smooth.
+// the effects were given. The Jacobian is exact, carried through the effects' corrections as
+// jets (effect_jet.h); an effect without that form makes it central differences, with steps of
+// 1e-3 of each parameter's scale.
 #pragma once
 
 #include <string>
@@ -35,6 +36,13 @@ class ExtendedResidualModel final : public ResidualModel {
 
  private:
   double Value(const Eigen::VectorXd& p, const FitCapture& c, double gravity_mps2) const;
+  // dr/dp through the effects' jets (effect_jet.h); false when an effect has none or the model
+  // has more than kMaxJetParameters parameters.
+  bool JetGradient(const Eigen::VectorXd& p, const FitCapture& c, double gravity_mps2,
+                   Eigen::VectorXd* grad_p) const;
+  // dr/dp by central differences, steps of 1e-3 of each parameter's scale.
+  void NumericGradient(const Eigen::VectorXd& p, const FitCapture& c, double gravity_mps2,
+                       Eigen::VectorXd* grad_p) const;
 
   std::vector<const Effect*> effects_;
   std::vector<int> offsets_;

@@ -24,7 +24,8 @@ std::string RivalShiftBeyondBound(const double* shift_counts, const SensorModel&
 }
 
 // A bias offset: three offsets in counts, applied to the captures `Applies` picks.
-class RivalBiasOffset : public Effect {
+template <class Derived>
+class RivalBiasOffset : public DifferentiableEffect<Derived> {
  public:
   int NumParameters() const override { return 3; }
   std::string ParameterName(int i) const override { return effects::PerAxis("shift", i); }
@@ -36,9 +37,11 @@ class RivalBiasOffset : public Effect {
                              const std::vector<FitCapture>&) const override {
     return RivalShiftBeyondBound(theta, base);
   }
-  void Correct(const double* theta, const SensorModel&, const FitCapture& c, const EffectContext&,
-               CorrectedCapture* out) const override {
-    if (Applies(c)) out->raw_counts -= Eigen::Vector3d(theta[0], theta[1], theta[2]);
+  template <class S, class Base>
+  void Apply(const S* theta, const Base&, const FitCapture& c, const EffectContext&,
+             CorrectedCaptureOf<S>* out) const {
+    if (Applies(c))
+      for (int j = 0; j < 3; ++j) out->raw_counts(j) -= theta[j];
   }
   int CorrectionStage() const override { return 0; }
   bool CorrectsReadings() const override { return false; }
@@ -49,7 +52,7 @@ class RivalBiasOffset : public Effect {
 
 // A bias that differs while the table turns (vibration rectification, a cable pulled by the
 // rotation, the sensor's own heating by the motor).
-class RivalTurntableShift final : public RivalBiasOffset {
+class RivalTurntableShift final : public RivalBiasOffset<RivalTurntableShift> {
  public:
   std::string_view Name() const override { return kTurntableShiftName; }
   std::string_view Story() const override { return "the bias shifts while the table turns"; }
@@ -67,7 +70,7 @@ class RivalTurntableShift final : public RivalBiasOffset {
 
 // raw_j = b_j + k_j u_j + d_j |u_j|: the scale for negative inputs is k_j - d_j, for positive
 // ones k_j + d_j (a scale-factor asymmetry).
-class RivalScaleAsymmetry final : public Effect {
+class RivalScaleAsymmetry final : public DifferentiableEffect<RivalScaleAsymmetry> {
  public:
   std::string_view Name() const override { return kScaleAsymmetryName; }
   std::string_view Story() const override {
@@ -92,14 +95,17 @@ class RivalScaleAsymmetry final : public Effect {
         return fmt::format("an asymmetry of {:.3g} counts/(m/s^2) on axis {}", d[j], "xyz"[j]);
     return {};
   }
-  void Correct(const double* d, const SensorModel& base, const FitCapture&, const EffectContext&,
-               CorrectedCapture* out) const override {
+  template <class S, class Base>
+  void Apply(const S* d, const Base& base, const FitCapture&, const EffectContext&,
+             CorrectedCaptureOf<S>* out) const {
     for (int j = 0; j < 3; ++j) {
-      const double k = base.scale_counts_per_mps2(j);
-      const double offset = out->raw_counts(j) - base.bias_counts(j);
+      const S k = base.scale_counts_per_mps2(j);
+      const S offset = out->raw_counts(j) - base.bias_counts(j);
       // k u + d |u| = offset: u has the sign of offset while |d| < k.
-      const double slope = offset >= 0.0 ? k + d[j] : k - d[j];
-      const double u = std::fabs(slope) > 0.1 * std::fabs(k) ? offset / slope : offset / k;
+      S slope = k - d[j];
+      if (offset >= 0.0) slope = k + d[j];
+      S u = offset / k;
+      if (std::fabs(ValueOf(slope)) > 0.1 * std::fabs(ValueOf(k))) u = offset / slope;
       out->raw_counts(j) = base.bias_counts(j) + k * u;
     }
   }

@@ -3,6 +3,7 @@
 // axis are in axis order x, y, z; u = a^a = K^-1 (raw - b) in m/s^2 (sensor_model.h).
 #include <algorithm>
 #include <cmath>
+#include <type_traits>
 
 #include <fmt/core.h>
 
@@ -49,7 +50,7 @@ std::string NeedsTemperature(const std::vector<FitCapture>& captures) {
 // --- quadratic_nonlinearity ----------------------------------------------------------------
 // raw_j = b_j + k_j u_j + q_j u_j^2 per axis: the seed assumed a linear response; the MMA7260Q
 // datasheet allows +-1 % of full scale.
-class QuadraticNonlinearity final : public Effect {
+class QuadraticNonlinearity final : public DifferentiableEffect<QuadraticNonlinearity> {
  public:
   std::string_view Name() const override { return "quadratic_nonlinearity"; }
   std::string_view Story() const override {
@@ -78,14 +79,17 @@ class QuadraticNonlinearity final : public Effect {
                              const std::vector<FitCapture>& captures) const override {
     return NonlinearityBeyondBound(q, 2, base, captures);
   }
-  void Correct(const double* q, const SensorModel& base, const FitCapture&, const EffectContext&,
-               CorrectedCapture* out) const override {
+  template <class S, class Base>
+  void Apply(const S* q, const Base& base, const FitCapture&, const EffectContext&,
+             CorrectedCaptureOf<S>* out) const {
+    using std::sqrt;
     for (int j = 0; j < 3; ++j) {
       // Solve k u + q u^2 = d for the root near d / k, in the form stable as q -> 0.
-      const double d = out->raw_counts(j) - base.bias_counts(j);
-      const double k = base.scale_counts_per_mps2(j);
-      const double disc = k * k + 4.0 * q[j] * d;
-      const double u = disc > 0.0 ? 2.0 * d / (k + std::sqrt(disc)) : d / k;
+      const S d = out->raw_counts(j) - base.bias_counts(j);
+      const S k = base.scale_counts_per_mps2(j);
+      const S disc = k * k + 4.0 * q[j] * d;
+      S u = d / k;
+      if (disc > 0.0) u = 2.0 * d / (k + sqrt(disc));
       out->raw_counts(j) = base.bias_counts(j) + k * u;
     }
   }
@@ -97,7 +101,7 @@ class QuadraticNonlinearity final : public Effect {
 // raw_j = b_j + k_j u_j + c3_j u_j^3: a response that bends symmetrically, compressing (c3 < 0)
 // or stretching toward both ends of the range alike; odd, so it does not move the zero-g level
 // and +-g alone cannot tell it from the scale.
-class CubicNonlinearity final : public Effect {
+class CubicNonlinearity final : public DifferentiableEffect<CubicNonlinearity> {
  public:
   std::string_view Name() const override { return "cubic_nonlinearity"; }
   std::string_view Story() const override {
@@ -126,28 +130,42 @@ class CubicNonlinearity final : public Effect {
                              const std::vector<FitCapture>& captures) const override {
     return NonlinearityBeyondBound(c3, 3, base, captures);
   }
-  void Correct(const double* c3, const SensorModel& base, const FitCapture&, const EffectContext&,
-               CorrectedCapture* out) const override {
+  template <class S, class Base>
+  void Apply(const S* c3, const Base& base, const FitCapture&, const EffectContext&,
+             CorrectedCaptureOf<S>* out) const {
     for (int j = 0; j < 3; ++j) {
-      // Solve k u + c3 u^3 = d by Newton from d / k: the term is a small fraction of k u, so
-      // four steps reach machine precision, and usually two: a step within round-off of u (two
-      // units in the last place) ends it, the rest would only move u within round-off (this
-      // correction runs in every residual of every fit of the diagnosis: issue 18).
-      const double d = out->raw_counts(j) - base.bias_counts(j);
-      const double k = base.scale_counts_per_mps2(j);
-      double u = d / k;
-      for (int it = 0; it < 4; ++it) {
-        const double slope = k + 3.0 * c3[j] * u * u;
-        if (!(std::fabs(slope) > 0.1 * std::fabs(k))) break;  // far outside the bound: stop
-        const double step = (k * u + c3[j] * u * u * u - d) / slope;
-        u -= step;
-        if (std::fabs(step) <= 4.5e-16 * std::fabs(u)) break;
+      const S d = out->raw_counts(j) - base.bias_counts(j);
+      const S k = base.scale_counts_per_mps2(j);
+      const double u = SolveCubic(ValueOf(k), ValueOf(c3[j]), ValueOf(d));
+      if constexpr (std::is_same_v<S, double>) {
+        out->raw_counts(j) = base.bias_counts(j) + k * u;
+      } else {
+        // The root's derivatives, by the implicit function theorem: one Newton step from the
+        // solved root carries them exactly (its value moves by round-off only).
+        const S step = (k * u + c3[j] * (u * u * u) - d) / (k + 3.0 * c3[j] * (u * u));
+        out->raw_counts(j) = base.bias_counts(j) + k * (u - step);
       }
-      out->raw_counts(j) = base.bias_counts(j) + k * u;
     }
   }
   int CorrectionStage() const override { return 2; }
   bool CorrectsReadings() const override { return true; }
+
+ private:
+  // The root of k u + c3 u^3 = d near d / k, by Newton from there: the term is a small
+  // fraction of k u, so four steps reach machine precision, and usually two: a step within
+  // round-off of u (two units in the last place) ends it, the rest would only move u within
+  // round-off (this correction runs in every residual of every fit of the diagnosis: issue 18).
+  static double SolveCubic(double k, double c3, double d) {
+    double u = d / k;
+    for (int it = 0; it < 4; ++it) {
+      const double slope = k + 3.0 * c3 * u * u;
+      if (!(std::fabs(slope) > 0.1 * std::fabs(k))) break;  // far outside the bound: stop
+      const double step = (k * u + c3 * u * u * u - d) / slope;
+      u -= step;
+      if (std::fabs(step) <= 4.5e-16 * std::fabs(u)) break;
+    }
+    return u;
+  }
 };
 
 // --- cross_axis_coupling -------------------------------------------------------------------
@@ -156,7 +174,7 @@ class CubicNonlinearity final : public Effect {
 // A magnitude fit sees only the sum: |a| changes by (u_x u_y u_z / |u|) (kappa_x + kappa_y +
 // kappa_z), so the one parameter is kappa = that sum, and the correction shares it equally
 // (kappa / 3 per axis): right for |a|, not resolved per axis.
-class CrossAxisCoupling final : public Effect {
+class CrossAxisCoupling final : public DifferentiableEffect<CrossAxisCoupling> {
  public:
   std::string_view Name() const override { return "cross_axis_coupling"; }
   std::string_view Story() const override {
@@ -209,13 +227,15 @@ class CrossAxisCoupling final : public Effect {
                          100.0 * kMaxNonlinearityFraction, bound_mps2);
     return {};
   }
-  void Correct(const double* kappa, const SensorModel& base, const FitCapture&, const EffectContext&,
-               CorrectedCapture* out) const override {
-    const Eigen::Vector3d u =
-        (out->raw_counts - base.bias_counts).cwiseQuotient(base.scale_counts_per_mps2);
-    const Eigen::Vector3d products(u.y() * u.z(), u.z() * u.x(), u.x() * u.y());
+  template <class S, class Base>
+  void Apply(const S* kappa, const Base& base, const FitCapture&, const EffectContext&,
+             CorrectedCaptureOf<S>* out) const {
+    S u[3];
     for (int j = 0; j < 3; ++j)
-      out->raw_counts(j) -= base.scale_counts_per_mps2(j) * kappa[0] / 3.0 * products(j);
+      u[j] = (out->raw_counts(j) - base.bias_counts(j)) / base.scale_counts_per_mps2(j);
+    const S products[3] = {u[1] * u[2], u[2] * u[0], u[0] * u[1]};
+    for (int j = 0; j < 3; ++j)
+      out->raw_counts(j) -= base.scale_counts_per_mps2(j) * kappa[0] / 3.0 * products[j];
   }
   int CorrectionStage() const override { return 2; }
   bool CorrectsReadings() const override { return true; }
@@ -227,7 +247,7 @@ constexpr double kMaxTempBiasMps2PerC = 0.05;
 // 0.1 %/degC, accelcal's (about ten times a typical sensitivity drift).
 constexpr double kMaxTempScalePerC = 1e-3;
 
-class TemperatureBias final : public Effect {
+class TemperatureBias final : public DifferentiableEffect<TemperatureBias> {
  public:
   std::string_view Name() const override { return "temperature_bias"; }
   std::string_view Story() const override {
@@ -255,8 +275,9 @@ class TemperatureBias final : public Effect {
     }
     return {};
   }
-  void Correct(const double* tc, const SensorModel&, const FitCapture& c, const EffectContext& ctx,
-               CorrectedCapture* out) const override {
+  template <class S, class Base>
+  void Apply(const S* tc, const Base&, const FitCapture& c, const EffectContext& ctx,
+             CorrectedCaptureOf<S>* out) const {
     const double dt_c = c.mean_temp_c - ctx.temp_ref_c;
     for (int j = 0; j < 3; ++j) out->raw_counts(j) -= tc[j] * dt_c;
   }
@@ -267,7 +288,7 @@ class TemperatureBias final : public Effect {
 };
 
 // --- temperature_scale -----------------------------------------------------------------------
-class TemperatureScale final : public Effect {
+class TemperatureScale final : public DifferentiableEffect<TemperatureScale> {
  public:
   std::string_view Name() const override { return "temperature_scale"; }
   std::string_view Story() const override {
@@ -291,8 +312,9 @@ class TemperatureScale final : public Effect {
                            "(0.1 %/degC)", kAxes[j], tc[j], kMaxTempScalePerC);
     return {};
   }
-  void Correct(const double* tc, const SensorModel& base, const FitCapture& c,
-               const EffectContext& ctx, CorrectedCapture* out) const override {
+  template <class S, class Base>
+  void Apply(const S* tc, const Base& base, const FitCapture& c, const EffectContext& ctx,
+             CorrectedCaptureOf<S>* out) const {
     // raw = b + k (1 + tc dT) u  =>  what the base model should see: b + (raw - b) / (1 + tc dT).
     const double dt_c = c.mean_temp_c - ctx.temp_ref_c;
     for (int j = 0; j < 3; ++j)
@@ -309,7 +331,7 @@ class TemperatureScale final : public Effect {
 // The bound: the zero-g level may drift by 1 % of a 6 g full scale over the session (accelcal's).
 constexpr double kMaxDriftFractionOfFullScale = 0.01;
 
-class BiasDrift final : public Effect {
+class BiasDrift final : public DifferentiableEffect<BiasDrift> {
  public:
   std::string_view Name() const override { return "bias_drift"; }
   std::string_view Story() const override {
@@ -344,8 +366,9 @@ class BiasDrift final : public Effect {
     }
     return {};
   }
-  void Correct(const double* drift, const SensorModel&, const FitCapture& c,
-               const EffectContext& ctx, CorrectedCapture* out) const override {
+  template <class S, class Base>
+  void Apply(const S* drift, const Base&, const FitCapture& c, const EffectContext& ctx,
+             CorrectedCaptureOf<S>* out) const {
     const double dt_s = c.mean_t_s - ctx.t_ref_s;
     for (int j = 0; j < 3; ++j) out->raw_counts(j) -= drift[j] * dt_s;
   }

@@ -1,0 +1,48 @@
+// The effects' corrections with derivatives (forward-mode automatic differentiation, Eigen's
+// AutoDiffScalar): the extended fit's Jacobian in one pass per capture instead of two
+// evaluations per parameter by central differences (issue 18: those were 70 % of a fit with
+// the diagnosis).
+//
+// An effect writes its correction once, as a template over the scalar (`double` for values,
+// `EffectJet` for values with their derivatives), and derives from DifferentiableEffect, which
+// turns that template into both of Effect's corrections.
+#pragma once
+
+#include <type_traits>
+
+#include <Eigen/Core>
+#include <unsupported/Eigen/AutoDiff>
+
+namespace accelcal {
+
+// The most parameters differentiated with jets: the nine base ones and up to 23 of the effects
+// (a model with more falls back to central differences).
+inline constexpr int kMaxJetParameters = 32;
+
+// A value and its derivatives with respect to the fit's parameters (in the model's order).
+using EffectJet =
+    Eigen::AutoDiffScalar<Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxJetParameters, 1>>;
+
+inline double ValueOf(double x) { return x; }
+inline double ValueOf(const EffectJet& x) { return x.value(); }
+
+// What a capture becomes once an effect is accounted for (S: double, or EffectJet).
+template <class S>
+struct CorrectedCaptureOf {
+  Eigen::Matrix<S, 3, 1> raw_counts;  // the mean reading as the base model should see it
+  S radius_m;                         // turntable: the radius the reference should use
+  S omega_rad_per_s;                  // turntable: the speed the reference should use
+  // Turntable: the fraction of gravity along the spin axis the reference should use,
+  // |f| = sqrt((g along)^2 + (w^2 r)^2); 1 for a level table.
+  S gravity_along_axis = S(1.0);
+};
+using CorrectedCapture = CorrectedCaptureOf<double>;
+
+// The part of the base model the corrections use, with derivatives: b and K (SensorModel's
+// members of the same names serve the double case).
+struct JetBiasAndScale {
+  Eigen::Matrix<EffectJet, 3, 1> bias_counts;
+  Eigen::Matrix<EffectJet, 3, 1> scale_counts_per_mps2;
+};
+
+}  // namespace accelcal
