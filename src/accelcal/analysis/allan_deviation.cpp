@@ -8,6 +8,7 @@
 
 #include <Eigen/Core>
 
+#include "accelcal/analysis/second_difference_sum.h"
 #include "accelcal/base/error.h"
 
 namespace accelcal {
@@ -278,13 +279,14 @@ struct AllanAccumulator::Impl {
         if (end <= f.next_j) continue;
         const int64_t b0 = f.next_j - l.first;
         const Eigen::Index n = end - f.next_j;
-        Eigen::Map<const Eigen::ArrayXd> x0(l.x.data() + b0, n);
-        Eigen::Map<const Eigen::ArrayXd> x1(l.x.data() + b0 + gm, n);
-        Eigen::Map<const Eigen::ArrayXd> x2(l.x.data() + b0 + 2 * gm, n);
         if (l.c[b0 + n - 1 + 2 * gm] == l.c[b0]) {  // no missing reading under these terms
-          f.sum_sq += (x2 - 2.0 * x1 + x0).square().sum();
+          f.sum_sq += detail::SumSquaredSecondDifferences(
+              l.x.data() + b0, l.x.data() + b0 + gm, l.x.data() + b0 + 2 * gm, static_cast<size_t>(n));
           f.terms += n;
         } else {
+          Eigen::Map<const Eigen::ArrayXd> x0(l.x.data() + b0, n);
+          Eigen::Map<const Eigen::ArrayXd> x1(l.x.data() + b0 + gm, n);
+          Eigen::Map<const Eigen::ArrayXd> x2(l.x.data() + b0 + 2 * gm, n);
           Eigen::Map<const Eigen::ArrayXd> c0(l.c.data() + b0, n);
           Eigen::Map<const Eigen::ArrayXd> c2(l.c.data() + b0 + 2 * gm, n);
           f.sum_sq += (c2 == c0).select((x2 - 2.0 * x1 + x0).square(), 0.0).sum();
