@@ -8,7 +8,7 @@
 
 #include <Eigen/Core>
 
-#include "accelcal/analysis/second_difference_sum.h"
+#include "accelcal/analysis/allan_kernels.h"
 #include "accelcal/base/error.h"
 
 namespace accelcal {
@@ -109,16 +109,14 @@ class AveragedSeriesStats {
   // Values s[1..k] and pairs (s[i], s[i+1]), i = 0 .. k-1, into `sums`.
   static void AddSeries(const Eigen::ArrayXd& s, Lag1Sums* sums) {
     const Eigen::Index k = s.size() - 1;
-    const auto head = s.head(k);
-    const auto tail = s.tail(k);
-    const double tail_sum = tail.sum();  // both s and sb: summed once
+    const detail::Lag1RunSums run = detail::SumLag1Run(s.data(), static_cast<size_t>(k));
     sums->n += static_cast<double>(k);
-    sums->s += tail_sum;
-    sums->ss += tail.square().sum();
+    sums->s += run.values;  // both s and sb: summed once
+    sums->ss += run.squares;
     sums->np += static_cast<double>(k);
-    sums->sa += head.sum();
-    sums->sb += tail_sum;
-    sums->sab += (head * tail).sum();
+    sums->sa += run.earlier;
+    sums->sb += run.values;
+    sums->sab += run.products;
   }
 
   Lag1Sums d0_, d1_, d2_;
