@@ -1,7 +1,8 @@
 // The extended model's gradient (extended_model.h), carried through the effects as jets, held to
 // derivatives the test takes itself from the residual's values: a five-point central difference
 // (error O(h^4)) for every parameter of every effect of the library and of the rivals, alone
-// and in pairs, on static and turntable captures with temperatures and times.
+// and in pairs, on static and turntable captures with temperatures and times; and the residual
+// the same, bit for bit, with derivatives asked for or not.
 #include <cmath>
 #include <memory>
 #include <string>
@@ -128,6 +129,15 @@ class ValueOnlyShift final : public Effect {
 TEST(ExtendedModelGradient, FallsBackToDifferencesForAnEffectWithoutJets) {
   const ValueOnlyShift shift;
   ExpectGradientMatchesValues({&shift, FindEffect("cubic_nonlinearity")});
+}
+
+// The whole library at once has more parameters than a jet has slots (effect_jet.h): central
+// differences then, still matching.
+TEST(ExtendedModelGradient, FallsBackToDifferencesForMoreParametersThanAJetHolds) {
+  int effect_parameters = 0;
+  for (const Effect* e : AllEffects()) effect_parameters += e->NumParameters();
+  ASSERT_GT(kJetBaseSlots + effect_parameters, kMaxJetParameters);
+  ExpectGradientMatchesValues(AllEffects());
 }
 
 }  // namespace

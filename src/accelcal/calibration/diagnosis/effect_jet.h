@@ -15,13 +15,17 @@
 
 namespace accelcal {
 
-// The most parameters differentiated with jets: the nine base ones and up to 23 of the effects
-// (a model with more falls back to central differences).
-inline constexpr int kMaxJetParameters = 32;
+// What the jets differentiate with respect to: the base model's bias and scale (b_x, b_y, b_z,
+// k_x, k_y, k_z, the first six of ParameterIndex), then the effects' parameters in the model's
+// order. The misalignment angles act only in the base magnitude, whose own gradient is analytic
+// (CalibratedMagnitude), so the jets do not carry them.
+inline constexpr int kJetBaseSlots = 6;
+// The slots of a jet, fixed (a model with more than 10 effect parameters falls back to central
+// differences): fixed-size derivatives cost no size checks or loops of unknown length.
+inline constexpr int kMaxJetParameters = 16;
 
-// A value and its derivatives with respect to the fit's parameters (in the model's order).
-using EffectJet =
-    Eigen::AutoDiffScalar<Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxJetParameters, 1>>;
+// A value and its derivatives with respect to those parameters (unused slots stay zero).
+using EffectJet = Eigen::AutoDiffScalar<Eigen::Matrix<double, kMaxJetParameters, 1>>;
 
 inline double ValueOf(double x) { return x; }
 inline double ValueOf(const EffectJet& x) { return x.value(); }

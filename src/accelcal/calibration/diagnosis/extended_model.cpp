@@ -55,9 +55,11 @@ double ExtendedResidualModel::Value(const Eigen::VectorXd& p, const FitCapture& 
 double ExtendedResidualModel::Residual(const Eigen::VectorXd& p, const FitCapture& c,
                                        double gravity_mps2, Eigen::VectorXd* grad_p,
                                        Eigen::Vector3d* grad_raw) const {
-  const double r = Value(p, c, gravity_mps2);
-  if (grad_p != nullptr && !JetGradient(p, c, gravity_mps2, grad_p))
-    NumericGradient(p, c, gravity_mps2, grad_p);
+  double r = 0.0;
+  if (grad_p == nullptr || !JetResidual(p, c, gravity_mps2, &r, grad_p)) {
+    r = Value(p, c, gravity_mps2);
+    if (grad_p != nullptr) NumericGradient(p, c, gravity_mps2, grad_p);
+  }
   if (grad_raw != nullptr) {
     // The effects change the reading by small fractions: the base model's sensitivity at the
     // corrected reading is the uncertainty propagation's gradient to well under 1 %.
@@ -66,20 +68,24 @@ double ExtendedResidualModel::Residual(const Eigen::VectorXd& p, const FitCaptur
   return r;
 }
 
-bool ExtendedResidualModel::JetGradient(const Eigen::VectorXd& p, const FitCapture& c,
-                                        double gravity_mps2, Eigen::VectorXd* grad_p) const {
+bool ExtendedResidualModel::JetResidual(const Eigen::VectorXd& p, const FitCapture& c,
+                                        double gravity_mps2, double* r,
+                                        Eigen::VectorXd* grad_p) const {
+  static_assert(kBiasX == 0 && kScaleX == 3 && kJetBaseSlots == 6, "b and K lead ParameterIndex");
   const int n = num_parameters_;
-  if (n > kMaxJetParameters) return false;
+  const int effect_parameters = n - kNumBaseParameters;
+  if (kJetBaseSlots + effect_parameters > kMaxJetParameters) return false;
   using Derivatives = EffectJet::DerType;
-  const auto parameter = [&](int i) { return EffectJet(p(i), n, i); };
-  const auto constant = [&](double v) { return EffectJet(v, Derivatives::Zero(n)); };
+  const auto parameter = [&](int i, int slot) { return EffectJet(p(i), Derivatives::Unit(slot)); };
+  const auto constant = [](double v) { return EffectJet(v, Derivatives::Zero()); };
   JetBiasAndScale base;
   for (int j = 0; j < 3; ++j) {
-    base.bias_counts(j) = parameter(kBiasX + j);
-    base.scale_counts_per_mps2(j) = parameter(kScaleX + j);
+    base.bias_counts(j) = parameter(kBiasX + j, kBiasX + j);
+    base.scale_counts_per_mps2(j) = parameter(kScaleX + j, kScaleX + j);
   }
-  EffectJet theta[kMaxJetParameters];  // the effects' parameters, from index kNumBaseParameters
-  for (int i = kNumBaseParameters; i < n; ++i) theta[i - kNumBaseParameters] = parameter(i);
+  EffectJet theta[kMaxJetParameters];  // the effects' parameters, in slots from kJetBaseSlots
+  for (int i = 0; i < effect_parameters; ++i)
+    theta[i] = parameter(kNumBaseParameters + i, kJetBaseSlots + i);
   CorrectedCaptureOf<EffectJet> cc{
       {constant(c.mean_counts(0)), constant(c.mean_counts(1)), constant(c.mean_counts(2))},
       constant(c.radius_m),
@@ -91,21 +97,30 @@ bool ExtendedResidualModel::JetGradient(const Eigen::VectorXd& p, const FitCaptu
 
   // r = |T K^-1 (raw' - b)| - |f'|: the base magnitude's own analytic gradient at the corrected
   // reading, plus its sensitivity to the reading times the reading's derivatives, less the
-  // reference's derivatives.
+  // reference's derivatives. The values are those of Corrected (the same operations on the
+  // same doubles), so r is Value's, the reference computed as Value does.
   const Eigen::Vector3d raw(cc.raw_counts(0).value(), cc.raw_counts(1).value(),
                             cc.raw_counts(2).value());
   Eigen::VectorXd grad_base(kNumBaseParameters);
   Eigen::Vector3d grad_raw;
-  CalibratedMagnitude(p, raw, &grad_base, &grad_raw);
-  Eigen::VectorXd& grad = *grad_p;
-  grad = Eigen::VectorXd::Zero(n);
-  grad.head(kNumBaseParameters) = grad_base;
-  for (int j = 0; j < 3; ++j) grad += grad_raw(j) * cc.raw_counts(j).derivatives();
+  *r = CalibratedMagnitude(p, raw, &grad_base, &grad_raw);
+  Derivatives slots = Derivatives::Zero();
+  slots.head(kJetBaseSlots) = grad_base.head(kJetBaseSlots);
+  for (int j = 0; j < 3; ++j) slots += grad_raw(j) * cc.raw_counts(j).derivatives();
   if (c.kind == CaptureKind::kTurntable) {
     const EffectJet along = gravity_mps2 * cc.gravity_along_axis;
     const EffectJet centripetal = cc.omega_rad_per_s * cc.omega_rad_per_s * cc.radius_m;
-    grad -= sqrt(along * along + centripetal * centripetal).derivatives();
+    *r -= std::hypot(along.value(), centripetal.value());
+    slots -= sqrt(along * along + centripetal * centripetal).derivatives();
+  } else {
+    *r -= gravity_mps2;
   }
+  Eigen::VectorXd& grad = *grad_p;
+  grad.resize(n);
+  grad.head(kJetBaseSlots) = slots.head(kJetBaseSlots);
+  grad.segment(kJetBaseSlots, kNumBaseParameters - kJetBaseSlots) =
+      grad_base.tail(kNumBaseParameters - kJetBaseSlots);
+  grad.tail(effect_parameters) = slots.segment(kJetBaseSlots, effect_parameters);
   return true;
 }
 

@@ -36,10 +36,10 @@ class ExtendedResidualModel final : public ResidualModel {
 
  private:
   double Value(const Eigen::VectorXd& p, const FitCapture& c, double gravity_mps2) const;
-  // dr/dp through the effects' jets (effect_jet.h); false when an effect has none or the model
-  // has more than kMaxJetParameters parameters.
-  bool JetGradient(const Eigen::VectorXd& p, const FitCapture& c, double gravity_mps2,
-                   Eigen::VectorXd* grad_p) const;
+  // r and dr/dp through the effects' jets (effect_jet.h); r is the same as Value's. False when
+  // an effect has no jets or the model has too many parameters for them.
+  bool JetResidual(const Eigen::VectorXd& p, const FitCapture& c, double gravity_mps2,
+                   double* r, Eigen::VectorXd* grad_p) const;
   // dr/dp by central differences, steps of 1e-3 of each parameter's scale.
   void NumericGradient(const Eigen::VectorXd& p, const FitCapture& c, double gravity_mps2,
                        Eigen::VectorXd* grad_p) const;

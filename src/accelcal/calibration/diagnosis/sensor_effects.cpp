@@ -141,9 +141,11 @@ class CubicNonlinearity final : public DifferentiableEffect<CubicNonlinearity> {
         out->raw_counts(j) = base.bias_counts(j) + k * u;
       } else {
         // The root's derivatives, by the implicit function theorem: one Newton step from the
-        // solved root carries them exactly (its value moves by round-off only).
+        // solved root carries them exactly. Its value moves by round-off only, and is set back
+        // to the double correction's, so that a residual is the same with derivatives or not.
         const S step = (k * u + c3[j] * (u * u * u) - d) / (k + 3.0 * c3[j] * (u * u));
         out->raw_counts(j) = base.bias_counts(j) + k * (u - step);
+        out->raw_counts(j).value() = ValueOf(base.bias_counts(j)) + ValueOf(k) * u;
       }
     }
   }
