@@ -57,7 +57,7 @@ class Effect {
   virtual void Correct(const double* theta, const SensorModel& base, const FitCapture& c,
                        const EffectContext& ctx, CorrectedCapture* out) const = 0;
   // The same correction carrying derivatives (effect_jet.h): `theta`, `base` and `out` hold
-  // jets over the fit's parameters. False when the effect has no such form (the default): the
+  // jets over b, K and the effects' parameters. False when the effect has no such form (the default): the
   // fit then differentiates the whole residual by central differences.
   virtual bool CorrectJet(const EffectJet* /*theta*/, const JetBiasAndScale& /*base*/,
                           const FitCapture& /*c*/, const EffectContext& /*ctx*/,

@@ -8,8 +8,6 @@
 // turns that template into both of Effect's corrections.
 #pragma once
 
-#include <type_traits>
-
 #include <Eigen/Core>
 #include <unsupported/Eigen/AutoDiff>
 

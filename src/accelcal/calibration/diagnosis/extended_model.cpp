@@ -4,6 +4,35 @@
 #include <cmath>
 
 namespace accelcal {
+namespace {
+
+// The capture as read, before any correction, each value made a double or a jet by `lift`.
+template <class S, class Lift>
+CorrectedCaptureOf<S> Uncorrected(const FitCapture& c, Lift lift) {
+  return {{lift(c.mean_counts(0)), lift(c.mean_counts(1)), lift(c.mean_counts(2))},
+          lift(c.radius_m),
+          lift(c.kind == CaptureKind::kTurntable ? RpmToRadPerS(c.rpm) : 0.0),
+          lift(1.0)};
+}
+
+double Hypot(double a, double b) { return std::hypot(a, b); }
+// The jet's value exactly the double's; its derivatives those of sqrt(a^2 + b^2).
+EffectJet Hypot(const EffectJet& a, const EffectJet& b) {
+  EffectJet h = sqrt(a * a + b * b);
+  h.value() = std::hypot(a.value(), b.value());
+  return h;
+}
+
+// |f'|, the reference the corrected capture should show: g, or on a turntable
+// sqrt((g along the spin axis)^2 + (w^2 r)^2).
+template <class S>
+S Reference(const FitCapture& c, const CorrectedCaptureOf<S>& cc, double gravity_mps2) {
+  if (c.kind != CaptureKind::kTurntable) return S(gravity_mps2);
+  return Hypot(gravity_mps2 * cc.gravity_along_axis,
+               cc.omega_rad_per_s * cc.omega_rad_per_s * cc.radius_m);
+}
+
+}  // namespace
 
 ExtendedResidualModel::ExtendedResidualModel(std::vector<const Effect*> effects,
                                              EffectContext context)
@@ -35,8 +64,7 @@ double ExtendedResidualModel::ParameterScale(const Eigen::VectorXd& p, int i) co
 CorrectedCapture ExtendedResidualModel::Corrected(const Eigen::VectorXd& p,
                                                   const FitCapture& c) const {
   const SensorModel base = SensorModel::FromVector(p.head(kNumBaseParameters));
-  CorrectedCapture out{c.mean_counts, c.radius_m,
-                       c.kind == CaptureKind::kTurntable ? RpmToRadPerS(c.rpm) : 0.0};
+  CorrectedCapture out = Uncorrected<double>(c, [](double v) { return v; });
   for (int e : correction_order_) effects_[e]->Correct(p.data() + offsets_[e], base, c, context_, &out);
   return out;
 }
@@ -44,12 +72,7 @@ CorrectedCapture ExtendedResidualModel::Corrected(const Eigen::VectorXd& p,
 double ExtendedResidualModel::Value(const Eigen::VectorXd& p, const FitCapture& c,
                                     double gravity_mps2) const {
   const CorrectedCapture cc = Corrected(p, c);
-  const double reference =
-      c.kind == CaptureKind::kTurntable
-          ? std::hypot(gravity_mps2 * cc.gravity_along_axis,
-                       cc.omega_rad_per_s * cc.omega_rad_per_s * cc.radius_m)
-          : gravity_mps2;
-  return CalibratedMagnitude(p, cc.raw_counts, nullptr, nullptr) - reference;
+  return CalibratedMagnitude(p, cc.raw_counts, nullptr, nullptr) - Reference(c, cc, gravity_mps2);
 }
 
 double ExtendedResidualModel::Residual(const Eigen::VectorXd& p, const FitCapture& c,
@@ -68,16 +91,13 @@ double ExtendedResidualModel::Residual(const Eigen::VectorXd& p, const FitCaptur
   return r;
 }
 
-bool ExtendedResidualModel::JetResidual(const Eigen::VectorXd& p, const FitCapture& c,
-                                        double gravity_mps2, double* r,
-                                        Eigen::VectorXd* grad_p) const {
+bool ExtendedResidualModel::JetCorrected(const Eigen::VectorXd& p, const FitCapture& c,
+                                         CorrectedCaptureOf<EffectJet>* cc) const {
   static_assert(kBiasX == 0 && kScaleX == 3 && kJetBaseSlots == 6, "b and K lead ParameterIndex");
-  const int n = num_parameters_;
-  const int effect_parameters = n - kNumBaseParameters;
+  const int effect_parameters = num_parameters_ - kNumBaseParameters;
   if (kJetBaseSlots + effect_parameters > kMaxJetParameters) return false;
   using Derivatives = EffectJet::DerType;
   const auto parameter = [&](int i, int slot) { return EffectJet(p(i), Derivatives::Unit(slot)); };
-  const auto constant = [](double v) { return EffectJet(v, Derivatives::Zero()); };
   JetBiasAndScale base;
   for (int j = 0; j < 3; ++j) {
     base.bias_counts(j) = parameter(kBiasX + j, kBiasX + j);
@@ -86,37 +106,35 @@ bool ExtendedResidualModel::JetResidual(const Eigen::VectorXd& p, const FitCaptu
   EffectJet theta[kMaxJetParameters];  // the effects' parameters, in slots from kJetBaseSlots
   for (int i = 0; i < effect_parameters; ++i)
     theta[i] = parameter(kNumBaseParameters + i, kJetBaseSlots + i);
-  CorrectedCaptureOf<EffectJet> cc{
-      {constant(c.mean_counts(0)), constant(c.mean_counts(1)), constant(c.mean_counts(2))},
-      constant(c.radius_m),
-      constant(c.kind == CaptureKind::kTurntable ? RpmToRadPerS(c.rpm) : 0.0),
-      constant(1.0)};
+  *cc = Uncorrected<EffectJet>(c, [](double v) { return EffectJet(v, Derivatives::Zero()); });
   for (int e : correction_order_)
-    if (!effects_[e]->CorrectJet(theta + (offsets_[e] - kNumBaseParameters), base, c, context_, &cc))
+    if (!effects_[e]->CorrectJet(theta + (offsets_[e] - kNumBaseParameters), base, c, context_, cc))
       return false;
+  return true;
+}
 
+bool ExtendedResidualModel::JetResidual(const Eigen::VectorXd& p, const FitCapture& c,
+                                        double gravity_mps2, double* r,
+                                        Eigen::VectorXd* grad_p) const {
+  CorrectedCaptureOf<EffectJet> cc;
+  if (!JetCorrected(p, c, &cc)) return false;
   // r = |T K^-1 (raw' - b)| - |f'|: the base magnitude's own analytic gradient at the corrected
   // reading, plus its sensitivity to the reading times the reading's derivatives, less the
-  // reference's derivatives. The values are those of Corrected (the same operations on the
-  // same doubles), so r is Value's, the reference computed as Value does.
+  // reference's derivatives. The values are those of Corrected and Value (the same operations
+  // on the same doubles), so r is Value's.
   const Eigen::Vector3d raw(cc.raw_counts(0).value(), cc.raw_counts(1).value(),
                             cc.raw_counts(2).value());
   Eigen::VectorXd grad_base(kNumBaseParameters);
   Eigen::Vector3d grad_raw;
-  *r = CalibratedMagnitude(p, raw, &grad_base, &grad_raw);
-  Derivatives slots = Derivatives::Zero();
+  const EffectJet reference = Reference(c, cc, gravity_mps2);
+  *r = CalibratedMagnitude(p, raw, &grad_base, &grad_raw) - reference.value();
+  EffectJet::DerType slots = EffectJet::DerType::Zero();
   slots.head(kJetBaseSlots) = grad_base.head(kJetBaseSlots);
   for (int j = 0; j < 3; ++j) slots += grad_raw(j) * cc.raw_counts(j).derivatives();
-  if (c.kind == CaptureKind::kTurntable) {
-    const EffectJet along = gravity_mps2 * cc.gravity_along_axis;
-    const EffectJet centripetal = cc.omega_rad_per_s * cc.omega_rad_per_s * cc.radius_m;
-    *r -= std::hypot(along.value(), centripetal.value());
-    slots -= sqrt(along * along + centripetal * centripetal).derivatives();
-  } else {
-    *r -= gravity_mps2;
-  }
+  slots -= reference.derivatives();
+  const int effect_parameters = num_parameters_ - kNumBaseParameters;
   Eigen::VectorXd& grad = *grad_p;
-  grad.resize(n);
+  grad.resize(num_parameters_);
   grad.head(kJetBaseSlots) = slots.head(kJetBaseSlots);
   grad.segment(kJetBaseSlots, kNumBaseParameters - kJetBaseSlots) =
       grad_base.tail(kNumBaseParameters - kJetBaseSlots);

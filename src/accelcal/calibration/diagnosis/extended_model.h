@@ -36,8 +36,11 @@ class ExtendedResidualModel final : public ResidualModel {
 
  private:
   double Value(const Eigen::VectorXd& p, const FitCapture& c, double gravity_mps2) const;
-  // r and dr/dp through the effects' jets (effect_jet.h); r is the same as Value's. False when
-  // an effect has no jets or the model has too many parameters for them.
+  // The capture corrected with derivatives (effect_jet.h); false when an effect has no jets or
+  // the model has too many parameters for them.
+  bool JetCorrected(const Eigen::VectorXd& p, const FitCapture& c,
+                    CorrectedCaptureOf<EffectJet>* cc) const;
+  // r and dr/dp through the effects' jets; r is the same as Value's. False as JetCorrected.
   bool JetResidual(const Eigen::VectorXd& p, const FitCapture& c, double gravity_mps2,
                    double* r, Eigen::VectorXd* grad_p) const;
   // dr/dp by central differences, steps of 1e-3 of each parameter's scale.
