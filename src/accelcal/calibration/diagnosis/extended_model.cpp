@@ -23,11 +23,10 @@ EffectJet Hypot(const EffectJet& a, const EffectJet& b) {
   return h;
 }
 
-// |f'|, the reference the corrected capture should show: g, or on a turntable
-// sqrt((g along the spin axis)^2 + (w^2 r)^2).
+// |f'| of a corrected turntable capture, sqrt((g along the spin axis)^2 + (w^2 r)^2) (a static
+// capture's is g).
 template <class S>
-S Reference(const FitCapture& c, const CorrectedCaptureOf<S>& cc, double gravity_mps2) {
-  if (c.kind != CaptureKind::kTurntable) return S(gravity_mps2);
+S TurntableReference(const CorrectedCaptureOf<S>& cc, double gravity_mps2) {
   return Hypot(gravity_mps2 * cc.gravity_along_axis,
                cc.omega_rad_per_s * cc.omega_rad_per_s * cc.radius_m);
 }
@@ -72,7 +71,9 @@ CorrectedCapture ExtendedResidualModel::Corrected(const Eigen::VectorXd& p,
 double ExtendedResidualModel::Value(const Eigen::VectorXd& p, const FitCapture& c,
                                     double gravity_mps2) const {
   const CorrectedCapture cc = Corrected(p, c);
-  return CalibratedMagnitude(p, cc.raw_counts, nullptr, nullptr) - Reference(c, cc, gravity_mps2);
+  const double reference =
+      c.kind == CaptureKind::kTurntable ? TurntableReference(cc, gravity_mps2) : gravity_mps2;
+  return CalibratedMagnitude(p, cc.raw_counts, nullptr, nullptr) - reference;
 }
 
 double ExtendedResidualModel::Residual(const Eigen::VectorXd& p, const FitCapture& c,
@@ -106,7 +107,6 @@ bool ExtendedResidualModel::JetCorrected(const Eigen::VectorXd& p, const FitCapt
   EffectJet theta[kMaxJetParameters];  // the effects' parameters, in slots from kJetBaseSlots
   for (int i = 0; i < effect_parameters; ++i)
     theta[i] = parameter(kNumBaseParameters + i, kJetBaseSlots + i);
-  *cc = Uncorrected<EffectJet>(c, [](double v) { return EffectJet(v, Derivatives::Zero()); });
   for (int e : correction_order_)
     if (!effects_[e]->CorrectJet(theta + (offsets_[e] - kNumBaseParameters), base, c, context_, cc))
       return false;
@@ -116,7 +116,8 @@ bool ExtendedResidualModel::JetCorrected(const Eigen::VectorXd& p, const FitCapt
 bool ExtendedResidualModel::JetResidual(const Eigen::VectorXd& p, const FitCapture& c,
                                         double gravity_mps2, double* r,
                                         Eigen::VectorXd* grad_p) const {
-  CorrectedCaptureOf<EffectJet> cc;
+  CorrectedCaptureOf<EffectJet> cc =
+      Uncorrected<EffectJet>(c, [](double v) { return EffectJet(v, EffectJet::DerType::Zero()); });
   if (!JetCorrected(p, c, &cc)) return false;
   // r = |T K^-1 (raw' - b)| - |f'|: the base magnitude's own analytic gradient at the corrected
   // reading, plus its sensitivity to the reading times the reading's derivatives, less the
@@ -126,12 +127,17 @@ bool ExtendedResidualModel::JetResidual(const Eigen::VectorXd& p, const FitCaptu
                             cc.raw_counts(2).value());
   Eigen::VectorXd grad_base(kNumBaseParameters);
   Eigen::Vector3d grad_raw;
-  const EffectJet reference = Reference(c, cc, gravity_mps2);
-  *r = CalibratedMagnitude(p, raw, &grad_base, &grad_raw) - reference.value();
+  *r = CalibratedMagnitude(p, raw, &grad_base, &grad_raw);
   EffectJet::DerType slots = EffectJet::DerType::Zero();
   slots.head(kJetBaseSlots) = grad_base.head(kJetBaseSlots);
   for (int j = 0; j < 3; ++j) slots += grad_raw(j) * cc.raw_counts(j).derivatives();
-  slots -= reference.derivatives();
+  if (c.kind == CaptureKind::kTurntable) {
+    const EffectJet reference = TurntableReference(cc, gravity_mps2);
+    *r -= reference.value();
+    slots -= reference.derivatives();
+  } else {
+    *r -= gravity_mps2;
+  }
   const int effect_parameters = num_parameters_ - kNumBaseParameters;
   Eigen::VectorXd& grad = *grad_p;
   grad.resize(num_parameters_);

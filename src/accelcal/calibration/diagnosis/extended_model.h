@@ -36,8 +36,8 @@ class ExtendedResidualModel final : public ResidualModel {
 
  private:
   double Value(const Eigen::VectorXd& p, const FitCapture& c, double gravity_mps2) const;
-  // The capture corrected with derivatives (effect_jet.h); false when an effect has no jets or
-  // the model has too many parameters for them.
+  // Corrects *cc (the capture as read, as jets) with derivatives (effect_jet.h); false when an
+  // effect has no jets or the model has too many parameters for them.
   bool JetCorrected(const Eigen::VectorXd& p, const FitCapture& c,
                     CorrectedCaptureOf<EffectJet>* cc) const;
   // r and dr/dp through the effects' jets; r is the same as Value's. False as JetCorrected.
