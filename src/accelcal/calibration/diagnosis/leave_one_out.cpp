@@ -6,6 +6,8 @@
 #include <Eigen/Cholesky>
 #include <Eigen/SVD>
 
+#include "accelcal/calibration/fit/scaled_problem.h"
+
 namespace accelcal {
 namespace {
 
@@ -28,12 +30,11 @@ constexpr int kMaxJacobianChecks = 8;
 // refits then also say what the captures do not determine.
 constexpr double kMinRelativeSingularValue = 1e-6;
 
-// The fit of all captures, linearised: the weighted residuals rho and the weighted Jacobian J in
-// the solver's scaled free variables (as least_squares.h scales them), and J's SVD.
+// The fit of all captures, linearised: the problem in the solver's scaled free variables
+// anchored at p_full (scaled_problem.h), its weighted residuals rho and Jacobian J there, and
+// J's SVD.
 struct Linearised {
-  std::vector<int> free;          // indices of the fitted parameters
-  Eigen::VectorXd scales;         // ParameterScale of every parameter at p_full
-  Eigen::VectorXd sigmas;         // each capture's 1-sigma, m/s^2
+  ScaledProblem problem;
   Eigen::VectorXd rho;            // r_i / sigma_i at p_full
   Eigen::MatrixXd jac;            // d rho_i / d x_k
   Eigen::MatrixXd u, v;           // thin SVD: jac = u diag(s) v^T
@@ -44,47 +45,23 @@ struct Linearised {
   Eigen::VectorXd SolveNormal(const Eigen::VectorXd& b) const {
     return v * (s.array().square().inverse().matrix().asDiagonal() * (v.transpose() * b));
   }
-  Eigen::VectorXd Parameters(const Eigen::VectorXd& p_full, const Eigen::VectorXd& x) const {
-    Eigen::VectorXd p = p_full;
-    for (size_t k = 0; k < free.size(); ++k) p(free[k]) += scales(free[k]) * x(static_cast<Eigen::Index>(k));
-    return p;
-  }
 };
 
-// The weighted residuals (and, with `jac`, the weighted Jacobian in the scaled free variables)
-// of every capture at x, the step from p_full.
-bool EvaluateAt(const ResidualModel& model, const std::vector<FitCapture>& captures,
-                const Eigen::VectorXd& p_full, const Linearised& lin, const Eigen::VectorXd& x,
-                double gravity_mps2, Eigen::VectorXd* rho, Eigen::MatrixXd* jac) {
-  const Eigen::VectorXd p = lin.Parameters(p_full, x);
-  const int n = static_cast<int>(captures.size());
-  const int nf = static_cast<int>(lin.free.size());
-  Eigen::VectorXd grad(model.NumParameters());
-  rho->resize(n);
-  if (jac != nullptr) jac->resize(n, nf);
-  for (int j = 0; j < n; ++j) {
-    const double r = model.Residual(p, captures[static_cast<size_t>(j)], gravity_mps2,
-                                    jac != nullptr ? &grad : nullptr, nullptr);
-    (*rho)(j) = r / lin.sigmas(j);
-    if (jac != nullptr)
-      for (int k = 0; k < nf; ++k) (*jac)(j, k) = grad(lin.free[k]) * lin.scales(lin.free[k]) / lin.sigmas(j);
-  }
+// The weighted residuals (and, with `jac`, the weighted Jacobian) of every capture at x, the
+// step from p_full; false when any is not finite.
+bool EvaluateAt(const Linearised& lin, const Eigen::VectorXd& x, Eigen::VectorXd* rho,
+                Eigen::MatrixXd* jac) {
+  lin.problem.Evaluate(lin.problem.ToParameters(x), rho, jac);
   return rho->allFinite() && (jac == nullptr || jac->allFinite());
 }
 
 Linearised Linearise(const ResidualModel& model, const std::vector<FitCapture>& captures,
                      const Eigen::VectorXd& p_full, const LeastSquaresOptions& solver) {
   Linearised lin;
+  lin.problem = MakeScaledProblem(model, captures, p_full, solver.held, solver.gravity_mps2);
   const int n = static_cast<int>(captures.size());
-  const int np = model.NumParameters();
-  for (int i = 0; i < np; ++i)
-    if (std::find(solver.held.begin(), solver.held.end(), i) == solver.held.end()) lin.free.push_back(i);
-  const int nf = static_cast<int>(lin.free.size());
-  lin.sigmas = ResidualSigmas(model, captures, p_full, solver.gravity_mps2);
-  lin.scales.resize(np);
-  for (int i = 0; i < np; ++i) lin.scales(i) = model.ParameterScale(p_full, i);
-  const bool finite = EvaluateAt(model, captures, p_full, lin, Eigen::VectorXd::Zero(nf),
-                                 solver.gravity_mps2, &lin.rho, &lin.jac);
+  const int nf = lin.problem.NumFree();
+  const bool finite = EvaluateAt(lin, Eigen::VectorXd::Zero(nf), &lin.rho, &lin.jac);
   if (nf == 0 || n <= nf + 1 || !finite) return lin;
   const Eigen::JacobiSVD<Eigen::MatrixXd> svd(lin.jac, Eigen::ComputeThinU | Eigen::ComputeThinV);
   lin.u = svd.matrixU();
@@ -102,11 +79,9 @@ struct LeftOutFit {
 // The polish's test (IsGaussNewtonConverged) of a Gauss-Newton step at x for the captures but i
 // (large residuals make Gauss-Newton converge only linearly: the refits often stop by its
 // round-off rule). Takes the step into *x when it lowers the cost.
-bool IsPolishConverged(const ResidualModel& model, const std::vector<FitCapture>& captures,
-                       const Eigen::VectorXd& p_full, const Linearised& lin, int i,
-                       const Eigen::MatrixXd& jac, const Eigen::VectorXd& rho,
-                       const Eigen::VectorXd& step, const LeastSquaresOptions& solver,
-                       Eigen::VectorXd* x) {
+bool IsPolishConverged(const Linearised& lin, int i, const Eigen::MatrixXd& jac,
+                       const Eigen::VectorXd& rho, const Eigen::VectorXd& step,
+                       const LeastSquaresOptions& solver, Eigen::VectorXd* x) {
   const double cost = rho.squaredNorm() - rho(i) * rho(i);
   Eigen::VectorXd jstep = jac * step;
   jstep(i) = 0.0;
@@ -114,7 +89,7 @@ bool IsPolishConverged(const ResidualModel& model, const std::vector<FitCapture>
   const Eigen::VectorXd candidate = *x + step;
   Eigen::VectorXd rho_new;
   double new_cost = cost;
-  if (EvaluateAt(model, captures, p_full, lin, candidate, solver.gravity_mps2, &rho_new, nullptr)) {
+  if (EvaluateAt(lin, candidate, &rho_new, nullptr)) {
     const double c = rho_new.squaredNorm() - rho_new(i) * rho_new(i);
     if (c <= cost) {
       new_cost = c;
@@ -134,9 +109,8 @@ bool IsPolishConverged(const ResidualModel& model, const std::vector<FitCapture>
 // (IsPolishConverged) says converged, that is the minimum a refit would stop at; else the steps
 // go on with the new Jacobian held. False when the capture's leverage is too high or the
 // steps do not settle by then: the caller refits.
-bool UpdateLeftOut(const ResidualModel& model, const std::vector<FitCapture>& captures,
-                   const Eigen::VectorXd& p_full, const Linearised& lin, int i,
-                   const LeastSquaresOptions& solver, LeftOutFit* out) {
+bool UpdateLeftOut(const Linearised& lin, int i, const LeastSquaresOptions& solver,
+                   LeftOutFit* out) {
   const double h = lin.u.row(i).squaredNorm();
   if (!(h < kMaxLeverage)) return false;
   const Eigen::VectorXd ji = lin.jac.row(i).transpose();
@@ -158,21 +132,22 @@ bool UpdateLeftOut(const ResidualModel& model, const std::vector<FitCapture>& ca
   for (int check = 0; check < kMaxJacobianChecks; ++check) {
     bool settled = false;
     for (int it = 0; it < kMaxChordIterations && !settled; ++it) {
-      if (!EvaluateAt(model, captures, p_full, lin, x, solver.gravity_mps2, &rho, nullptr)) return false;
+      if (!EvaluateAt(lin, x, &rho, nullptr)) return false;
       const Eigen::VectorXd step = -held_normal.solve(others_gradient(held, rho));
       x += step;
       settled = step.lpNorm<Eigen::Infinity>() < solver.step_tolerance;
     }
     if (!settled) return false;
-    if (!EvaluateAt(model, captures, p_full, lin, x, solver.gravity_mps2, &rho, &jac)) return false;
+    if (!EvaluateAt(lin, x, &rho, &jac)) return false;
     held_normal = others_normal(jac);
     if (held_normal.info() != Eigen::Success) return false;
     const Eigen::VectorXd step = -held_normal.solve(others_gradient(jac, rho));
-    if (IsPolishConverged(model, captures, p_full, lin, i, jac, rho, step, solver, &x)) {
-      out->p = lin.Parameters(p_full, x);
+    if (IsPolishConverged(lin, i, jac, rho, step, solver, &x)) {
+      out->p = lin.problem.ToParameters(x);
       // g^T C_(-i) g = sigma_i^2 J_i (J_(-i)^T J_(-i))^-1 J_i^T, weighted rows at the fit.
       const Eigen::VectorXd row = jac.row(i).transpose();
-      out->extra_var = lin.sigmas(i) * lin.sigmas(i) * row.dot(held_normal.solve(row));
+      const double sigma = lin.problem.sigmas(i);
+      out->extra_var = sigma * sigma * row.dot(held_normal.solve(row));
       return true;
     }
     held = jac;
@@ -218,12 +193,12 @@ LeaveOneOutResult PredictLeftOut(const ResidualModel& model, const std::vector<F
   double sum_sq = 0.0, chi2 = 0.0;
   for (size_t i = 0; i < captures.size(); ++i) {
     LeftOutFit fit;
-    if (!lin.usable || !UpdateLeftOut(model, captures, p_full, lin, static_cast<int>(i), solver, &fit)) {
+    if (!lin.usable || !UpdateLeftOut(lin, static_cast<int>(i), solver, &fit)) {
       fit = RefitLeftOut(model, captures, p_full, i, solver);
       ++out.refitted;
     }
     const double r = model.Residual(fit.p, captures[i], solver.gravity_mps2, nullptr, nullptr);
-    const double sigma = lin.sigmas(static_cast<Eigen::Index>(i));
+    const double sigma = lin.problem.sigmas(static_cast<Eigen::Index>(i));
     LeaveOneOutPrediction pred{captures[i].id, r, r / std::sqrt(sigma * sigma + fit.extra_var)};
     sum_sq += r * r;
     chi2 += pred.z * pred.z;

@@ -1,4 +1,5 @@
 #include "accelcal/calibration/fit/least_squares.h"
+#include "accelcal/calibration/fit/scaled_problem.h"
 #include "accelcal/base/linear_algebra.h"
 
 #include <algorithm>
@@ -12,53 +13,14 @@
 namespace accelcal {
 namespace {
 
-// Everything the objective needs; p = p0 + scales .* x, x being NLopt's variables.
-// Only the free parameters are variables: p = p0 + sum_k scales(free_k) x_k e_(free_k).
-struct Problem {
-  const ResidualModel* model;  // borrowed; outlives the Problem
-  const std::vector<FitCapture>* captures;  // borrowed
-  double gravity_mps2;
-  Eigen::VectorXd p0;
-  Eigen::VectorXd scales;      // of every parameter
-  Eigen::VectorXd sigmas;
-  std::vector<int> free;       // indices of the fitted parameters
+// Everything the objective needs (scaled_problem.h), and NLopt's count of its calls.
+struct Problem : ScaledProblem {
   int evaluations = 0;
-
-  int NumFree() const { return static_cast<int>(free.size()); }
-  Eigen::VectorXd ToParameters(const double* x) const {
-    Eigen::VectorXd p = p0;
-    for (int k = 0; k < NumFree(); ++k) p(free[k]) += scales(free[k]) * x[k];
-    return p;
-  }
-  // A step in the scaled free variables, as a change of p.
-  Eigen::VectorXd Step(const Eigen::VectorXd& x) const {
-    Eigen::VectorXd d = Eigen::VectorXd::Zero(p0.size());
-    for (int k = 0; k < NumFree(); ++k) d(free[k]) = scales(free[k]) * x(k);
-    return d;
-  }
 };
-
-// Weighted residuals rho_i = r_i / sigma_i and their Jacobian in the scaled free variables.
-void Evaluate(const Problem& pr, const Eigen::VectorXd& p, Eigen::VectorXd* rho, Eigen::MatrixXd* jac) {
-  const int n = static_cast<int>(pr.captures->size());
-  const int np = static_cast<int>(p.size());
-  rho->resize(n);
-  if (jac != nullptr) jac->resize(n, pr.NumFree());
-  Eigen::VectorXd grad(np);
-  for (int i = 0; i < n; ++i) {
-    const double r = pr.model->Residual(p, (*pr.captures)[i], pr.gravity_mps2,
-                                        jac != nullptr ? &grad : nullptr, nullptr);
-    (*rho)(i) = r / pr.sigmas(i);
-    if (jac != nullptr) {
-      for (int k = 0; k < pr.NumFree(); ++k)
-        (*jac)(i, k) = grad(pr.free[k]) * pr.scales(pr.free[k]) / pr.sigmas(i);
-    }
-  }
-}
 
 double Cost(const Problem& pr, const Eigen::VectorXd& p) {
   Eigen::VectorXd rho;
-  Evaluate(pr, p, &rho, nullptr);
+  pr.Evaluate(p, &rho, nullptr);
   const double cost = rho.squaredNorm();
   return std::isfinite(cost) ? cost : INFINITY;
 }
@@ -69,7 +31,7 @@ double Objective(unsigned n, const double* x, double* grad, void* data) {
   const Eigen::VectorXd p = pr.ToParameters(x);
   Eigen::VectorXd rho;
   Eigen::MatrixXd jac;
-  Evaluate(pr, p, &rho, grad != nullptr ? &jac : nullptr);
+  pr.Evaluate(p, &rho, grad != nullptr ? &jac : nullptr);
   if (grad != nullptr) Eigen::Map<Eigen::VectorXd>(grad, n) = jac.transpose() * rho;
   const double cost = 0.5 * rho.squaredNorm();
   // A non-finite cost derails the line search; a large finite one makes it back off instead.
@@ -151,7 +113,7 @@ PolishResult Polish(const Problem& pr, Eigen::VectorXd p, const LeastSquaresOpti
   Eigen::VectorXd rho;
   Eigen::MatrixXd jac;
   for (out.iterations = 0; out.iterations < options.max_gauss_newton_iterations; ++out.iterations) {
-    Evaluate(pr, p, &rho, &jac);
+    pr.Evaluate(p, &rho, &jac);
     if (!rho.allFinite() || !jac.allFinite()) {
       out.failure = "non-finite residuals (a capture's calibrated reading is undefined)";
       out.p = p;
@@ -170,7 +132,7 @@ PolishResult Polish(const Problem& pr, Eigen::VectorXd p, const LeastSquaresOpti
     bool decreased = false;
     for (int halving = 0; halving < 40; ++halving, alpha *= 0.5) {
       candidate = p + pr.Step(alpha * step);
-      Evaluate(pr, candidate, &rho_new, nullptr);
+      pr.Evaluate(candidate, &rho_new, nullptr);
       if (rho_new.allFinite() && rho_new.squaredNorm() <= cost) {
         decreased = true;
         break;
@@ -204,7 +166,7 @@ void FillStatistics(const Problem& pr, const Eigen::VectorXd& p, const LeastSqua
                     FitSummary* s) {
   Eigen::VectorXd rho;
   Eigen::MatrixXd jac;
-  Evaluate(pr, p, &rho, &jac);
+  pr.Evaluate(p, &rho, &jac);
   const int n = static_cast<int>(rho.size());
   const int np = static_cast<int>(p.size());
   const int nf = pr.NumFree();
@@ -311,21 +273,14 @@ FitSummary SolveWeightedLeastSquares(const ResidualModel& model,
     return s;
   }
 
-  Problem pr{&model, &captures, options.gravity_mps2, initial, Eigen::VectorXd(initial.size()), {}, {}};
-  for (int i = 0; i < initial.size(); ++i) {
-    pr.scales(i) = model.ParameterScale(initial, i);
-    if (std::find(options.held.begin(), options.held.end(), i) == options.held.end()) {
-      pr.free.push_back(i);
-    } else {
-      s.held.push_back({i, initial(i), {}});
-    }
-  }
+  Problem pr{MakeScaledProblem(model, captures, initial, options.held, options.gravity_mps2)};
+  for (int i = 0; i < initial.size(); ++i)
+    if (std::find(pr.free.begin(), pr.free.end(), i) == pr.free.end()) s.held.push_back({i, initial(i), {}});
   if (static_cast<int>(s.held.size()) != static_cast<int>(options.held.size())) {
     s.termination = FitTermination::kInvalidInput;
     s.message = "held parameters must be distinct indices of the model's parameters";
     return s;
   }
-  pr.sigmas = ResidualSigmas(model, captures, initial, options.gravity_mps2);
   if (!pr.sigmas.allFinite() || (pr.sigmas.array() <= 0.0).any() || !pr.scales.allFinite()) {
     s.termination = FitTermination::kNumericalFailure;
     s.message = "the initial guess gives undefined residual weights";
@@ -345,9 +300,7 @@ FitSummary SolveWeightedLeastSquares(const ResidualModel& model,
     }
   }
   // Re-anchor weights and variable scales at NLopt's answer for the polish.
-  pr.p0 = p_nlopt;
-  for (int i = 0; i < p_nlopt.size(); ++i) pr.scales(i) = model.ParameterScale(p_nlopt, i);
-  pr.sigmas = ResidualSigmas(model, captures, p_nlopt, options.gravity_mps2);
+  pr.AnchorAt(p_nlopt);
   if (!pr.sigmas.allFinite() || (pr.sigmas.array() <= 0.0).any() || !pr.scales.allFinite()) {
     s.termination = FitTermination::kNumericalFailure;
     s.message = fmt::format("the optimizer ended ({}) at parameters where the residuals are "
