@@ -36,10 +36,16 @@ struct NoiseCommandOptions {
   SampleFormatFlags format;            // --record files
 };
 
-std::vector<analysis::NoiseRecord> Records(const NoiseCommandOptions& o,
-                                           const std::optional<Calibration>& calibration,
-                                           std::vector<std::string>* notes) {
-  std::vector<analysis::NoiseRecord> records;
+// What the reading of each --record file understood: known after the analysis's first pass.
+struct FileReadings {
+  std::vector<std::unique_ptr<ReadingSummary>> summaries;
+};
+
+std::vector<analysis::NoiseRecordSource> Records(const NoiseCommandOptions& o,
+                                                 const std::optional<Calibration>& calibration,
+                                                 FileReadings* readings,
+                                                 std::vector<std::string>* notes) {
+  std::vector<analysis::NoiseRecordSource> records;
   if (!o.record_paths.empty()) {
     SampleFormat format = o.format.Resolve();
     if (calibration) {
@@ -54,11 +60,9 @@ std::vector<analysis::NoiseRecord> Records(const NoiseCommandOptions& o,
                               format.unit.Name()));
     }
     for (const std::string& path : o.record_paths) {
-      ReadingSummary summary;
-      records.push_back(analysis::NoiseRecordFromFile(path, format, &summary));
-      // What was understood goes to stderr: the report (stdout or -o) stays the analysis.
-      fmt::print(stderr, "accelcal: read {}\n", summary.Describe());
-      if (!summary.converted_hint.empty()) notes->push_back(summary.converted_hint);
+      readings->summaries.push_back(std::make_unique<ReadingSummary>());
+      records.push_back(
+          analysis::NoiseRecordFromFile(path, format, readings->summaries.back().get()));
     }
     return records;
   }
@@ -76,9 +80,18 @@ void RunNoise(const NoiseCommandOptions& o) {
   std::optional<Calibration> calibration;
   if (!o.calibration_path.empty()) calibration = ReadCalibrationFile(o.calibration_path);
   std::vector<std::string> notes;
-  const std::vector<analysis::NoiseRecord> records = Records(o, calibration, &notes);
-  analysis::NoiseReport report = analysis::AnalyzeNoise(
+  FileReadings readings;
+  const std::vector<analysis::NoiseRecordSource> records =
+      Records(o, calibration, &readings, &notes);
+  analysis::NoiseReport report = analysis::AnalyzeNoiseSources(
       records, analysis::NoiseAnalysisOptions{}, calibration ? &*calibration : nullptr);
+  // What was understood goes to stderr: the report (stdout or -o) stays the analysis.
+  std::vector<std::string> file_notes;
+  for (const auto& summary : readings.summaries) {
+    fmt::print(stderr, "accelcal: read {}\n", summary->Describe());
+    if (!summary->converted_hint.empty()) file_notes.push_back(summary->converted_hint);
+  }
+  notes.insert(notes.begin(), file_notes.begin(), file_notes.end());
   report.warnings.insert(report.warnings.begin(), notes.begin(), notes.end());
   if (o.output_format == "json") {
     WriteOutputText(o.output_path, NoiseFileText(report));

@@ -26,6 +26,8 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -43,6 +45,21 @@ struct NoiseRecord {
   std::string date;   // UTC day it was taken, "YYYY-MM-DD"; empty when unknown
   std::vector<Sample> samples;  // raw counts, t strictly increasing
 };
+
+// A record as the analysis reads it: `replay` calls its argument with the record's samples in
+// order, a piece at a time, and gives the same samples every time it is called (the analysis
+// reads a record three times, at most six: the median interval, the means, then the moments
+// and the spectrum). Only a piece and one Welch segment per axis (at most 3 x 65 536 values)
+// are in memory at a time: a record of any length is analysed in bounded memory.
+using SamplePieceSink = std::function<void(const Sample* samples, std::size_t count)>;
+struct NoiseRecordSource {
+  std::string label;
+  std::string date;
+  std::function<void(const SamplePieceSink&)> replay;
+};
+
+// A source replaying `record`'s samples (which must outlive it) as one piece.
+NoiseRecordSource ReplayOf(const NoiseRecord& record);
 
 struct NoiseAnalysisOptions {
   double band_low_fraction = 0.1;   // flat band's low edge, fraction of Nyquist (also >= 4 bins)
@@ -111,5 +128,9 @@ struct NoiseReport {
 NoiseReport AnalyzeNoise(const std::vector<NoiseRecord>& records,
                          const NoiseAnalysisOptions& options = {},
                          const Calibration* calibration = nullptr);
+// The same from sources; throws also when a source gives different samples at a later pass.
+NoiseReport AnalyzeNoiseSources(const std::vector<NoiseRecordSource>& records,
+                                const NoiseAnalysisOptions& options = {},
+                                const Calibration* calibration = nullptr);
 
 }  // namespace accelcal::analysis

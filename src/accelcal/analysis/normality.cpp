@@ -53,6 +53,12 @@ NormalityTest JarqueBera(const std::vector<double>& x, double std_counts, double
   m2 /= static_cast<double>(n);
   m3 /= static_cast<double>(n);
   m4 /= static_cast<double>(n);
+  return JarqueBeraOfMoments(n, m2, m3, m4, std_counts, alpha, quantization_limit_counts);
+}
+
+NormalityTest JarqueBeraOfMoments(long n, double m2, double m3, double m4, double std_counts,
+                                  double alpha, double quantization_limit_counts) {
+  if (n < 8) throw Error(fmt::format("normality test: {} values are too few (at least 8)", n));
   NormalityTest t;
   t.n = n;
   if (!(m2 > 0.0)) {

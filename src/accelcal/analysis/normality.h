@@ -38,4 +38,10 @@ struct NormalityTest {
 NormalityTest JarqueBera(const std::vector<double>& x, double std_counts, double alpha = 0.01,
                          double quantization_limit_counts = 1.0);
 
+// The same test from the central moments (1/n) of n values (n >= 8), in any one unit (the
+// vector form divides the values by their largest magnitude first): for a record read as it
+// comes (noise_analysis.h). Throws as JarqueBera for a zero m2 above the quantization limit.
+NormalityTest JarqueBeraOfMoments(long n, double m2, double m3, double m4, double std_counts,
+                                  double alpha = 0.01, double quantization_limit_counts = 1.0);
+
 }  // namespace accelcal::analysis

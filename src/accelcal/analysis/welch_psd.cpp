@@ -1,10 +1,10 @@
 #include "accelcal/analysis/welch_psd.h"
 
+#include <algorithm>
 #include <cmath>
 #include <complex>
 
 #include <fmt/core.h>
-#include <unsupported/Eigen/FFT>
 
 #include "accelcal/base/error.h"
 
@@ -24,29 +24,28 @@ std::vector<double> HannWindow(int length) {
   return w;
 }
 
-// x[begin .. begin+L) minus its least-squares line, times the window.
-std::vector<double> DetrendedWindowed(const std::vector<double>& x, long begin,
-                                      const std::vector<double>& window) {
+// The segment minus its least-squares line, times the window, into *out.
+void DetrendAndWindow(const std::vector<double>& segment, const std::vector<double>& window,
+                      std::vector<double>* out) {
   const long length = static_cast<long>(window.size());
   // Regress on centred index u = n - (L - 1) / 2, so slope and mean separate.
   const double centre = 0.5 * static_cast<double>(length - 1);
   double sum = 0.0, sum_uy = 0.0, sum_uu = 0.0;
   for (long n = 0; n < length; ++n) {
     const double u = static_cast<double>(n) - centre;
-    const double y = x[static_cast<std::size_t>(begin + n)];
+    const double y = segment[static_cast<std::size_t>(n)];
     sum += y;
     sum_uy += u * y;
     sum_uu += u * u;
   }
   const double mean = sum / static_cast<double>(length);
   const double slope = sum_uy / sum_uu;
-  std::vector<double> out(static_cast<std::size_t>(length));
+  out->resize(static_cast<std::size_t>(length));
   for (long n = 0; n < length; ++n) {
     const double u = static_cast<double>(n) - centre;
     const std::size_t i = static_cast<std::size_t>(n);
-    out[i] = (x[static_cast<std::size_t>(begin + n)] - mean - slope * u) * window[i];
+    (*out)[i] = (segment[i] - mean - slope * u) * window[i];
   }
-  return out;
 }
 
 }  // namespace
@@ -71,6 +70,57 @@ int ChooseSegmentLength(long n, const WelchOptions& options) {
   return length;
 }
 
+WelchAccumulator::WelchAccumulator(int segment_length) {
+  if (!IsPowerOfTwo(segment_length) || segment_length < kMinSegment)
+    throw Error(fmt::format("Welch PSD: the segment length must be a power of two >= {}, got {}",
+                            kMinSegment, segment_length));
+  window_ = HannWindow(segment_length);
+  for (double w : window_) window_power_ += w * w;
+  segment_.reserve(static_cast<std::size_t>(segment_length));
+  sum_power_.assign(static_cast<std::size_t>(segment_length / 2 + 1), 0.0);
+}
+
+void WelchAccumulator::Add(double x) {
+  if (!std::isfinite(x))
+    throw Error(fmt::format("Welch PSD: sample {} is not finite", num_values_));
+  ++num_values_;
+  segment_.push_back(x);
+  if (segment_.size() == window_.size()) AddSegment();
+}
+
+// A full segment: its power into the sum, and its second half kept as the next segment's first
+// (50 % overlap).
+void WelchAccumulator::AddSegment() {
+  DetrendAndWindow(segment_, window_, &windowed_);
+  fft_.fwd(spectrum_, windowed_);
+  for (std::size_t k = 0; k < sum_power_.size(); ++k) sum_power_[k] += std::norm(spectrum_[k]);
+  ++num_segments_;
+  const std::size_t half = window_.size() / 2;
+  std::copy(segment_.begin() + static_cast<long>(half), segment_.end(), segment_.begin());
+  segment_.resize(half);
+}
+
+PowerSpectrum WelchAccumulator::Finish(double rate_hz) const {
+  if (!(rate_hz > 0.0) || !std::isfinite(rate_hz))
+    throw Error(fmt::format("Welch PSD: the sample rate must be positive, got {}", rate_hz));
+  const int length = static_cast<int>(window_.size());
+  if (num_segments_ == 0)
+    throw Error(fmt::format("Welch PSD: {} samples are too few (at least {})", num_values_, length));
+  const int half = length / 2;
+  PowerSpectrum out;
+  out.segment_length = length;
+  out.num_segments = num_segments_;
+  out.resolution_hz = rate_hz / length;
+  out.density = sum_power_;
+  const double scale = 1.0 / (rate_hz * window_power_ * num_segments_);
+  for (int k = 0; k <= half; ++k) {
+    const double one_sided = (k == 0 || k == half) ? 1.0 : 2.0;
+    out.density[static_cast<std::size_t>(k)] *= one_sided * scale;
+    out.frequency_hz.push_back(k * out.resolution_hz);
+  }
+  return out;
+}
+
 PowerSpectrum WelchPsd(const std::vector<double>& x, double rate_hz, const WelchOptions& options) {
   if (std::string why = options.Validate(); !why.empty()) throw Error("Welch PSD: " + why);
   if (!(rate_hz > 0.0) || !std::isfinite(rate_hz))
@@ -84,30 +134,9 @@ PowerSpectrum WelchPsd(const std::vector<double>& x, double rate_hz, const Welch
     throw Error(fmt::format("Welch PSD: {} samples are too few (at least {})", n,
                             std::max(kMinSegment, options.segment_length)));
   }
-  const std::vector<double> window = HannWindow(length);
-  double window_power = 0.0;  // sum w_n^2
-  for (double w : window) window_power += w * w;
-
-  const int half = length / 2;
-  PowerSpectrum out;
-  out.segment_length = length;
-  out.resolution_hz = rate_hz / length;
-  out.density.assign(static_cast<std::size_t>(half + 1), 0.0);
-  Eigen::FFT<double> fft;
-  std::vector<std::complex<double>> spectrum;
-  const long step = length / 2;
-  for (long begin = 0; begin + length <= n; begin += step) {
-    fft.fwd(spectrum, DetrendedWindowed(x, begin, window));
-    for (int k = 0; k <= half; ++k) out.density[static_cast<std::size_t>(k)] += std::norm(spectrum[static_cast<std::size_t>(k)]);
-    ++out.num_segments;
-  }
-  const double scale = 1.0 / (rate_hz * window_power * out.num_segments);
-  for (int k = 0; k <= half; ++k) {
-    const double one_sided = (k == 0 || k == half) ? 1.0 : 2.0;
-    out.density[static_cast<std::size_t>(k)] *= one_sided * scale;
-    out.frequency_hz.push_back(k * out.resolution_hz);
-  }
-  return out;
+  WelchAccumulator welch(length);
+  for (double v : x) welch.Add(v);
+  return welch.Finish(rate_hz);
 }
 
 }  // namespace accelcal::analysis

@@ -14,8 +14,11 @@
 // Units: `x` in any unit u, rate in Hz; the density in u^2/Hz.
 #pragma once
 
+#include <complex>
 #include <string>
 #include <vector>
+
+#include <unsupported/Eigen/FFT>
 
 namespace accelcal::analysis {
 
@@ -36,6 +39,33 @@ struct PowerSpectrum {
   int segment_length = 0;            // L, samples
   int num_segments = 0;              // segments averaged
   double resolution_hz = 0.0;        // fs / L
+};
+
+// Welch's average built one value at a time, for a record read as it comes (noise_analysis.h):
+// it holds one segment (L values), whatever the record's length. WelchPsd is this over a vector.
+class WelchAccumulator {
+ public:
+  // segment_length: L, a power of two >= 16 (ChooseSegmentLength). Throws accelcal::Error
+  // otherwise.
+  explicit WelchAccumulator(int segment_length);
+  // The next value; throws accelcal::Error when it is not finite.
+  void Add(double x);
+  // The PSD of the values added, sampled at rate_hz. Throws accelcal::Error when rate_hz is not
+  // positive and finite or fewer than L values were added.
+  PowerSpectrum Finish(double rate_hz) const;
+
+ private:
+  void AddSegment();
+
+  std::vector<double> window_;   // Hann, L
+  double window_power_ = 0.0;    // sum w_n^2
+  std::vector<double> segment_;  // the values not yet past: at most L
+  std::vector<double> sum_power_;  // sum over segments of |X_k|^2, k = 0 .. L/2
+  int num_segments_ = 0;
+  long num_values_ = 0;
+  Eigen::FFT<double> fft_;
+  std::vector<double> windowed_;  // scratch: the segment detrended and windowed
+  std::vector<std::complex<double>> spectrum_;  // scratch
 };
 
 // The segment length WelchOptions would choose for n samples (0 when n < 16).

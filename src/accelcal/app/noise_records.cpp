@@ -5,10 +5,13 @@
 #include <memory>
 #include <set>
 
+#include <sys/stat.h>
+
 #include <fmt/core.h>
 
 #include "accelcal/base/error.h"
 #include "accelcal/io/recording_reader.h"
+#include "accelcal/io/recording_stream.h"
 #include "accelcal/session/session_catalog.h"
 
 namespace accelcal::analysis {
@@ -58,33 +61,71 @@ NoiseRecordSet NoiseRecordsOfDevice(const std::string& sessions_dir, const std::
   read_only.read_only = true;
   for (const SessionInfo& info : listing.sessions) {
     const std::unique_ptr<SessionStore> store = SessionStore::Open(info.path, read_only);
-    // The wizard streams a record step in chunks (record_step_writer.h); sessions of schema 1 kept
-    // it as one capture.
-    std::vector<Sample> samples;
+    const std::string date = info.created_utc.substr(0, 10);
+    // The wizard streams a record step in chunks (record_step_writer.h), read back at every pass
+    // of the analysis from the session file, opened again; sessions of schema 1 kept it as one
+    // capture (small: held).
+    std::string chunked_step;
     for (const std::string& step : store->RecordSteps())
-      if (record_steps.count(step) > 0 && samples.empty()) samples = ReadRecord(*store, step).samples;
-    if (samples.empty()) {
-      const std::vector<JournalCapture> captures = CurrentCaptures(store->Captures());
-      const auto it = std::find_if(captures.begin(), captures.end(), [&](const JournalCapture& c) {
-        return record_steps.count(c.step_id) > 0;
-      });
-      if (it != captures.end()) samples = it->capture.samples;
+      if (record_steps.count(step) > 0 && chunked_step.empty()) chunked_step = step;
+    if (!chunked_step.empty()) {
+      const std::string path = info.path;
+      NoiseRecordSource source{info.name, date, {}};
+      source.replay = [path, chunked_step, read_only, name = info.name](const SamplePieceSink& sink) {
+        const std::unique_ptr<SessionStore> again = SessionStore::Open(path, read_only);
+        JournalNoiseRecord(*again, chunked_step, name, "").replay(sink);
+      };
+      set.records.push_back(std::move(source));
+      continue;
     }
-    if (samples.empty()) {
+    const std::vector<JournalCapture> captures = CurrentCaptures(store->Captures());
+    const auto it = std::find_if(captures.begin(), captures.end(), [&](const JournalCapture& c) {
+      return record_steps.count(c.step_id) > 0;
+    });
+    if (it == captures.end() || it->capture.samples.empty()) {
       set.notes.push_back(fmt::format("session {} has no record yet: passed over", info.name));
       continue;
     }
-    set.records.push_back({info.name, info.created_utc.substr(0, 10), std::move(samples)});
+    auto samples = std::make_shared<const std::vector<Sample>>(it->capture.samples);
+    set.records.push_back({info.name, date, [samples](const SamplePieceSink& sink) {
+                             sink(samples->data(), samples->size());
+                           }});
   }
   if (set.records.empty()) ThrowNoRecords(sessions_dir, device, noise_procedure.title, set);
   return set;
 }
 
-NoiseRecord NoiseRecordFromFile(const std::string& path, const SampleFormat& format,
-                                ReadingSummary* summary) {
-  Recording recording = ReadRecording(path, format);
-  if (summary != nullptr) *summary = recording.summary;
-  return {path, "", std::move(recording.samples)};
+NoiseRecordSource NoiseRecordFromFile(const std::string& path, const SampleFormat& format,
+                                      ReadingSummary* summary) {
+  struct stat info {};
+  if (path == "-" || ::stat(path.c_str(), &info) != 0 || !S_ISREG(info.st_mode)) {
+    // Not a regular file: it cannot be read again, so it is held.
+    Recording recording = ReadRecording(path, format);
+    if (summary != nullptr) *summary = recording.summary;
+    auto samples = std::make_shared<const std::vector<Sample>>(std::move(recording.samples));
+    return {path, "", [samples](const SamplePieceSink& sink) {
+              sink(samples->data(), samples->size());
+            }};
+  }
+  auto passes = std::make_shared<int>(0);
+  return {path, "", [path, format, summary, passes](const SamplePieceSink& sink) {
+            RecordingStream stream(path, RecordingStream::kDefaultBlockBytes, format);
+            std::vector<Sample> block;
+            while (stream.Next(&block)) sink(block.data(), block.size());
+            if (summary != nullptr && (*passes)++ == 0) *summary = stream.Summary();
+          }};
+}
+
+NoiseRecordSource JournalNoiseRecord(const SessionJournal& journal, const std::string& step_id,
+                                     const std::string& label, const std::string& date) {
+  return {label, date, [&journal, step_id](const SamplePieceSink& sink) {
+            long samples_read = 0;
+            journal.VisitRecordChunks(step_id, [&](const RecordChunk& chunk) {
+              samples_read += static_cast<long>(chunk.samples.size());
+              sink(chunk.samples.data(), chunk.samples.size());
+            });
+            CheckRecordReadable(journal, step_id, samples_read);
+          }};
 }
 
 }  // namespace accelcal::analysis

@@ -7,6 +7,7 @@
 #include "accelcal/app/analyze_recording.h"
 #include "accelcal/app/wizard/diagnosis_words.h"
 #include "accelcal/analysis/noise_analysis.h"
+#include "accelcal/app/noise_records.h"
 #include "accelcal/base/error.h"
 #include "accelcal/io/calibration_file.h"
 #include "accelcal/report/allan_text.h"
@@ -246,8 +247,9 @@ StepOutcome CalibrationSteps::Analysis(const ProcedureStep& step, std::string* o
                                         "accelcal export-cal --to kalibr --allan).", path));
       }
     } else {
-      analysis::NoiseRecord record{step.record_step, "", ReadRecord(model_, step.record_step).samples};
-      const analysis::NoiseReport n = analysis::AnalyzeNoise({record});
+      // Read back chunk by chunk at each of the analysis's passes: bounded memory at any rate.
+      const analysis::NoiseReport n = analysis::AnalyzeNoiseSources(
+          {analysis::JournalNoiseRecord(model_, step.record_step, step.record_step, "")});
       out.lines = SplitLines(FormatNoiseText(n));
       out.lines.push_back("The day-to-day repeatability of the bias takes three such records on "
                           "different days: accelcal noise DEVICE.");
