@@ -460,6 +460,40 @@ TEST(AllanAccumulator, GapUsesOnlyTermsOnEitherSide) {
   }
 }
 
+// A gap after the first level has been compacted several times (its buffer holds 2 x 65 536 + 1
+// phase points and takes 65 536 more between compactions), and a second gap in the same
+// level later: the terms are still those of the three parts, whatever the buffer's history.
+TEST(AllanAccumulator, GapsAfterCompactionsUseOnlyTermsOnEitherSide) {
+  const std::vector<double> a = Synthetic(300000, 5.0, 0.1, 1e-3, 14);
+  const std::vector<double> b = Synthetic(70000, 5.1, 0.1, 1e-3, 15);
+  const std::vector<double> c = Synthetic(90000, 5.2, 0.1, 1e-3, 16);
+  AllanAccumulator acc(Options(0.001));
+  acc.Add(a);
+  acc.AddMissing(3);
+  acc.Add(b);
+  acc.AddMissing(1000);
+  acc.Add(c);
+  const AllanCurve curve = acc.Curve();
+  EXPECT_EQ(curve.missing_samples, 1003);
+  ASSERT_FALSE(curve.points.empty());
+  for (const AllanPoint& p : curve.points) {
+    if (p.stride != 1) continue;  // strided factors: their terms are the strided ones
+    long double sum = 0;
+    int64_t terms = 0;
+    for (const std::vector<double>* part : {&a, &b, &c}) {
+      long double s = 0;
+      int64_t t = 0;
+      DirectSums(*part, p.m, &s, &t);
+      sum += s;
+      terms += t;
+    }
+    ASSERT_EQ(p.num_terms, terms) << p.m;
+    const double md = static_cast<double>(p.m);
+    EXPECT_NEAR(p.adev / std::sqrt(static_cast<double>(sum) / (2 * md * md * terms)), 1.0, 1e-9)
+        << p.m;
+  }
+}
+
 // Curve() may be called at any time on a growing record: each curve equals the batch
 // computation on the readings so far, and calling it does not change what follows.
 TEST(AllanAccumulator, CurveOnGrowingRecordIsConsistent) {

@@ -40,8 +40,10 @@ struct Lag1Sums {
   }
 };
 
-// Streaming statistics of the m-averaged series z_k and of its first and second differences,
-// for the noise identification. Blocks arrive in order k = 0, 1, 2, ...; a difference or pair
+// Streaming statistics of the m-averaged series and of its first and second differences, for
+// the noise identification, kept of the block sums m z_k rather than of the averages z_k (no
+// division per block): the lag-1 autocorrelations do not depend on the scale, and the variance
+// is divided by m^2 where it is used (IdentifyNoise). Blocks arrive in order k = 0, 1, 2, ...; a difference or pair
 // involving an invalid block (one with a missing reading) is left out.
 class AveragedSeriesStats {
  public:
@@ -98,7 +100,7 @@ class AveragedSeriesStats {
 
   int64_t points() const { return static_cast<int64_t>(d0_.n); }
   std::array<double, 3> Lag1() const { return {d0_.R1(), d1_.R1(), d2_.R1()}; }
-  // Variance of z about its mean, divided by its length (NaN below 2 points).
+  // Variance of the block sums about their mean, divided by their number (NaN below 2 points).
   double PopulationVariance() const {
     if (d0_.n < 2) return std::nan("");
     const double mu = d0_.s / d0_.n;
@@ -125,7 +127,7 @@ class AveragedSeriesStats {
 };
 
 // Noise identification from the averaged series' statistics (see the header); avar is the
-// Allan variance of the point, n_avg = valid readings / m.
+// Allan variance of the point, n_avg = valid readings / m (point->m set).
 void IdentifyNoise(const AveragedSeriesStats& stats, double avar, double n_avg,
                    AllanPoint* point) {
   const int64_t n = stats.points();
@@ -134,7 +136,8 @@ void IdentifyNoise(const AveragedSeriesStats& stats, double avar, double n_avg,
     point->noise_id = NoiseIdMethod::kLag1Acf;
     return;
   }
-  const double b1 = stats.PopulationVariance() / avar;
+  const double md = static_cast<double>(point->m);
+  const double b1 = stats.PopulationVariance() / (md * md) / avar;  // the averages' variance
   if (!std::isfinite(b1) || n_avg <= 1.0) {
     point->alpha = 0;
     point->noise_id = NoiseIdMethod::kNone;
@@ -176,6 +179,9 @@ struct Level {
   size_t keep = 3;    // entries kept at compaction (>= 2 * largest grid_m + 1)
   int64_t next_up = 2;  // next grid index to carry up to the next level (even)
   std::vector<size_t> factors;
+  // False until a missing reading reaches this level: until then every entry of c is 0 and is
+  // neither written nor read (the common record has no gap; this saves a store per reading).
+  bool has_missing = false;
 };
 
 }  // namespace
@@ -277,7 +283,7 @@ struct AllanAccumulator::Impl {
         if (end <= f.next_j) continue;
         const int64_t b0 = f.next_j - l.first;
         const Eigen::Index n = end - f.next_j;
-        if (l.c[b0 + n - 1 + 2 * gm] == l.c[b0]) {  // no missing reading under these terms
+        if (!l.has_missing || l.c[b0 + n - 1 + 2 * gm] == l.c[b0]) {  // none missing under these terms
           f.sum_sq += detail::SumSquaredSecondDifferences(
               l.x.data() + b0, l.x.data() + b0 + gm, l.x.data() + b0 + 2 * gm, static_cast<size_t>(n));
           f.terms += n;
@@ -296,22 +302,19 @@ struct AllanAccumulator::Impl {
     for (size_t fi : l.factors) {
       Factor& f = factors[fi];
       const int64_t gm = f.grid_m;
-      const double md = static_cast<double>(f.m);
       while ((f.next_block + 1) * gm <= last) {
         const int64_t g0 = f.next_block * gm - l.first;
         // A run of whole blocks (at most the scratch size) with no missing reading goes in one
         // call; a block with one goes alone.
         const int64_t blocks = std::min<int64_t>((last - l.first - g0) / gm,
                                                  static_cast<int64_t>(scratch.size()));
-        if (l.c[g0 + blocks * gm] == l.c[g0]) {
-          for (int64_t k = 0; k < blocks; ++k) {
-            scratch[k] = (l.x[g0 + (k + 1) * gm] - l.x[g0 + k * gm]) / md;
-          }
+        if (!l.has_missing || l.c[g0 + blocks * gm] == l.c[g0]) {
+          for (int64_t k = 0; k < blocks; ++k) scratch[k] = l.x[g0 + (k + 1) * gm] - l.x[g0 + k * gm];
           f.stats.AddRun(scratch.data(), static_cast<size_t>(blocks));
           f.next_block += blocks;
         } else {
           const int64_t g1 = g0 + gm;
-          f.stats.AddBlock(l.c[g1] == l.c[g0], (l.x[g1] - l.x[g0]) / md);
+          f.stats.AddBlock(l.c[g1] == l.c[g0], l.x[g1] - l.x[g0]);
           ++f.next_block;
         }
       }
@@ -326,7 +329,7 @@ struct AllanAccumulator::Impl {
     const int64_t last = l.first + static_cast<int64_t>(l.size) - 1;
     for (int64_t g = l.next_up; g <= last; g += 2) {
       const int64_t i = g - l.first;
-      Append(li + 1, l.x[i] - l.x[i - 2], l.c[i] - l.c[i - 2]);
+      Append(li + 1, l.x[i] - l.x[i - 2], l.has_missing ? l.c[i] - l.c[i - 2] : 0.0);
     }
     l.next_up = last + 1 + ((last + 1) & 1);  // the next even grid index
   }
@@ -339,10 +342,9 @@ struct AllanAccumulator::Impl {
     Level& l = levels[li];
     const size_t drop = l.size - l.keep;
     const double base = l.x[drop];
-    for (size_t i = 0; i < l.keep; ++i) {
-      l.x[i] = l.x[drop + i] - base;
-      l.c[i] = l.c[drop + i];
-    }
+    for (size_t i = 0; i < l.keep; ++i) l.x[i] = l.x[drop + i] - base;
+    if (l.has_missing) std::copy(l.c.begin() + static_cast<long>(drop),
+                                 l.c.begin() + static_cast<long>(drop + l.keep), l.c.begin());
     l.first += static_cast<int64_t>(drop);
     l.size = l.keep;
   }
@@ -353,7 +355,8 @@ struct AllanAccumulator::Impl {
     if (l.size == l.x.size()) Compact(li);
     const size_t i = l.size++;
     l.x[i] = l.x[i - 1] + dx;
-    l.c[i] = l.c[i - 1] + dc;
+    l.has_missing = l.has_missing || dc != 0.0;
+    if (l.has_missing) l.c[i] = l.c[i - 1] + dc;
   }
 
   // Readings (already offset by ref) into level 0, in a tight loop between compactions.
@@ -366,10 +369,12 @@ struct AllanAccumulator::Impl {
       double* c = l.c.data() + l.size;
       double xi = x[-1];
       const double ci = c[-1];
+      if (l.has_missing) {
+        for (size_t k = 0; k < room; ++k) c[k] = ci;
+      }
       for (size_t k = 0; k < room; ++k) {
         xi += v[k];
         x[k] = xi;
-        c[k] = ci;
       }
       l.size += room;
       v += room;

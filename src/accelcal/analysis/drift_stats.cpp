@@ -54,8 +54,17 @@ void DriftTracker::Close(const Window& w, Totals* t) {
 }
 
 void DriftTracker::Add(double t_s, double value, double temp_c) {
+  AddInWindow(WindowOf(t_s), t_s, value, temp_c);
+}
+
+std::int64_t DriftTracker::WindowOf(double t_s) {
   if (std::isnan(t0_s_)) t0_s_ = t_s;
-  const auto index = static_cast<std::int64_t>(std::floor((t_s - t0_s_) / options_.window_s));
+  const double windows = (t_s - t0_s_) / options_.window_s;
+  // The conversion truncates, which is the floor from t0 on (the common case: no call to floor).
+  return static_cast<std::int64_t>(windows >= 0.0 ? windows : std::floor(windows));
+}
+
+void DriftTracker::AddInWindow(std::int64_t index, double t_s, double value, double temp_c) {
   if (index != current_.index) {
     if (Counts(current_)) Close(current_, &totals_);
     current_ = Window{};

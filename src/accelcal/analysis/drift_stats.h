@@ -45,6 +45,11 @@ class DriftTracker {
   // One reading `value` at time `t_s` (non-decreasing), with the temperature `temp_c` (NaN when
   // the record has none). Non-finite values are the caller's to refuse.
   void Add(double t_s, double value, double temp_c);
+  // Add in two steps, for a caller with trackers of the same times (one per axis): the window
+  // number of `t_s` (the first call fixes the record's start: call it for every sample, in
+  // order), computed once for all of them, then the reading into that window.
+  std::int64_t WindowOf(double t_s);
+  void AddInWindow(std::int64_t window, double t_s, double value, double temp_c);
 
   // The figures so far (the window in progress is included when it is full enough).
   DriftStats Result() const;

@@ -86,9 +86,11 @@ void RecordAnalyzer::Feed(double t_s, const Eigen::Vector3d& value, double temp_
       }
     }
   }
+  // The three trackers share the record's times: the window number is found once.
+  const std::int64_t window = drift_[0].WindowOf(t_s);
   for (int axis = 0; axis < 3; ++axis) {
     pending_[static_cast<size_t>(axis)].push_back(value[axis]);
-    drift_[static_cast<size_t>(axis)].Add(t_s, value[axis], temp_c);
+    drift_[static_cast<size_t>(axis)].AddInWindow(window, t_s, value[axis], temp_c);
   }
   if (pending_[0].size() >= kBatch) FlushAllan();
   if (!std::isnan(temp_c)) has_temperature_ = true;
