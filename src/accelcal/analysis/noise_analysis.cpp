@@ -76,6 +76,13 @@ NoiseRecordSource ReplayOf(const NoiseRecord& record) {
           }};
 }
 
+NoiseRecordSource HeldRecord(std::string label, std::string date, std::vector<Sample> samples) {
+  auto held = std::make_shared<const std::vector<Sample>>(std::move(samples));
+  return {std::move(label), std::move(date), [held](const SamplePieceSink& sink) {
+            sink(held->data(), held->size());
+          }};
+}
+
 NoiseReport AnalyzeNoise(const std::vector<NoiseRecord>& records,
                          const NoiseAnalysisOptions& options, const Calibration* calibration) {
   std::vector<NoiseRecordSource> sources;

@@ -60,6 +60,9 @@ struct NoiseRecordSource {
 
 // A source replaying `record`'s samples (which must outlive it) as one piece.
 NoiseRecordSource ReplayOf(const NoiseRecord& record);
+// A source that holds `samples` itself (a record that cannot be read again: a pipe, a capture
+// kept whole by an old session), replayed as one piece.
+NoiseRecordSource HeldRecord(std::string label, std::string date, std::vector<Sample> samples);
 
 struct NoiseAnalysisOptions {
   double band_low_fraction = 0.1;   // flat band's low edge, fraction of Nyquist (also >= 4 bins)

@@ -86,10 +86,7 @@ NoiseRecordSet NoiseRecordsOfDevice(const std::string& sessions_dir, const std::
       set.notes.push_back(fmt::format("session {} has no record yet: passed over", info.name));
       continue;
     }
-    auto samples = std::make_shared<const std::vector<Sample>>(it->capture.samples);
-    set.records.push_back({info.name, date, [samples](const SamplePieceSink& sink) {
-                             sink(samples->data(), samples->size());
-                           }});
+    set.records.push_back(HeldRecord(info.name, date, it->capture.samples));
   }
   if (set.records.empty()) ThrowNoRecords(sessions_dir, device, noise_procedure.title, set);
   return set;
@@ -102,10 +99,7 @@ NoiseRecordSource NoiseRecordFromFile(const std::string& path, const SampleForma
     // Not a regular file: it cannot be read again, so it is held.
     Recording recording = ReadRecording(path, format);
     if (summary != nullptr) *summary = recording.summary;
-    auto samples = std::make_shared<const std::vector<Sample>>(std::move(recording.samples));
-    return {path, "", [samples](const SamplePieceSink& sink) {
-              sink(samples->data(), samples->size());
-            }};
+    return HeldRecord(path, "", std::move(recording.samples));
   }
   auto passes = std::make_shared<int>(0);
   return {path, "", [path, format, summary, passes](const SamplePieceSink& sink) {
