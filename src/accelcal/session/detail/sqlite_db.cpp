@@ -9,18 +9,63 @@
 
 namespace accelcal::detail {
 
-SqliteDb::SqliteDb(const std::string& path, bool read_only) : path_(path) {
-  const int flags = read_only ? SQLITE_OPEN_READONLY : (SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE);
-  const int rc = sqlite3_open_v2(path.c_str(), &db_, flags | SQLITE_OPEN_NOMUTEX, nullptr);
+namespace {
+
+// Opens `path` with `flags`; throws accelcal::Error "session PATH: cannot open: ...".
+sqlite3* OpenConnection(const std::string& path, int flags) {
+  sqlite3* db = nullptr;
+  const int rc = sqlite3_open_v2(path.c_str(), &db, flags | SQLITE_OPEN_NOMUTEX, nullptr);
   if (rc != SQLITE_OK) {
-    const std::string message = db_ ? sqlite3_errmsg(db_) : sqlite3_errstr(rc);
-    sqlite3_close(db_);
-    db_ = nullptr;
+    const std::string message = db ? sqlite3_errmsg(db) : sqlite3_errstr(rc);
+    sqlite3_close(db);
     throw Error(fmt::format("session {}: cannot open: {}", path, message));
   }
-  sqlite3_extended_result_codes(db_, 1);
+  sqlite3_extended_result_codes(db, 1);
   // A reader may meet a writer's checkpoint; wait for it rather than fail at once.
-  sqlite3_busy_timeout(db_, 5000);
+  sqlite3_busy_timeout(db, 5000);
+  return db;
+}
+
+// The result code of a first read of the schema on `db`.
+int FirstRead(sqlite3* db) {
+  return sqlite3_exec(db, "SELECT count(*) FROM sqlite_master", nullptr, nullptr, nullptr);
+}
+
+}  // namespace
+
+SqliteDb::SqliteDb(const std::string& path, bool read_only) : path_(path) {
+  if (!read_only) {
+    db_ = OpenConnection(path, SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE);
+    return;
+  }
+  db_ = OpenConnection(path, SQLITE_OPEN_READONLY);
+  // A writer killed in the middle of a transaction in rollback-journal mode (the wizard's clean
+  // close switches the file back to one) leaves a hot journal: the committed state is in the
+  // journal, and only a connection that may write can put it back. A read-only connection
+  // cannot read the file until then ("attempt to write a readonly database"); the same for a WAL
+  // index left to rebuild. Such a file is recovered once by a connection that may write (SQLite
+  // rolls back only a journal no live writer holds), then read as asked.
+  const int rc = FirstRead(db_);
+  if ((rc & 0xff) != SQLITE_READONLY) return;  // _ROLLBACK, _RECOVERY: a read that must write
+  sqlite3_close(db_);
+  db_ = nullptr;
+  sqlite3* writer = nullptr;
+  try {
+    writer = OpenConnection(path, SQLITE_OPEN_READWRITE);
+  } catch (const Error& e) {
+    throw Error(fmt::format(
+        "session {}: a write was interrupted (the program stopped mid-write) and the file must "
+        "be put back to its last committed state, which needs write access to it and its "
+        "folder: {}; run the wizard on it once, or copy the folder where it can be written",
+        path, e.what()));
+  }
+  const int recovered = FirstRead(writer);
+  const std::string message = sqlite3_errmsg(writer);
+  sqlite3_close(writer);
+  if (recovered != SQLITE_OK)
+    throw Error(fmt::format("session {}: cannot recover from an interrupted write: {}", path,
+                            message));
+  db_ = OpenConnection(path, SQLITE_OPEN_READONLY);
 }
 
 SqliteDb::~SqliteDb() { sqlite3_close(db_); }
