@@ -375,7 +375,7 @@ TEST(ReportModel, FromSessionCapturesMeasuresNoiseAndTemperature) {
   ASSERT_TRUE(summary.IsUsable()) << summary.message;
   ReportInputs in;
   in.calibration = MakeCalibration(summary, fit.gravity, captures, "sim");
-  in.captures = captures;
+  in.captures = ReportStatsOf(captures);
   ReportModel m = BuildReportModel(in);
   EXPECT_DOUBLE_EQ(m.temp_min_c, lo);
   EXPECT_DOUBLE_EQ(m.temp_max_c, hi);
@@ -411,7 +411,7 @@ TEST(ReportModel, StagesAreTheDiagnosisResidualsNotARefit) {
   ASSERT_EQ(outcome.diagnosis.adopted_names(), std::vector<std::string>{"bias_drift"});
   ReportInputs in;
   in.calibration = outcome.MakeCalibration(true);
-  in.captures = outcome.captures;
+  in.captures = ReportStatsOf(outcome.captures);
   const ReportModel m = BuildReportModel(in);
   ASSERT_EQ(m.stages.size(), 2u);
   EXPECT_EQ(m.stages[0].name, "base model");

@@ -179,7 +179,7 @@ TEST_F(WizardRedoStoreTest, TheFitAndTheReportLeaveTheSupersededCaptureOutAndARe
   const ReportInputs in = ReportInputsFromJournal(*store, path);
   EXPECT_EQ(in.captures.size(), 9u);
   EXPECT_EQ(std::count_if(in.captures.begin(), in.captures.end(),
-                          [&](const Capture& c) { return c.id == all[3].capture.id; }),
+                          [&](const ReportCaptureStats& c) { return c.id == all[3].capture.id; }),
             0);
 }
 

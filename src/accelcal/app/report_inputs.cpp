@@ -13,7 +13,8 @@ ReportInputs ReportInputsFromJournal(const SessionJournal& journal, const std::s
   ReportInputs in;
   in.calibration = CalibrationFromJsonText(*result, source_name);
   // Superseded captures (taken again) stay in the session, out of the report.
-  for (JournalCapture& c : CurrentCaptures(journal.Captures())) in.captures.push_back(std::move(c.capture));
+  for (const JournalCapture& c : CurrentCaptures(journal.Captures()))
+    in.captures.push_back({c.capture.id, c.capture.stats()});
   for (const DamagedCapture& d : journal.DamagedCaptures()) in.damaged_captures.push_back(d.Describe());
   FillMetaFromInputs(journal.Inputs(), &in.meta);
   // (Inputs() returns a copy: hold it while its iterators are used.)

@@ -70,12 +70,12 @@ std::vector<ResidualStage> Stages(const Calibration& cal, const std::vector<Repo
   return stages;
 }
 
-ReportCapture MakeRow(const CalibrationCapture& rec, const std::vector<Capture>& captures) {
+ReportCapture MakeRow(const CalibrationCapture& rec, const std::vector<ReportCaptureStats>& captures) {
   ReportCapture row;
   row.record = rec;
-  for (const Capture& c : captures) {
-    if (c.id != rec.id || c.samples.empty()) continue;
-    const CaptureStats& stats = c.stats();
+  for (const ReportCaptureStats& c : captures) {
+    if (c.id != rec.id || c.stats.n == 0) continue;
+    const CaptureStats& stats = c.stats;
     if (stats.n > 1) row.noise_counts = std::sqrt(stats.StdCounts().squaredNorm() / 3.0);
     row.temp_min_c = stats.min_temp_c;
     row.temp_max_c = stats.max_temp_c;
@@ -177,6 +177,13 @@ std::string GravityAmbiguityNote(const GravitySpec& gravity, const std::vector<s
       "both: the local gravity (a measured value, or the place's latitude and altitude) and the "
       "turntable (its speed with a tachometer, its radius with a ruler).",
       fmt::join(found, " and "));
+}
+
+std::vector<ReportCaptureStats> ReportStatsOf(const std::vector<Capture>& captures) {
+  std::vector<ReportCaptureStats> out;
+  out.reserve(captures.size());
+  for (const Capture& c : captures) out.push_back({c.id, c.stats()});
+  return out;
 }
 
 ReportModel BuildReportModel(const ReportInputs& in) {

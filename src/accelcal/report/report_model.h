@@ -181,11 +181,21 @@ struct ReportModel {
   Certificate certificate;
 };
 
+// What the report takes from one of the session's captures: the statistics of its samples
+// (their noise, their temperature range), not the samples (at 10 kHz a session's captures are
+// tens of MB, already held by whoever builds the report).
+struct ReportCaptureStats {
+  int id = 0;
+  CaptureStats stats;
+};
+// The statistics of each of `captures` (each capture's own, computed once).
+std::vector<ReportCaptureStats> ReportStatsOf(const std::vector<Capture>& captures);
+
 struct ReportInputs {
   Calibration calibration;
   ReportMeta meta;
-  // The session's captures with their samples; empty when the report comes from a file alone.
-  std::vector<Capture> captures;
+  // The session's captures; empty when the report comes from a file alone.
+  std::vector<ReportCaptureStats> captures;
   std::optional<ProcedureLimits> limits;
   std::optional<AllanSection> allan;
   std::optional<NoiseSection> noise;

@@ -162,8 +162,8 @@ ReportInputs CalibrationSteps::Inputs(const Calibration& cal, const ReportMeta& 
   in.calibration = cal;
   in.meta = meta;
   FillMetaFromInputs(model_.inputs(), &in.meta);  // what was typed wins over the defaults
-  for (const JournalCapture& c : model_.captures())
-    if (!c.superseded()) in.captures.push_back(c.capture);
+  for (const JournalCapture& c : model_.captures())  // their statistics: no copy of the samples
+    if (!c.superseded()) in.captures.push_back({c.capture.id, c.capture.stats()});
   in.limits = procedure_.limits;
   in.equipment = equipment_;
   in.nominal_bias_counts = procedure_.nominal.bias_counts;
