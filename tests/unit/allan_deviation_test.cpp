@@ -6,6 +6,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <initializer_list>
 #include <map>
 #include <random>
 #include <optional>
@@ -325,6 +326,33 @@ void DirectSums(const std::vector<double>& y, int64_t m, long double* sum, int64
   }
 }
 
+// Each fully overlapping point (stride 1) of `curve`, from readings fed as `parts` with a gap
+// between consecutive parts, against the terms of the parts taken apart: their count, and the
+// deviation to 1e-9; its EDF positive. Returns the number of points checked.
+size_t ExpectTermsOfParts(const AllanCurve& curve,
+                          std::initializer_list<const std::vector<double>*> parts) {
+  size_t checked = 0;
+  for (const AllanPoint& p : curve.points) {
+    if (p.stride != 1) continue;  // strided factors: their terms are the strided ones
+    long double sum = 0;
+    int64_t terms = 0;
+    for (const std::vector<double>* part : parts) {
+      long double part_sum = 0;
+      int64_t part_terms = 0;
+      DirectSums(*part, p.m, &part_sum, &part_terms);
+      sum += part_sum;
+      terms += part_terms;
+    }
+    EXPECT_EQ(p.num_terms, terms) << p.m;
+    const double md = static_cast<double>(p.m);
+    EXPECT_NEAR(p.adev / std::sqrt(static_cast<double>(sum) / (2 * md * md * terms)), 1.0, 1e-9)
+        << p.m;
+    EXPECT_TRUE(std::isfinite(p.edf) && p.edf > 0) << p.m;
+    ++checked;
+  }
+  return checked;
+}
+
 AllanOptions Options(double tau0_s) {
   AllanOptions o;
   o.tau0_s = tau0_s;
@@ -447,17 +475,7 @@ TEST(AllanAccumulator, GapUsesOnlyTermsOnEitherSide) {
   EXPECT_EQ(curve.missing_samples, 777);
   ASSERT_FALSE(curve.points.empty());
   EXPECT_LE(curve.points.back().m, 50777 / 4);
-  for (const AllanPoint& p : curve.points) {
-    long double sa = 0, sb = 0;
-    int64_t ta = 0, tb = 0;
-    DirectSums(a, p.m, &sa, &ta);
-    DirectSums(b, p.m, &sb, &tb);
-    ASSERT_EQ(p.num_terms, ta + tb) << p.m;
-    const double md = static_cast<double>(p.m);
-    const double expected = std::sqrt(static_cast<double>(sa + sb) / (2 * md * md * (ta + tb)));
-    EXPECT_NEAR(p.adev / expected, 1.0, 1e-9) << p.m;
-    EXPECT_TRUE(std::isfinite(p.edf) && p.edf > 0) << p.m;
-  }
+  EXPECT_EQ(ExpectTermsOfParts(curve, {&a, &b}), curve.points.size());  // every point: stride 1
 }
 
 // A gap after the first level has been compacted several times (its buffer holds 2 x 65 536 + 1
@@ -476,22 +494,7 @@ TEST(AllanAccumulator, GapsAfterCompactionsUseOnlyTermsOnEitherSide) {
   const AllanCurve curve = acc.Curve();
   EXPECT_EQ(curve.missing_samples, 1003);
   ASSERT_FALSE(curve.points.empty());
-  for (const AllanPoint& p : curve.points) {
-    if (p.stride != 1) continue;  // strided factors: their terms are the strided ones
-    long double sum = 0;
-    int64_t terms = 0;
-    for (const std::vector<double>* part : {&a, &b, &c}) {
-      long double s = 0;
-      int64_t t = 0;
-      DirectSums(*part, p.m, &s, &t);
-      sum += s;
-      terms += t;
-    }
-    ASSERT_EQ(p.num_terms, terms) << p.m;
-    const double md = static_cast<double>(p.m);
-    EXPECT_NEAR(p.adev / std::sqrt(static_cast<double>(sum) / (2 * md * md * terms)), 1.0, 1e-9)
-        << p.m;
-  }
+  EXPECT_GT(ExpectTermsOfParts(curve, {&a, &b, &c}), 10u);
 }
 
 // Curve() may be called at any time on a growing record: each curve equals the batch

@@ -43,8 +43,8 @@ struct Lag1Sums {
 // Streaming statistics of the m-averaged series and of its first and second differences, for
 // the noise identification, kept of the block sums m z_k rather than of the averages z_k (no
 // division per block): the lag-1 autocorrelations do not depend on the scale, and the variance
-// is divided by m^2 where it is used (IdentifyNoise). Blocks arrive in order k = 0, 1, 2, ...; a difference or pair
-// involving an invalid block (one with a missing reading) is left out.
+// is divided by m^2 where it is used (IdentifyNoise). Blocks arrive in order k = 0, 1, 2, ...;
+// a difference or pair involving an invalid block (one with a missing reading) is left out.
 class AveragedSeriesStats {
  public:
   void AddBlock(bool valid, double z) {

@@ -174,10 +174,7 @@ RecordNoise AnalyzeRecordNoise(const NoiseRecordSource& source, const NoiseAnaly
   r.num_samples = f.n;
   r.rate_hz = 1.0 / median_interval.Result();
   r.duration_s = f.t_last - f.t_first;
-  const int segment_length = ChooseSegmentLength(f.n, options.welch);
-  if (segment_length == 0)
-    throw Error(fmt::format("Welch PSD: {} samples are too few (at least {})", f.n,
-                            std::max<long>(kMinSamples, options.welch.segment_length)));
+  const int segment_length = RequireSegmentLength(f.n, options.welch);
 
   Axes mean{}, mean_counts{}, mean_scaled{};
   for (std::size_t a = 0; a < 3; ++a) {

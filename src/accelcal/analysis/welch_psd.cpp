@@ -70,6 +70,15 @@ int ChooseSegmentLength(long n, const WelchOptions& options) {
   return length;
 }
 
+int RequireSegmentLength(long n, const WelchOptions& options) {
+  const int length = ChooseSegmentLength(n, options);
+  if (length == 0) {
+    throw Error(fmt::format("Welch PSD: {} samples are too few (at least {})", n,
+                            std::max(kMinSegment, options.segment_length)));
+  }
+  return length;
+}
+
 WelchAccumulator::WelchAccumulator(int segment_length) {
   if (!IsPowerOfTwo(segment_length) || segment_length < kMinSegment)
     throw Error(fmt::format("Welch PSD: the segment length must be a power of two >= {}, got {}",
@@ -128,13 +137,7 @@ PowerSpectrum WelchPsd(const std::vector<double>& x, double rate_hz, const Welch
   for (std::size_t i = 0; i < x.size(); ++i) {
     if (!std::isfinite(x[i])) throw Error(fmt::format("Welch PSD: sample {} is not finite", i));
   }
-  const long n = static_cast<long>(x.size());
-  const int length = ChooseSegmentLength(n, options);
-  if (length == 0) {
-    throw Error(fmt::format("Welch PSD: {} samples are too few (at least {})", n,
-                            std::max(kMinSegment, options.segment_length)));
-  }
-  WelchAccumulator welch(length);
+  WelchAccumulator welch(RequireSegmentLength(static_cast<long>(x.size()), options));
   for (double v : x) welch.Add(v);
   return welch.Finish(rate_hz);
 }

@@ -70,6 +70,9 @@ class WelchAccumulator {
 
 // The segment length WelchOptions would choose for n samples (0 when n < 16).
 int ChooseSegmentLength(long n, const WelchOptions& options);
+// The same, or throws accelcal::Error "Welch PSD: N samples are too few (at least L)" when the
+// n samples hold no segment.
+int RequireSegmentLength(long n, const WelchOptions& options);
 
 // Welch PSD of `x` sampled at rate_hz. Throws accelcal::Error when the options are invalid,
 // rate_hz is not positive and finite, a value is not finite, or the record is shorter than one

@@ -14,7 +14,7 @@ ReportInputs ReportInputsFromJournal(const SessionJournal& journal, const std::s
   in.calibration = CalibrationFromJsonText(*result, source_name);
   // Superseded captures (taken again) stay in the session, out of the report.
   for (const JournalCapture& c : CurrentCaptures(journal.Captures()))
-    in.captures.push_back({c.capture.id, c.capture.stats()});
+    in.captures.push_back(ReportStatsOf(c.capture));
   for (const DamagedCapture& d : journal.DamagedCaptures()) in.damaged_captures.push_back(d.Describe());
   FillMetaFromInputs(journal.Inputs(), &in.meta);
   // (Inputs() returns a copy: hold it while its iterators are used.)

@@ -179,10 +179,12 @@ std::string GravityAmbiguityNote(const GravitySpec& gravity, const std::vector<s
       fmt::join(found, " and "));
 }
 
+ReportCaptureStats ReportStatsOf(const Capture& capture) { return {capture.id, capture.stats()}; }
+
 std::vector<ReportCaptureStats> ReportStatsOf(const std::vector<Capture>& captures) {
   std::vector<ReportCaptureStats> out;
   out.reserve(captures.size());
-  for (const Capture& c : captures) out.push_back({c.id, c.stats()});
+  for (const Capture& c : captures) out.push_back(ReportStatsOf(c));
   return out;
 }
 

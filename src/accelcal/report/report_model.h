@@ -188,7 +188,8 @@ struct ReportCaptureStats {
   int id = 0;
   CaptureStats stats;
 };
-// The statistics of each of `captures` (each capture's own, computed once).
+// The statistics of `capture` (its own, computed once), and of each of `captures`.
+ReportCaptureStats ReportStatsOf(const Capture& capture);
 std::vector<ReportCaptureStats> ReportStatsOf(const std::vector<Capture>& captures);
 
 struct ReportInputs {

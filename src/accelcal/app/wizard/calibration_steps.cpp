@@ -163,7 +163,7 @@ ReportInputs CalibrationSteps::Inputs(const Calibration& cal, const ReportMeta& 
   in.meta = meta;
   FillMetaFromInputs(model_.inputs(), &in.meta);  // what was typed wins over the defaults
   for (const JournalCapture& c : model_.captures())  // their statistics: no copy of the samples
-    if (!c.superseded()) in.captures.push_back({c.capture.id, c.capture.stats()});
+    if (!c.superseded()) in.captures.push_back(ReportStatsOf(c.capture));
   in.limits = procedure_.limits;
   in.equipment = equipment_;
   in.nominal_bias_counts = procedure_.nominal.bias_counts;
