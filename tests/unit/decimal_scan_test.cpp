@@ -3,6 +3,7 @@
 // to from_chars (so errors stay worded as before).
 #include "accelcal/base/decimal_scan.h"
 
+#include <cctype>
 #include <charconv>
 #include <cstring>
 #include <random>
@@ -104,6 +105,46 @@ TEST(DecimalScan, PrefixOfTokensInsideALineAgreesWithFromChars) {
     ASSERT_TRUE(ec == std::errc() && next == token.data() + token.size()) << token;
     ASSERT_TRUE(SameBits(value, ref)) << token;
   }
+}
+
+// The short form, read without bounds from a padded buffer (decimal_scan.h): what it takes is
+// from_chars's double for the same characters, ending where the digits end; it takes exactly the
+// tokens [-]D{1,7}[.D{1,7}], whatever follows them.
+TEST(DecimalScan, ShortFormAgreesWithFromCharsAndTakesExactlyItsForm) {
+  std::mt19937_64 rng(1819);
+  std::uniform_int_distribution<int> len(0, 9), digit(0, 9), coin(0, 3), follow(0, 6);
+  const char* followers[] = {" 12", ",", "\n", "e5", ".5", "x", ""};
+  int taken = 0;
+  for (int i = 0; i < 200000; ++i) {
+    std::string token;
+    const bool negative = coin(rng) == 0;
+    if (negative) token += '-';
+    const int int_digits = len(rng);
+    for (int k = 0; k < int_digits; ++k) token += static_cast<char>('0' + digit(rng));
+    const bool point = coin(rng) != 0;
+    const int frac_digits = point ? len(rng) : 0;
+    if (point) token += '.';
+    for (int k = 0; k < frac_digits; ++k) token += static_cast<char>('0' + digit(rng));
+    std::string padded = token + followers[follow(rng)];
+    padded.resize(token.size() + kShortDecimalReach + 8, '7');  // digits after: not a bound
+    double value = 0.0;
+    const char* end = ScanShortDecimal(padded.data(), &value);
+    const bool short_form = int_digits >= 1 && int_digits <= 7 &&
+                            (!point || (frac_digits >= 1 && frac_digits <= 7));
+    // A follower that would continue the token (a digit, or a point after digits without one)
+    // makes another token: skip it.
+    const char after = padded[token.size()];
+    if (std::isdigit(static_cast<unsigned char>(after)) || (!point && after == '.')) continue;
+    ASSERT_EQ(end != nullptr, short_form) << "'" << token << "'";
+    if (end == nullptr) continue;
+    ++taken;
+    ASSERT_EQ(end, padded.data() + token.size()) << token;
+    double ref = 0.0;
+    const auto [next, ec] = std::from_chars(token.data(), token.data() + token.size(), ref);
+    ASSERT_TRUE(ec == std::errc() && next == token.data() + token.size()) << token;
+    ASSERT_TRUE(SameBits(value, ref)) << token << ": " << value << " vs " << ref;
+  }
+  EXPECT_GT(taken, 50000);
 }
 
 }  // namespace

@@ -12,10 +12,8 @@
 namespace accelcal::detail {
 namespace {
 
-constexpr int kMinPositional = 4;
-constexpr int kMaxPositional = 5;
-constexpr std::array<std::string_view, kMaxPositional> kPositionalNames = {"t", "ax", "ay", "az",
-                                                                           "temp_c"};
+constexpr std::array<std::string_view, SampleLineParser::kMaxPositional> kPositionalNames = {
+    "t", "ax", "ay", "az", "temp_c"};
 constexpr size_t kMaxQuoted = 40;  // characters of a bad token quoted in a message
 
 bool IsNumberWord(std::string_view token) {
@@ -158,6 +156,62 @@ bool SampleLineParser::ParsePlainPositional(std::string_view line, Sample* sampl
   sample->temp_c = count == kMaxPositional ? values[kSlotTemp] : kNaN;
   *t_offset = static_cast<size_t>(t_begin - begin);
   return true;
+}
+
+namespace {
+
+// Parse's separator rule (ParsePlainPositional's) after a number that is not the last: blanks,
+// then at most one comma or semicolon with blanks after it, at least one character in all.
+// Returns where the next field starts, or nullptr at `limit` or without a separator.
+const char* SkipSeparator(const char* p, const char* limit) {
+  const char* q = p;
+  while (q < limit && (*q == ' ' || *q == '\t')) ++q;
+  if (q < limit && (*q == ',' || *q == ';')) {
+    ++q;
+    while (q < limit && (*q == ' ' || *q == '\t')) ++q;
+  }
+  return q == p || q >= limit ? nullptr : q;
+}
+
+// The common case of it inline: one blank or comma, then the next number's first character.
+inline const char* NextField(const char* p, const char* limit) {
+  const char c = p[1];
+  if ((*p == ' ' || *p == ',') && (static_cast<unsigned>(c - '0') < 10u || c == '-') &&
+      p < limit)
+    return p + 1;
+  return SkipSeparator(p, limit);
+}
+
+// kFields numbers of a padded line into values; returns the character after the last one.
+template <int kFields>
+const char* ScanPaddedFields(const char* p, const char* limit, double* values) {
+  for (int field = 0; field < kFields; ++field) {
+    if (field > 0) {
+      p = NextField(p, limit);
+      if (p == nullptr) return nullptr;
+    }
+    p = ScanShortDecimal(p, &values[field]);
+    if (p == nullptr) return nullptr;
+  }
+  return p;
+}
+
+}  // namespace
+
+const char* SampleLineParser::ParsePaddedLineByNumbers(const char* line, Sample* sample) {
+  static_assert(LineShapes::kReach <= kPaddedLineReach && LineShapes::kMaxFields >= kMaxPositional);
+  // Every field starts before `limit`, so a number's reach stays within kPaddedLineReach.
+  const char* const limit = line + kPaddedLineBytes;
+  std::array<double, kMaxPositional> values;
+  const char* p = fields_per_line_ == kMaxPositional
+                      ? ScanPaddedFields<kMaxPositional>(line, limit, values.data())
+                      : ScanPaddedFields<kMinPositional>(line, limit, values.data());
+  if (p == nullptr) return nullptr;
+  if (*p == '\r') ++p;
+  if (*p != '\n') return nullptr;
+  shapes_.Learn(line, p, fields_per_line_);
+  FillPadded(values, sample);
+  return p;
 }
 
 size_t SampleLineParser::Parse(std::string_view line, long line_number, Sample* sample) {

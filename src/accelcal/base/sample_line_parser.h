@@ -24,6 +24,7 @@
 #include <vector>
 
 #include "accelcal/base/capture.h"
+#include "accelcal/base/line_shapes.h"
 #include "accelcal/base/sample_columns.h"
 
 namespace accelcal::detail {
@@ -31,6 +32,9 @@ namespace accelcal::detail {
 class SampleLineParser {
  public:
   static constexpr int kMaxColumns = 64;
+  // Fields of a positional line: t ax ay az, and temp_c or not.
+  static constexpr int kMinPositional = 4;
+  static constexpr int kMaxPositional = 5;
 
   explicit SampleLineParser(std::string source_name) : source_name_(std::move(source_name)) {}
 
@@ -51,6 +55,28 @@ class SampleLineParser {
   // field in `line` (0 without one). Throws InputError.
   size_t Parse(std::string_view line, long line_number, Sample* sample);
 
+  // The lane of a long file of plain lines (SampleReader's): true once the first data line has
+  // set the positional field count, with blanks and/or commas between fields.
+  bool TakesPaddedLines() const {
+    return plain_fast_path_ && positional_ && delimiter_ == 0 && fields_per_line_ != 0;
+  }
+  // With TakesPaddedLines(): the line at `line`, when it is the common plain line (no leading
+  // blank, fields_per_line() numbers in decimal_scan.h's short form, separated as Parse
+  // separates them, ended by LF or CR LF, at most kPaddedLineBytes before its LF), read into
+  // *sample as Parse reads it: by its shape when an earlier line had the same (line_shapes.h),
+  // else number after number. Returns its LF, or nullptr for any other line (Parse then reads
+  // it, and words what is wrong). Reads up to kPaddedLineReach bytes from `line`, whatever the
+  // line's length: the caller's buffer must hold them.
+  static constexpr long kPaddedLineBytes = 112;
+  static constexpr long kPaddedLineReach = kPaddedLineBytes + 24;
+  const char* ParsePaddedLine(const char* line, Sample* sample) {
+    std::array<double, kMaxPositional> values;
+    const char* const lf = shapes_.Read(line, fields_per_line_, values.data());
+    if (lf == nullptr) return ParsePaddedLineByNumbers(line, sample);
+    FillPadded(values, sample);
+    return lf;
+  }
+
   bool has_t_column() const { return t_slot_ >= 0 || positional_; }
   bool positional() const { return positional_; }
   // Positional: the field count of the first data line (0 before it).
@@ -65,6 +91,14 @@ class SampleLineParser {
   enum Slot : std::int8_t { kSlotT = 0, kSlotAx, kSlotAy, kSlotAz, kSlotTemp, kSlotIgnore };
 
   bool ParsePlainPositional(std::string_view line, Sample* sample, size_t* t_offset) const;
+  const char* ParsePaddedLineByNumbers(const char* line, Sample* sample);
+  // A padded line's numbers (fields_per_line() of them) into *sample.
+  void FillPadded(const std::array<double, kMaxPositional>& values, Sample* sample) const {
+    sample->t_s = values[kSlotT];
+    sample->raw_counts = {values[kSlotAx], values[kSlotAy], values[kSlotAz]};
+    if (reading_scale_ != 1.0) sample->raw_counts *= reading_scale_;
+    sample->temp_c = fields_per_line_ == kMaxPositional ? values[kSlotTemp] : kNaN;
+  }
   bool IsSeparator(char c) const;
   const char* TokenEnd(const char* p, const char* end) const;
   void ReadNumber(const char* start, const char* token_end, int field, double* value) const;
@@ -82,6 +116,7 @@ class SampleLineParser {
   char delimiter_ = 0;
   double reading_scale_ = 1.0;
   bool plain_fast_path_ = true;
+  LineShapes shapes_;          // of the padded lines read so far
   int fields_per_line_ = 0;    // positional: set by the first data line
   long first_data_line_ = 0;
   // The line being parsed (for messages).

@@ -75,6 +75,10 @@ size_t SampleReader::Consume(std::string_view text, bool final, std::vector<Samp
   const char* p = begin;
   const size_t cap = static_cast<size_t>(format_.max_line_bytes);
   while (p < end) {
+    if (LaneOpen(p, end)) {
+      p = TakePaddedLines(p, end, out);
+      if (p == end) break;
+    }
     if (skipping_) {
       const void* nl = std::memchr(p, '\n', static_cast<size_t>(end - p));
       if (nl == nullptr) return text.size();
@@ -105,6 +109,43 @@ size_t SampleReader::Consume(std::string_view text, bool final, std::vector<Samp
     ProcessLine(line, out);
   }
   return static_cast<size_t>(p - begin);
+}
+
+// The lane: the plain lines of a long file, read one after another straight from the buffer
+// (the parser finds each line's end), each handled as ProcessLine and ParseData would handle it
+// once the reading is settled: past the skipped rows and the header, the layout decided, the
+// unit hint's rows seen, t from its column. Any other line, and the last kPaddedLineReach
+// bytes of the text, go the way of every line.
+bool SampleReader::LaneOpen(const char* p, const char* end) const {
+  using Parser = detail::SampleLineParser;
+  return end - p >= Parser::kPaddedLineReach && !skipping_ && layout_decided_ &&
+         line_number_ >= std::max(lane_closed_until_line_, std::max(1L, format_.skip_rows)) &&
+         parser_.TakesPaddedLines() && !time_from_rate_ &&
+         first_magnitudes_.size() >= kHintRows &&
+         (format_.require_temp_c.empty() ||
+          parser_.fields_per_line() == Parser::kMaxPositional) &&
+         format_.max_line_bytes >= Parser::kPaddedLineReach && time_errors_.empty();
+}
+
+const char* SampleReader::TakePaddedLines(const char* p, const char* end,
+                                          std::vector<Sample>* out) {
+  constexpr long kLinesClosed = 256;  // lines the lane stays closed after it took none
+  const char* const last_start = end - detail::SampleLineParser::kPaddedLineReach;
+  const char* const first = p;
+  Sample s;
+  while (p <= last_start) {
+    const char* const eol = parser_.ParsePaddedLine(p, &s);
+    if (eol == nullptr) break;
+    std::string_view line(p, static_cast<size_t>(eol - p));
+    if (line.back() == '\r') line.remove_suffix(1);
+    ++line_number_;
+    ++data_rows_;
+    time_check_.Add(s, line, line_number_, 0, out, &time_errors_);
+    p = eol + 1;
+    if (!time_errors_.empty()) HandleTimeErrors();
+  }
+  if (p == first) lane_closed_until_line_ = line_number_ + kLinesClosed;
+  return p;
 }
 
 void SampleReader::Feed(std::string_view bytes, std::vector<Sample>* out) {

@@ -22,9 +22,13 @@
 // reads nothing more; kSkip (live streams, `apply`) counts the line as malformed, keeps the
 // latest complaint ("line 12, column 5: field 'ax': 'x' is not a number") and goes on.
 //
-// Speed: lines are parsed in place from the caller's buffer (std::from_chars, no allocation per
-// line); Consume() lets a block reader keep a partial line itself, so that nothing is copied.
-// Samples are appended to the caller's vector (reserve it).
+// Speed: lines are parsed in place from the caller's buffer (no allocation per line); Consume()
+// lets a block reader keep a partial line itself, so that nothing is copied. Once a long file's
+// reading is settled (layout, header, the first rows' unit hint), its plain lines take a lane:
+// read one after another straight from the buffer, most by the shape learned from the lines
+// before (line_shapes.h), each handled as the line-by-line path would (the same samples, time
+// checks, counts and errors; tests/unit/reader_lane_test.cpp holds the two together). Samples
+// are appended to the caller's vector (reserve it).
 #pragma once
 
 #include <functional>
@@ -98,6 +102,8 @@ class SampleReader {
 
  private:
   void ProcessLine(std::string_view line, std::vector<Sample>* out);
+  bool LaneOpen(const char* p, const char* end) const;
+  const char* TakePaddedLines(const char* p, const char* end, std::vector<Sample>* out);
   bool TakeHeaderOrDecide(std::string_view line);
   void UseHeader(std::string_view line);
   void ParseData(std::string_view line, std::vector<Sample>* out);
@@ -127,6 +133,7 @@ class SampleReader {
   bool first_fractional_ = false;         // one of them is not a whole number
   std::string partial_;    // Feed: bytes of the unterminated line so far
   bool skipping_ = false;  // inside an overlong line: drop bytes up to the next newline
+  long lane_closed_until_line_ = 0;  // the lane took no line: not before this line again
 };
 
 }  // namespace accelcal
