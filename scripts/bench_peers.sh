@@ -4,6 +4,7 @@
 #   scripts/bench_peers.sh [--accelcal PATH] [--peers DIR] [--imu-tk-acc CMD] [--allantools CMD]
 #                          [--hours H] [--rate-hz R] [--read-hours H] [--runs N]
 #                          [--allan-runs N] [--reps N] [--xsens FILE] [--workdir DIR]
+#                          [--accelcal-bench PATH]
 #
 # The peers are built from their public sources, outside the repository, by
 # scripts/bench_peers_build.sh; --peers DIR takes the two it built in DIR. They can also be any
@@ -26,7 +27,10 @@
 #   allan/axis  accelcal's three-axis figure / 3                vs  ALLANTOOLS_CMD REC R 1
 #   reading: MB/s of the first --read-hours of REC through `cat`, `wc -l`, `accelcal record
 #           --source file:` (to /dev/null), `accelcal allan` and `accelcal fit --recording` (a still
-#           record has no poses: fit reads, parses and detects, then fails as expected).
+#           record has no poses: fit reads, parses and detects, then fails as expected); and the
+#           reader alone, `ReadRecording` of that file in the benchmark BM_ReadRecordingLarge of
+#           --accelcal-bench (default build-release/bench/accelcal_bench; skipped without it),
+#           in MB/s of its CPU time (10^6 bytes; the benchmark's own M/s is MiB/s): goal >= 500.
 # REC is a still recording of --hours H (default 12) at --rate-hz R (default 1000), generated once
 # into --workdir with `accelcal record --source sim --speed 0` from scenarios/drift_demo.toml at
 # rate R and reused (12 h at 1 kHz: 43.2 M lines, 1.2 GB, 1-2 min to generate; allantools then
@@ -43,6 +47,7 @@ set -euo pipefail
 
 repo=$(cd "$(dirname "$0")/.." && pwd)
 accelcal=$repo/build-release/accelcal
+accelcal_bench=$repo/build-release/bench/accelcal_bench
 imu_tk_cmd=${IMU_TK_ACC_CMD:-}
 allantools_cmd=${ALLANTOOLS_CMD:-}
 hours=12 rate=1000 read_hours=1 runs=7 allan_runs=3 reps=10
@@ -51,7 +56,7 @@ workdir=${TMPDIR:-/tmp}/accelcal-bench-peers
 
 die() { echo "bench_peers: $*" >&2; exit 2; }
 opts=" --accelcal --peers --imu-tk-acc --allantools --hours --rate-hz --read-hours --runs --allan-runs"
-opts+=" --reps --xsens --workdir "
+opts+=" --reps --xsens --workdir --accelcal-bench "
 while (($#)); do
   if [[ $1 == -h || $1 == --help ]]; then
     sed -n '2,/^set -euo/p' "$0" | sed '$d; s/^# \{0,1\}//'
@@ -61,6 +66,7 @@ while (($#)); do
   (($# >= 2)) || die "$1 needs a value (--help)"
   case $1 in
     --accelcal) accelcal=$2 ;;
+    --accelcal-bench) accelcal_bench=$2 ;;
     --peers)
       [[ -x $2/imu_tk/imu_tk_acc ]] && imu_tk_cmd=$2/imu_tk/imu_tk_acc
       [[ -f $2/allantools/oadev_axes.py ]] && allantools_cmd="/usr/bin/python3 $2/allantools/oadev_axes.py"
@@ -184,6 +190,11 @@ for ((r = 0; r < runs; r++)); do
   measure rd_record 1 0 -- "$accelcal" record --source "file:$read_file" -q -o /dev/null
   measure rd_allan 1 0 -- "$accelcal" allan "$read_file"
   measure rd_fit 1 1 -- "$accelcal" fit --recording "$read_file"
+  if [[ -x $accelcal_bench ]]; then  # the reader alone: CPU ms of one ReadRecording, csv column 4
+    ACCELCAL_BENCH_RECORDING=$read_file "$accelcal_bench" --benchmark_filter='^BM_ReadRecordingLarge' \
+      --benchmark_format=csv 2>/dev/null |
+      awk -F, '/BM_ReadRecordingLarge/ && $5 == "ms" { print $4 / 1000, $3 / 1000, 0 }' >>"$log/rd_reader"
+  fi
 done
 
 echo
@@ -207,4 +218,13 @@ for k in cat wc record allan fit; do
   printf '  %-36s %12.0f %14.0f %12s\n' "${label[$k]}" "$(awk -v m="$mb" -v t="$cpu" 'BEGIN { print (t > 0) ? m / t : "inf" }')" \
     "$(awk -v m="$mb" -v t="$wall" 'BEGIN { print (t > 0) ? m / t : "inf" }')" "$(maxrss_mb "rd_$k")"
 done
+if [[ -s $log/rd_reader ]]; then
+  cpu=$(med rd_reader 1) wall=$(med rd_reader 2)
+  reader_mbps=$(awk -v m="$mb" -v t="$cpu" 'BEGIN { printf "%.0f", m / t }')
+  printf '  %-36s %12s %14.0f %12s  goal >= 500 MB/s: %s\n' "reader alone (BM_ReadRecordingLarge)" \
+    "$reader_mbps" "$(awk -v m="$mb" -v t="$wall" 'BEGIN { print m / t }')" "-" \
+    "$( ((reader_mbps >= 500)) && echo met || echo "not met")"
+else
+  echo "  reader alone: no benchmark binary at $accelcal_bench (--accelcal-bench PATH): skipped"
+fi
 echo "(record's figure includes writing the recording to /dev/null; per-run figures: $log)"
