@@ -103,9 +103,14 @@ void LineShapes::Learn(const char* line, const char* eol, int fields) {
   shape.lf_at = static_cast<int>(lf_at);
   shape.vectors = static_cast<int>(lf_at / 16 + 1);
   shape.checked = (std::uint64_t{2} << lf_at) - 1;
-  for (long i = 0; i <= lf_at; ++i)
-    shape.classes[static_cast<size_t>(i)] =
-        IsDigit(line[i]) ? '0' : static_cast<unsigned char>(line[i]);
+  // The classes Read compares, by the same function (bytes past the LF are never compared).
+  std::uint32_t digit_bits = 0;
+  for (int v = 0; v < shape.vectors; ++v) {
+    std::uint32_t bits = 0;
+    _mm_storeu_si128(reinterpret_cast<__m128i*>(shape.classes.data() + 16 * v),
+                     ClassesOf(line + 16 * v, &bits));
+    if (v == 0) digit_bits = bits;
+  }
   // The numbers, in a line the padded parse accepted: separators, then [-]digits[.digits].
   long i = 0;
   for (int f = 0; f < fields; ++f) {
@@ -124,8 +129,6 @@ void LineShapes::Learn(const char* line, const char* eol, int fields) {
     }
   }
   // Into the set's way learned the longer ago (the ways take turns).
-  std::uint32_t digit_bits = 0;
-  ClassesOf(line, &digit_bits);
   const int set = SetOf(digit_bits);
   const int way = next_way_[static_cast<size_t>(set)];
   next_way_[static_cast<size_t>(set)] = static_cast<std::uint8_t>((way + 1) % kWays);

@@ -29,8 +29,8 @@ class LineShapes {
   static constexpr int kMaxFields = 5;
   // A shape is learned from lines whose LF is at most this many bytes in.
   static constexpr int kMaxLineBytes = 62;
-  // Read() loads this many bytes from a line, and 8 bytes from each number's digits: the
-  // caller's buffer must hold kReach bytes past the line's start.
+  // Read() and Learn() load up to 64 bytes from a line, and Read() 8 bytes from each number's
+  // digits: the caller's buffer must hold kReach bytes past the line's start.
   static constexpr long kReach = 72;
 
   // Shapes are kept in kSets sets of kWays (a set chosen by the digits' places in the first 16

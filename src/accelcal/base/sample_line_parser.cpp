@@ -16,6 +16,19 @@ constexpr std::array<std::string_view, SampleLineParser::kMaxPositional> kPositi
     "t", "ax", "ay", "az", "temp_c"};
 constexpr size_t kMaxQuoted = 40;  // characters of a bad token quoted in a message
 
+// Parse's separator after a number: blanks, then at most one comma or semicolon with blanks
+// after it. Returns where that run ends (p itself when there is none), and in *delimited
+// whether it held the comma or semicolon.
+const char* SeparatorRunEnd(const char* p, const char* end, bool* delimited) {
+  while (p < end && (*p == ' ' || *p == '\t')) ++p;
+  *delimited = p < end && (*p == ',' || *p == ';');
+  if (*delimited) {
+    ++p;
+    while (p < end && (*p == ' ' || *p == '\t')) ++p;
+  }
+  return p;
+}
+
 bool IsNumberWord(std::string_view token) {
   std::string lower;
   for (char c : token) lower += static_cast<char>(c >= 'A' && c <= 'Z' ? c - 'A' + 'a' : c);
@@ -138,48 +151,33 @@ bool SampleLineParser::ParsePlainPositional(std::string_view line, Sample* sampl
     p = ScanDecimalPrefix(p, end, &values[static_cast<size_t>(count)]);
     if (p == nullptr) return false;
     ++count;
-    // Blanks, then at most one comma or semicolon with blanks after it; then a field or the end.
-    const char* field_end = p;
-    while (p < end && (*p == ' ' || *p == '\t')) ++p;
-    if (p < end && (*p == ',' || *p == ';')) {
-      ++p;
-      while (p < end && (*p == ' ' || *p == '\t')) ++p;
-      if (p == end) return false;  // a trailing comma: the general path words it
-    } else if (p == field_end && p < end) {
+    // A separator, then a field or the end.
+    const char* const field_end = p;
+    bool delimited = false;
+    p = SeparatorRunEnd(p, end, &delimited);
+    if (delimited && p == end) return false;  // a trailing comma: the general path words it
+    if (!delimited && p == field_end && p < end)
       return false;  // the number runs into something that is not a separator
-    }
   }
   if (count != fields_per_line_) return false;
-  sample->t_s = values[kSlotT];
-  sample->raw_counts = {values[kSlotAx], values[kSlotAy], values[kSlotAz]};
-  if (reading_scale_ != 1.0) sample->raw_counts *= reading_scale_;
-  sample->temp_c = count == kMaxPositional ? values[kSlotTemp] : kNaN;
+  FillPositional(values, sample);
   *t_offset = static_cast<size_t>(t_begin - begin);
   return true;
 }
 
 namespace {
 
-// Parse's separator rule (ParsePlainPositional's) after a number that is not the last: blanks,
-// then at most one comma or semicolon with blanks after it, at least one character in all.
-// Returns where the next field starts, or nullptr at `limit` or without a separator.
-const char* SkipSeparator(const char* p, const char* limit) {
-  const char* q = p;
-  while (q < limit && (*q == ' ' || *q == '\t')) ++q;
-  if (q < limit && (*q == ',' || *q == ';')) {
-    ++q;
-    while (q < limit && (*q == ' ' || *q == '\t')) ++q;
-  }
-  return q == p || q >= limit ? nullptr : q;
-}
-
-// The common case of it inline: one blank or comma, then the next number's first character.
+// Where the next field of a padded line starts after a number that is not the last (Parse's
+// separator, at least one character of it), or nullptr without one or at `limit`. The common
+// case first: one blank or comma, then the next number's first character.
 inline const char* NextField(const char* p, const char* limit) {
   const char c = p[1];
   if ((*p == ' ' || *p == ',') && (static_cast<unsigned>(c - '0') < 10u || c == '-') &&
       p < limit)
     return p + 1;
-  return SkipSeparator(p, limit);
+  bool delimited = false;
+  const char* const next = SeparatorRunEnd(p, limit, &delimited);
+  return next == p || next >= limit ? nullptr : next;
 }
 
 // kFields numbers of a padded line into values; returns the character after the last one.
@@ -210,7 +208,7 @@ const char* SampleLineParser::ParsePaddedLineByNumbers(const char* line, Sample*
   if (*p == '\r') ++p;
   if (*p != '\n') return nullptr;
   shapes_.Learn(line, p, fields_per_line_);
-  FillPadded(values, sample);
+  FillPositional(values, sample);
   return p;
 }
 

@@ -73,7 +73,7 @@ class SampleLineParser {
     std::array<double, kMaxPositional> values;
     const char* const lf = shapes_.Read(line, fields_per_line_, values.data());
     if (lf == nullptr) return ParsePaddedLineByNumbers(line, sample);
-    FillPadded(values, sample);
+    FillPositional(values, sample);
     return lf;
   }
 
@@ -92,8 +92,8 @@ class SampleLineParser {
 
   bool ParsePlainPositional(std::string_view line, Sample* sample, size_t* t_offset) const;
   const char* ParsePaddedLineByNumbers(const char* line, Sample* sample);
-  // A padded line's numbers (fields_per_line() of them) into *sample.
-  void FillPadded(const std::array<double, kMaxPositional>& values, Sample* sample) const {
+  // A plain positional line's numbers (fields_per_line() of them) into *sample.
+  void FillPositional(const std::array<double, kMaxPositional>& values, Sample* sample) const {
     sample->t_s = values[kSlotT];
     sample->raw_counts = {values[kSlotAx], values[kSlotAy], values[kSlotAz]};
     if (reading_scale_ != 1.0) sample->raw_counts *= reading_scale_;
