@@ -10,11 +10,12 @@
 #include <string>
 
 #include <gtest/gtest.h>
+#include "test_support.h"
 
 namespace accelcal::detail {
 namespace {
 
-bool SameBits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+using accelcal::testing::SameBits;
 
 // Scans `token`; when taken, checks it against from_chars. Returns whether it was taken.
 bool TakenAndExact(const std::string& token) {

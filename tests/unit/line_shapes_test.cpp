@@ -12,6 +12,7 @@
 #include <vector>
 
 #include <gtest/gtest.h>
+#include "test_support.h"
 
 namespace accelcal::detail {
 namespace {
@@ -46,7 +47,7 @@ std::vector<double> Reference(const std::string& line) {
   return values;
 }
 
-bool SameBits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+using accelcal::testing::SameBits;
 
 // Reads `line` by the shapes; nullopt-like: returns false when no shape is its own.
 bool ReadLine(const LineShapes& shapes, const std::string& line, int fields,

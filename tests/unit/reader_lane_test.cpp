@@ -14,6 +14,7 @@
 
 #include "accelcal/base/error.h"
 #include "accelcal/base/sample_reader.h"
+#include "test_support.h"
 
 namespace accelcal {
 namespace {
@@ -59,7 +60,7 @@ Reading Read(const std::string& text, SampleReader::OnMalformed policy, size_t p
   return r;
 }
 
-bool SameBits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+using accelcal::testing::SameBits;
 
 void ExpectSameReading(const std::string& text, SampleReader::OnMalformed policy,
                        const SampleFormat& format = {}) {

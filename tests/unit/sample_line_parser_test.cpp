@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 
 #include "accelcal/base/error.h"
+#include "test_support.h"
 
 namespace accelcal::detail {
 namespace {
@@ -38,7 +39,7 @@ Outcome ParseWith(bool fast, const std::string& first_line, const std::string& l
   return out;
 }
 
-bool SameBits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+using accelcal::testing::SameBits;
 
 void ExpectSame(const std::string& first_line, const std::string& line) {
   const Outcome fast = ParseWith(true, first_line, line);

@@ -18,6 +18,7 @@
 #include "accelcal/session/session_journal.h"
 
 #include "session_test_support.h"
+#include "test_support.h"
 
 namespace accelcal {
 namespace {
@@ -44,7 +45,7 @@ RecordChunk MakeChunk(long index, double t_shift_s = 0.0) {
   return c;
 }
 
-bool SameBits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+using accelcal::testing::SameBits;
 
 void ExpectSameSamples(const std::vector<Sample>& a, const std::vector<Sample>& b) {
   ASSERT_EQ(a.size(), b.size());

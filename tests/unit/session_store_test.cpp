@@ -50,7 +50,7 @@ Capture MakeCapture(int id, int n, unsigned seed) {
   return c;
 }
 
-bool SameBits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+using accelcal::testing::SameBits;
 
 void ExpectSameCapture(const Capture& a, const Capture& b) {
   EXPECT_EQ(a.id, b.id);

@@ -1,6 +1,7 @@
 // Helpers shared by the unit tests.
 #pragma once
 
+#include <cstring>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -21,6 +22,9 @@ InputError ExpectInputError(Fn&& fn, const std::string& input) {
   ADD_FAILURE() << "no InputError for:\n" << input;
   return InputError("", 0, 0, "");
 }
+
+// The same double, bit for bit (the sign of zero, a NaN's payload).
+inline bool SameBits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
 
 inline bool Contains(const std::string& text, const std::string& part) {
   return text.find(part) != std::string::npos;
