@@ -13,6 +13,7 @@
 #include "accelcal/io/history_json.h"
 #include "accelcal/session/session_paths.h"
 #include "cli/commands.h"
+#include "cli/output.h"
 
 namespace accelcal::cli {
 namespace {
@@ -23,13 +24,6 @@ struct HistoryCommandOptions {
   std::string format = "text";
 };
 
-// "2025-03-01T14:05:09.123Z" -> "2025-03-01 14:05:09"
-std::string ShortDate(const std::string& iso) {
-  std::string d = iso.substr(0, 19);
-  if (d.size() > 10 && d[10] == 'T') d[10] = ' ';
-  return d;
-}
-
 std::string Text(const DeviceHistory& h) {
   std::string t = fmt::format("device {}: {} calibration(s) in {}", h.device, h.entries.size(), h.dir);
   if (h.sessions_without_result > 0)
@@ -37,7 +31,7 @@ std::string Text(const DeviceHistory& h) {
   t += fmt::format("\nmoves are since the previous calibration, in units and in sigmas of the combined "
                    "1-sigma; over {} sigmas: changed\n", kChangedSigmas);
   for (const HistoryEntry& e : h.entries) {
-    t += fmt::format("\n{} UTC  session {}\n", ShortDate(e.session.created_utc), e.session.name);
+    t += fmt::format("\n{} UTC  session {}\n", ShortUtc(e.session.created_utc), e.session.name);
     t += fmt::format("  {:<9} {:>16} {:>12} {:>14} {:>9}  {}\n", "parameter", "value", "1-sigma", "moved",
                      "sigmas", "unit");
     const auto p = e.calibration.model.ToVector(), s = e.calibration.uncertainty.ToVector();

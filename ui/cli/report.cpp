@@ -8,13 +8,11 @@
 #include <fmt/core.h>
 
 #include "accelcal/base/error.h"
-#include "accelcal/app/report_inputs.h"
-#include "accelcal/app/wizard/equipment_input.h"
+#include "accelcal/app/session_report.h"
 #include "accelcal/io/allan_file.h"
 #include "accelcal/io/calibration_file.h"
 #include "accelcal/io/noise_file.h"
 #include "accelcal/io/text_file.h"
-#include "accelcal/app/report_files.h"
 #include "accelcal/io/procedure_file.h"
 #include "accelcal/report/report_html.h"
 #include "accelcal/io/report_json.h"
@@ -49,55 +47,8 @@ bool LooksLikeJson(const std::string& path) {
 ReportInputs FromSession(const std::string& input) {
   SessionOpenOptions read_only;
   read_only.read_only = true;
-  const std::string path = ResolveSessionPath(input);
-  const std::unique_ptr<SessionStore> store = SessionStore::Open(path, read_only);
-  const SessionInfo info = store->Info();
-  const std::optional<std::string> result = store->Result();
-  if (!result && !DescribeRecords(*store).empty())
-    throw Error(fmt::format("session {} has no calibration: it holds records ({}), which another "
-                            "command analyses", path, DescribeRecords(*store)));
-  if (!result)
-    throw Error(fmt::format("session {} has no calibration yet: {} captures accepted; run the "
-                            "wizard to finish it", path, info.num_captures));
-  ReportInputs in = ReportInputsFromJournal(*store, path);
-  in.meta.device = info.device;
-  in.meta.operator_name = info.operator_name;
-  in.meta.date_utc = info.updated_utc;
-  in.meta.session_name = info.name;
-  in.meta.session_path = info.path;
-  in.meta.procedure = info.procedure;
-  in.meta.source = info.source;
-  return in;
-}
-
-// The procedure's equipment as the session's welcome edited it (the same list the wizard's
-// report showed), and its nominal zero-g level.
-void SetEquipment(const Procedure& p, ReportInputs* in) {
-  const EquipmentAnswer edited = ApplyEquipmentAnswer(in->equipment_answer, p.equipment);
-  in->equipment = edited.ok() ? edited.items : p.equipment;
-  in->nominal_bias_counts = p.nominal.bias_counts;
-}
-
-void AddLimits(const ReportCommandOptions& o, ReportInputs* in) {
-  if (!o.procedure_path.empty()) {
-    const Procedure p = LoadProcedure(o.procedure_path);
-    in->limits = p.limits;
-    SetEquipment(p, in);
-    if (in->meta.procedure.empty()) in->meta.procedure = p.title;
-    return;
-  }
-  // The session names its procedure by title: its limits are the default procedure's only when
-  // that is the one it ran (a calibration file alone states no procedure).
-  if (in->meta.procedure.empty()) return;
-  try {
-    const Procedure p = LoadProcedure(ShippedProcedurePath("seed_calibration.toml"));
-    if (p.title == in->meta.procedure) {
-      in->limits = p.limits;
-      SetEquipment(p, in);
-    }
-  } catch (const Error&) {
-    // No default procedure installed: the report says no limits were stated.
-  }
+  const std::unique_ptr<SessionStore> store = SessionStore::Open(ResolveSessionPath(input), read_only);
+  return ReportInputsOfSession(*store, ShippedProcedurePath("seed_calibration.toml"));
 }
 
 void RunReport(const ReportCommandOptions& o) {
@@ -114,7 +65,7 @@ void RunReport(const ReportCommandOptions& o) {
     if (!o.output_path.empty()) std::cout << fmt::format("calibration written to {}\n", o.output_path);
     return;
   }
-  AddLimits(o, &in);
+  if (!o.procedure_path.empty()) ApplyProcedureToReport(LoadProcedure(o.procedure_path), &in);
   if (!o.allan_path.empty()) in.allan = ReadAllanFile(o.allan_path);
   if (!o.noise_path.empty()) in.noise = ReadNoiseFile(o.noise_path);
   const ReportModel model = BuildReportModel(in);

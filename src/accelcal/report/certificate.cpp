@@ -153,7 +153,9 @@ std::string CertificateNumber(const std::string& session_name, const SensorModel
 
 Certificate MakeCertificate(const ReportInputs& in, const ReportModel& m) {
   Certificate c;
-  c.number = CertificateNumber(m.meta.session_name, in.calibration.model);
+  // The lab's number once the session is published (docs/lab.md), else the session's own.
+  c.number = m.meta.certificate_number.empty() ? CertificateNumber(m.meta.session_name, in.calibration.model)
+                                               : m.meta.certificate_number;
   c.simulated = m.meta.source.rfind("sim", 0) == 0;
   c.method = Method(in, m);
   c.equipment = in.equipment;

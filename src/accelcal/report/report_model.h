@@ -37,6 +37,9 @@ struct ReportMeta {
   std::string session_path;
   std::string procedure;      // the procedure's title
   std::string source;         // the sample source ("sim", "serial:/dev/ttyUSB0")
+  // The lab's certificate number (assigned when the session was published to the lab's store,
+  // docs/lab.md); empty: the certificate carries the session's own (certificate.h).
+  std::string certificate_number;
 };
 
 // One axis of an Allan-deviation analysis (the shape of allan.json, README "Reports").
