@@ -2,17 +2,18 @@
 # Checks the core's layering from the sources (ARCHITECTURE.md), as the build does for most of
 # it: the build cannot include what a target does not link, but it cannot see the rest.
 #   1. src/accelcal/<layer>/ includes only its own layer and the layers below it:
-#        base -> calibration -> acquire -> analysis -> session -> report -> io -> app
-#      (so the include graph between layers has no cycle and no upward edge);
+#        base -> calibration -> acquire -> analysis -> session -> report -> io -> lab -> app
+#      (so the include graph between layers has no cycle and no upward edge; lab links report,
+#      not io, which the build enforces);
 #   2. a layer's detail/ headers are private: no other layer and nothing in ui/ includes them
 #      (tests may look inside);
 #   3. third-party headers stay in their layer: nlohmann-json and toml++ in io, SQLite in
-#      session, CLI11 and curses in ui/ only.
+#      session, libpq in lab, CLI11 and curses in ui/ only.
 # Prints every violation as FILE:LINE: what; exit status 1 when there is one.
 set -euo pipefail
 cd "${1:-$(dirname "$0")/..}"
 
-layers=(base calibration acquire analysis session report io app)
+layers=(base calibration acquire analysis session report io lab app)
 declare -A rank
 for i in "${!layers[@]}"; do rank[${layers[$i]}]=$i; done
 
@@ -44,6 +45,8 @@ for layer in "${layers[@]}"; do
         [ "$layer" = io ] || report "$file:$line: $header outside io (JSON and TOML live at the file edge)" ;;
       sqlite3.h)
         [ "$layer" = session ] || report "$file:$line: sqlite3.h outside session" ;;
+      libpq-fe.h|libpq/*|postgresql/*|pqxx/*)
+        [ "$layer" = lab ] || report "$file:$line: $header outside lab (PostgreSQL lives in the lab store)" ;;
       CLI/*|curses.h|ncurses.h|ncurses/*|term.h)
         report "$file:$line: $header in the core (terminal and command-line code lives in ui/)" ;;
     esac
@@ -58,6 +61,7 @@ while IFS=: read -r file line header; do
   case "$header" in
     accelcal/*/detail/*) report "$file:$line: ui includes $header, a private header of the core" ;;
     nlohmann/*|toml++/*|sqlite3.h) report "$file:$line: ui includes $header (the core's io and session own it)" ;;
+    libpq-fe.h|libpq/*|postgresql/*|pqxx/*) report "$file:$line: ui includes $header (the core's lab owns it)" ;;
   esac
 done < <(includes ui)
 

@@ -9,10 +9,13 @@ packages=(
   g++ cmake make pkg-config tmux jq
   libeigen3-dev libnlopt-cxx-dev libncurses-dev libsqlite3-dev libtomlplusplus-dev
   nlohmann-json3-dev libcli11-dev libfmt-dev libgtest-dev libbenchmark-dev
+  libpq-dev
 )
 # Only the tests need these: headless Chromium renders the HTML report and prints it to PDF,
-# poppler-utils reads the PDF's pages back (tests/e2e/report_html.sh).
-test_packages=(chromium poppler-utils)
+# poppler-utils reads the PDF's pages back (tests/e2e/report_html.sh); the PostgreSQL server
+# runs the lab store's tests (tests/lab/pg_server.sh starts a private one, as the user postgres
+# the package creates when the tests run as root).
+test_packages=(chromium poppler-utils postgresql)
 [ "${1:-}" = "--no-test" ] || packages+=("${test_packages[@]}")
 
 missing=()

@@ -27,4 +27,6 @@ plant ui/cli/fit.cpp '#include "accelcal/io/detail/json_values.h"' 'a private he
 plant src/accelcal/report/report_model.cpp '#include <nlohmann/json.hpp>' 'outside io'
 plant src/accelcal/analysis/welch_psd.cpp '#include <ncurses.h>' 'in the core'
 plant src/accelcal/session/procedure.cpp '#include "accelcal/nowhere.h"' 'in no layer'
+plant src/accelcal/app/device_history.cpp '#include <libpq-fe.h>' 'outside lab'
+plant src/accelcal/io/text_file.cpp '#include "accelcal/lab/lab_store.h"' 'from the higher layer lab'
 echo "layers_check: every planted violation refused"
