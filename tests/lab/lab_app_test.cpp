@@ -1,0 +1,192 @@
+// Publishing real sessions (made by accelcal_make_session, the tests' session generator): the
+// number written back into the session and onto the certificate beside it, the backlog, a lost
+// write-back repaired by the next publish; the equipment check the wizard's welcome makes.
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <sqlite3.h>
+
+#include "accelcal/app/lab_equipment_check.h"
+#include "accelcal/app/lab_publish.h"
+#include "accelcal/app/report_files.h"
+#include "accelcal/app/session_report.h"
+#include "accelcal/report/report_html.h"
+#include "accelcal/report/report_text.h"
+#include "lab_test_support.h"
+
+namespace accelcal {
+namespace {
+
+namespace fs = std::filesystem;
+using testing::kManager;
+using testing::ScopedEnv;
+using Kind = SessionPublishOutcome::Kind;
+
+const std::string kProcedure = std::string(ACCELCAL_SOURCE_DIR) + "/procedures/seed_calibration.toml";
+
+std::string ReadFile(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream out;
+  out << in.rdbuf();
+  return out.str();
+}
+
+class LabApp : public testing::LabDatabaseTest {
+ protected:
+  void SetUp() override {
+    LabDatabaseTest::SetUp();
+    Migrate();
+    dir_ = fs::temp_directory_path() / fmt::format("accelcal-lab-app-{}", database());
+    fs::create_directories(dir_);
+  }
+  void TearDown() override {
+    fs::remove_all(dir_);
+    LabDatabaseTest::TearDown();
+  }
+
+  // A finished session of `device` (or one without a calibration).
+  std::string MakeSession(const std::string& name, const std::string& device, bool finished = true) {
+    const std::string path = (dir_ / (name + ".db")).string();
+    const std::string command = fmt::format("'{}' '{}' --device '{}' {}", ACCELCAL_MAKE_SESSION, path, device,
+                                            finished ? "" : "--no-result");
+    EXPECT_EQ(std::system(command.c_str()), 0) << command;
+    return path;
+  }
+
+  static std::unique_ptr<SessionStore> Writer(const std::string& path) {
+    SessionOpenOptions o;
+    o.create_if_missing = false;
+    return SessionStore::Open(path, o);
+  }
+
+  fs::path dir_;
+};
+
+TEST_F(LabApp, APublishedSessionHoldsTheLabsNumberAndItsCertificateBesideIt) {
+  const std::string path = MakeSession("s1", "SIM-0001");
+  const auto lab = As("bench_1");
+  const std::vector<SessionPublishOutcome> out = PublishSessionFiles(*lab, {path}, kProcedure);
+  ASSERT_EQ(out.size(), 1u);
+  ASSERT_EQ(out[0].kind, Kind::kPublished) << out[0].message;
+  ASSERT_EQ(out[0].certificate_numbers, std::vector<std::string>{"LAB-000001"});
+  // Written back into the session, by the session's own API.
+  auto store = Writer(path);
+  ASSERT_EQ(store->LabCertificates().size(), 1u);
+  EXPECT_EQ(store->LabCertificates()[0].certificate_number, "LAB-000001");
+  EXPECT_EQ(store->LabCertificates()[0].lab, lab->Identity());
+  EXPECT_EQ(store->Info().num_lab_certificates, 1);
+  // The certificate beside the session is the lab's stored document, number on it.
+  const std::vector<LabDocument> stored = lab->CertificateDocuments("LAB-000001");
+  ASSERT_EQ(stored.size(), 2u);
+  EXPECT_EQ(stored[0].media_type, "text/html");
+  EXPECT_EQ(ReadFile(ReportPathFor(path, "html")), stored[0].bytes);
+  EXPECT_EQ(ReadFile(ReportPathFor(path, "txt")), stored[1].bytes);
+  EXPECT_NE(stored[0].bytes.find("LAB-000001"), std::string::npos);
+  EXPECT_EQ(stored[0].bytes.find("ACC-s1-"), std::string::npos) << "the session's own number is gone";
+  // Rendered again from the session (as `accelcal report` does), the certificate is the same bytes.
+  const ReportModel again = BuildReportModel(ReportInputsOfSession(*store, kProcedure));
+  EXPECT_EQ(again.certificate.number, "LAB-000001");
+  EXPECT_EQ(RenderReportHtml(again), stored[0].bytes);
+  EXPECT_EQ(RenderReportText(again), stored[1].bytes);
+  // The register knows the session by its UUID, the bench by its role.
+  const LabHistory h = lab->History("SIM-0001");
+  ASSERT_EQ(h.entries.size(), 1u);
+  EXPECT_EQ(h.entries[0].session_uuid, store->Info().uuid);
+  EXPECT_EQ(h.entries[0].session, "s1");
+  EXPECT_EQ(h.entries[0].bench, "bench_1");
+  EXPECT_EQ(h.entries[0].verdict, std::string(VerdictToString(again.verdict)));
+}
+
+TEST_F(LabApp, TheBacklogIsTheFinishedUnpublishedSessions) {
+  const std::string a = MakeSession("20260101T000000Z", "SIM-0001");
+  MakeSession("20260102T000000Z", "SIM-0002", /*finished=*/false);
+  const std::string c = MakeSession("20260103T000000Z", "SIM-0003");
+  EXPECT_EQ(UnpublishedSessions(dir_.string()), (std::vector<std::string>{a, c}));
+  const auto lab = As("bench_1");
+  PublishSessionFiles(*lab, {a}, kProcedure);
+  EXPECT_EQ(UnpublishedSessions(dir_.string()), std::vector<std::string>{c});
+  PublishSessionFiles(*lab, UnpublishedSessions(dir_.string()), kProcedure);
+  EXPECT_TRUE(UnpublishedSessions(dir_.string()).empty());
+}
+
+// The store committed, the publisher died before writing the number back: the session is in the
+// backlog still, and the next publish writes the lab's number (the same) without a second row.
+TEST_F(LabApp, ALostWriteBackIsMadeByTheNextPublish) {
+  const std::string path = MakeSession("s1", "SIM-0001");
+  const auto lab = As("bench_1");
+  PublishSessionFiles(*lab, {path}, kProcedure);
+  sqlite3* db = nullptr;
+  ASSERT_EQ(sqlite3_open(path.c_str(), &db), SQLITE_OK);
+  ASSERT_EQ(sqlite3_exec(db, "DELETE FROM lab_certificates", nullptr, nullptr, nullptr), SQLITE_OK);
+  sqlite3_close(db);
+  fs::remove(ReportPathFor(path, "html"));
+  ASSERT_EQ(UnpublishedSessions(dir_.string()), std::vector<std::string>{path});
+  const std::vector<SessionPublishOutcome> out = PublishSessionFiles(*lab, UnpublishedSessions(dir_.string()), kProcedure);
+  ASSERT_EQ(out.at(0).kind, Kind::kAlreadyPublished) << out[0].message;
+  EXPECT_EQ(out[0].certificate_numbers, std::vector<std::string>{"LAB-000001"});
+  EXPECT_EQ(Writer(path)->LabCertificates().at(0).certificate_number, "LAB-000001");
+  EXPECT_EQ(ReadFile(ReportPathFor(path, "html")), lab->CertificateDocuments("LAB-000001").at(0).bytes);
+  EXPECT_EQ(lab->History("SIM-0001").entries.size(), 1u);
+}
+
+TEST_F(LabApp, WhatCannotBePublishedSaysWhy) {
+  const std::string open = MakeSession("open", "SIM-0001", /*finished=*/false);
+  const std::string missing = (dir_ / "missing.db").string();
+  const auto lab = As("bench_1");
+  const std::vector<SessionPublishOutcome> out = PublishSessionFiles(*lab, {open, missing}, kProcedure);
+  EXPECT_EQ(out.at(0).kind, Kind::kNotReady);
+  EXPECT_NE(DescribeOutcome(out[0]).find("not finished"), std::string::npos) << DescribeOutcome(out[0]);
+  EXPECT_EQ(out.at(1).kind, Kind::kFailed);
+  EXPECT_NE(out[1].message.find("no session"), std::string::npos) << out[1].message;
+}
+
+TEST_F(LabApp, TheEquipmentCheckWarnsOfExpiredSoonAndUnknownItems) {
+  const auto manager = As(kManager);
+  manager->RegisterEquipment({"TT-01", "turntable", "Turntable A", "C-100", "2020-01-01", "2021-01-01", "metro lab"});
+  manager->RegisterEquipment({"RUL-01", "ruler", "Steel ruler", "C-200", "2026-01-01", "2099-01-01", ""});
+  manager->RegisterEquipment({"LVL-01", "level", "Level", "C-300", "2020-01-01", "2020-06-01", ""});
+  // A level recalibrated: its new certificate counts; the old one stays on record.
+  manager->RegisterEquipment({"LVL-01", "level", "Level", "C-301", "2026-01-01", "2099-06-01", ""});
+  const auto bench = As("bench_1");
+  const EquipmentCheck check = CheckEquipment(*bench, {"TT-01", "RUL-01", "LVL-01", "PRISM-9", ""});
+  ASSERT_EQ(check.items.size(), 4u);
+  ASSERT_EQ(check.warnings.size(), 2u);
+  EXPECT_NE(check.warnings[0].find("turntable TT-01: its calibration expired on 2021-01-01 (certificate C-100)"),
+            std::string::npos) << check.warnings[0];
+  EXPECT_NE(check.warnings[1].find("PRISM-9: not in the lab's equipment register"), std::string::npos) << check.warnings[1];
+  EXPECT_TRUE(check.any_expired_or_unknown);
+  EXPECT_EQ(check.items[2].certificate_ref, "C-301");
+  // Running out soon is a warning, not a failure.
+  const LabDueList due = bench->Due(30);
+  bool turntable_due = false;
+  for (const LabDueItem& i : due.items) turntable_due |= i.id == "TT-01" && i.days_left && *i.days_left < 0;
+  EXPECT_TRUE(turntable_due);
+  // Registering the same certificate again changes nothing; with other dates it is refused.
+  EXPECT_NO_THROW(manager->RegisterEquipment({"RUL-01", "ruler", "Steel ruler", "C-200", "2026-01-01", "2099-01-01", ""}));
+  EXPECT_THROW(manager->RegisterEquipment({"RUL-01", "ruler", "Steel ruler", "C-200", "2026-01-01", "2098-01-01", ""}), Error);
+}
+
+TEST_F(LabApp, TheWelcomeChecksOnlyWhenTheBenchIsPointedAtALab) {
+  std::vector<EquipmentItem> items(1);
+  items[0].identification = "TT-01";
+  {
+    // No lab: nothing is checked, nothing waits.
+    ScopedEnv host("PGHOST", ""), db("PGDATABASE", "");
+    EXPECT_TRUE(WelcomeEquipmentWarnings(items).empty());
+  }
+  {
+    // A lab that cannot be reached: one warning, never an error.
+    ScopedEnv host("PGHOST", "127.0.0.1"), port("PGPORT", "1");
+    const std::vector<std::string> w = WelcomeEquipmentWarnings(items);
+    ASSERT_EQ(w.size(), 1u);
+    EXPECT_NE(w[0].find("could not be checked"), std::string::npos) << w[0];
+  }
+  ScopedEnv user("PGUSER", "bench_1");
+  const std::vector<std::string> w = WelcomeEquipmentWarnings(items);
+  ASSERT_EQ(w.size(), 1u);
+  EXPECT_NE(w[0].find("TT-01: not in the lab's equipment register"), std::string::npos) << w[0];
+}
+
+}  // namespace
+}  // namespace accelcal
