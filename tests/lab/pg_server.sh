@@ -12,7 +12,7 @@
 #   lab_admin owns the database `lab` and has CREATEROLE, as a lab's administrator would, and
 #   CREATEDB (the C++ tests make a database per test); not a
 #   superuser: a superuser bypasses row-level security, and the tests check it);
-#   pg_as ROLE CMD...    runs CMD with PGUSER=ROLE; pg_sql SQL runs SQL as the superuser;
+#   pg_sql SQL           runs SQL as the superuser, rows unaligned;
 #   pg_stop / pg_restart stop and start the same cluster (a lab server going away and back);
 #   PG_TCP_PORT          the server's TCP port (password authentication, scram-sha-256).
 # Socket connections are trusted (any role by name: what each role may do is the point of the
@@ -66,7 +66,6 @@ pg_start() {
 }
 
 pg_sql() { PGUSER=postgres "$PG_BIN/psql" -q -X -v ON_ERROR_STOP=1 -At -c "$1"; }
-pg_as() { local role=$1; shift; PGUSER=$role "$@"; }
 
 pg_stop() { pg_run "$PG_BIN/pg_ctl" -D "$PG_DIR/data" -w -m fast stop >/dev/null; }
 pg_restart() {
@@ -79,5 +78,4 @@ pg_cleanup() {
     [ -f "$PG_DIR/data/postmaster.pid" ] && pg_run "$PG_BIN/pg_ctl" -D "$PG_DIR/data" -w -m immediate stop >/dev/null 2>&1
     rm -rf "$PG_DIR"
   fi
-  [ -z "${PG_EXTRA_CLEANUP:-}" ] || eval "$PG_EXTRA_CLEANUP"
 }
