@@ -8,22 +8,12 @@
 # Called by ctest as: e2e_killed_publisher.sh ACCELCAL SOURCE_DIR
 set -euo pipefail
 accelcal=$1 src=$2
-make_session=$(dirname "$accelcal")/accelcal_make_session
-source "$src/tests/lab/pg_server.sh"
-fail() { echo "FAIL: $*" >&2; exit 1; }
-pg_start
-work=$PG_DIR/work
+source "$src/tests/lab/support.sh"
 dir=$work/accelcal/sessions
 mkdir -p "$dir"
-sql() { pg_sql "$1" | sed 's/^ *//'; }
-# The lab's number on a session's report ("" when it has none).
-lab_number() {
-  "$accelcal" report "$1" >"$work/report.txt"
-  sed -n 's/.*Certificate No\.[ :]*\(LAB-[0-9]*\).*/\1/p' "$work/report.txt" | sed -n 1p
-}
 
 "$accelcal" lab migrate >/dev/null
-PGUSER=lab_admin "$PG_BIN/psql" -q -X -v ON_ERROR_STOP=1 -c "CREATE ROLE bench_k LOGIN IN ROLE accelcal_bench"
+as_admin "CREATE ROLE bench_k LOGIN IN ROLE accelcal_bench"
 export PGUSER=bench_k XDG_DATA_HOME=$work
 sessions=16
 for i in $(seq -w 1 $sessions); do

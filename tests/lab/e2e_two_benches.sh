@@ -11,12 +11,7 @@
 # Called by ctest as: e2e_two_benches.sh ACCELCAL SOURCE_DIR
 set -euo pipefail
 accelcal=$1 src=$2
-make_session=$(dirname "$accelcal")/accelcal_make_session
-source "$src/tests/lab/pg_server.sh"
-fail() { echo "FAIL: $*" >&2; exit 1; }
-pg_start
-work=$PG_DIR/work
-mkdir -p "$work"
+source "$src/tests/lab/support.sh"
 
 # expect CODE CMD...: runs CMD, checks its exit status, keeps stdout/stderr in $work/out, err.
 expect() {
@@ -24,21 +19,14 @@ expect() {
   set +e; "$@" >"$work/out" 2>"$work/err"; local got=$?; set -e
   [ "$got" -eq "$want" ] || { cat "$work/out" "$work/err" >&2; fail "'$*' exited $got, expected $want"; }
 }
-sql() { pg_sql "$1" | sed 's/^ *//'; }
-# The lab's number on a session's report ("" when it has none).
-lab_number() {
-  "$accelcal" report "$1" >"$work/report.txt"
-  sed -n 's/.*Certificate No\.[ :]*\(LAB-[0-9]*\).*/\1/p' "$work/report.txt" | sed -n 1p
-}
 
 # The lab: its register made by its administrator (lab_admin, the database's owner), two
 # benches and a lab manager.
 expect 0 "$accelcal" lab migrate
 grep -q "the register is at version" "$work/out" || fail "migrate said: $(cat "$work/out")"
-PGUSER=lab_admin "$PG_BIN/psql" -q -X -v ON_ERROR_STOP=1 \
-  -c "CREATE ROLE bench_a LOGIN IN ROLE accelcal_bench" \
-  -c "CREATE ROLE bench_b LOGIN IN ROLE accelcal_bench PASSWORD 'b-secret-7'" \
-  -c "CREATE ROLE mgr LOGIN IN ROLE accelcal_manager"
+as_admin "CREATE ROLE bench_a LOGIN IN ROLE accelcal_bench" \
+  "CREATE ROLE bench_b LOGIN IN ROLE accelcal_bench PASSWORD 'b-secret-7'" \
+  "CREATE ROLE mgr LOGIN IN ROLE accelcal_manager"
 
 # Bench B's settings: a service file naming the lab (and an unreachable one, for its time
 # offline) and its own password file (libpq requires 0600).
