@@ -130,6 +130,49 @@ TEST_F(LabApp, ALostWriteBackIsMadeByTheNextPublish) {
   EXPECT_EQ(lab->History("SIM-0001").entries.size(), 1u);
 }
 
+// A lab's number is never replaced: a session another lab's register numbered is not published
+// to this one (which would then hold a session that does not carry its number).
+TEST_F(LabApp, ASessionNumberedByOneLabIsNotPublishedToAnother) {
+  const std::string path = MakeSession("s1", "SIM-0001");
+  PublishSessionFiles(*As("bench_1"), {path}, kProcedure);
+  const std::string other = database() + "_other";
+  RawAs(testing::kAdmin)->ExecScript("CREATE DATABASE " + other);
+  {
+    ScopedEnv db("PGDATABASE", other);
+    Migrate();
+    const std::vector<SessionPublishOutcome> out = PublishSessionFiles(*As("bench_1"), {path}, kProcedure);
+    EXPECT_EQ(out.at(0).kind, Kind::kNotReady);
+    EXPECT_NE(out[0].message.find("another lab's register, as certificate LAB-000001"), std::string::npos)
+        << out[0].message;
+    EXPECT_EQ(RawAs(testing::kAdmin)->Exec("SELECT count(*) FROM accelcal.sessions").Int(0, 0), 0);
+  }
+  RawAs(testing::kAdmin)->ExecScript("DROP DATABASE " + other + " WITH (FORCE)");
+}
+
+// The wizard's end: publish when the bench is pointed at a lab; wait, never fail, when the lab
+// cannot be reached; nothing at all without a lab.
+TEST_F(LabApp, TheWizardsEndPublishesOnlyWhenTheBenchHasALab) {
+  const std::string path = MakeSession("s1", "SIM-0001");
+  auto store = Writer(path);
+  {
+    ScopedEnv host("PGHOST", ""), db("PGDATABASE", "");
+    EXPECT_FALSE(PublishIfLabConfigured(*store, kProcedure).has_value());
+  }
+  {
+    ScopedEnv host("PGHOST", "127.0.0.1"), port("PGPORT", "1");
+    const std::optional<SessionPublishOutcome> waiting = PublishIfLabConfigured(*store, kProcedure);
+    ASSERT_TRUE(waiting.has_value());
+    EXPECT_EQ(waiting->kind, Kind::kFailed);
+    EXPECT_TRUE(waiting->lab_unreachable);
+    EXPECT_NE(waiting->message.find("it waits for `accelcal lab publish`"), std::string::npos) << waiting->message;
+  }
+  ScopedEnv user("PGUSER", "bench_1");
+  const std::optional<SessionPublishOutcome> published = PublishIfLabConfigured(*store, kProcedure);
+  ASSERT_TRUE(published.has_value());
+  EXPECT_EQ(published->kind, Kind::kPublished) << published->message;
+  EXPECT_EQ(store->LabCertificates().at(0).certificate_number, "LAB-000001");
+}
+
 TEST_F(LabApp, WhatCannotBePublishedSaysWhy) {
   const std::string open = MakeSession("open", "SIM-0001", /*finished=*/false);
   const std::string missing = (dir_ / "missing.db").string();

@@ -94,6 +94,10 @@ SessionPublishOutcome PublishSession(LabStore& lab, SessionStore& store, const s
     if (!calibration_json) return NotReady(out, "no calibration: nothing to certify");
     if (info.device.empty())
       return NotReady(out, "no device serial: the lab's register is by serial (the wizard's welcome asks it)");
+    for (const LabCertificateMark& mark : store.LabCertificates())
+      if (mark.lab.rfind("lab " + lab.LabId() + " ", 0) != 0)
+        return NotReady(out, fmt::format("already published to another lab's register, as certificate {} ({})",
+                                         mark.certificate_number, mark.lab));
     ReportInputs in = ReportInputsOfSession(store, default_procedure_path);
     in.meta.certificate_number.clear();  // the lab's number goes on by the renderer
     const ReportModel model = BuildReportModel(in);

@@ -63,8 +63,11 @@ class LabStore {
   LabStore(const LabStore&) = delete;
   LabStore& operator=(const LabStore&) = delete;
 
-  // "lab 7c9e...e1 (database lab on db.lab.example:5432)": which store, for the bench's record.
+  // "lab 7c9e...e1 (database lab on db.lab.example:5432 as bench_3)": which store, for the
+  // bench's record; it starts with "lab " + LabId().
   std::string Identity() const;
+  // The register's own id (a UUID made when it was created), the same from every bench.
+  const std::string& LabId() const { return lab_id_; }
   const std::string& Role() const { return role_; }  // the role connected as (current_user)
   // The roles it is a member of among accelcal_bench and accelcal_manager.
   std::vector<std::string> LabRoles() const;
