@@ -3,8 +3,9 @@
 # and again: the store never holds part of a session (every session row has its sensor,
 # calibration, certificate and documents), the session files are never marked with a number the
 # store does not hold, and the next publish finishes the backlog with no session twice.
-# A kill is proven to have landed inside a transaction by the sequence: a number drawn and never
-# used (the drawing transaction died with the process).
+# Kills are aimed (the moment the publisher's transaction has drawn a number, seen from the
+# server) and at random instants; a kill inside a transaction is proven by the sequence: a number
+# drawn and never used (the drawing transaction died with the process).
 # Called by ctest as: e2e_killed_publisher.sh ACCELCAL SOURCE_DIR
 set -euo pipefail
 accelcal=$1 src=$2
@@ -33,14 +34,39 @@ whole() {  # nothing partial in the store
   echo "$s"
 }
 
+# Waits (server side, as the superuser who sees every backend's last statement) until the
+# publisher's connection sits in a transaction whose last statement drew a certificate number:
+# the certificate is being rendered, the session's rows are written but not committed. Fails when
+# the publisher's connection closes first.
+wait_inside_transaction() {
+  pg_sql "SET statement_timeout = '60s'; DO \$\$
+    DECLARE seen boolean := false; started timestamptz := clock_timestamp();
+    BEGIN
+      LOOP
+        PERFORM pg_stat_clear_snapshot();
+        IF EXISTS (SELECT 1 FROM pg_stat_activity WHERE usename = 'bench_k' AND state = 'idle in transaction'
+                   AND query LIKE '%draw_certificate_number%') THEN RETURN; END IF;
+        IF EXISTS (SELECT 1 FROM pg_stat_activity WHERE usename = 'bench_k') THEN seen := true;
+        ELSIF seen OR clock_timestamp() - started > interval '30 s' THEN RAISE EXCEPTION 'not caught'; END IF;
+        PERFORM pg_sleep(0.001);
+      END LOOP;
+    END \$\$" >/dev/null 2>&1
+}
+
+# Odd attempts kill the publisher the moment it is inside a transaction (after drawing a number);
+# even ones at a random instant (inside a transaction, between sessions, while writing a number
+# back into a session file).
 cut_inside=0
-for attempt in $(seq 1 12); do
+for attempt in $(seq 1 8); do
   before=$(whole)
   [ "$before" -lt "$sessions" ] || break
   "$accelcal" lab publish >"$work/publish.out" 2>&1 &
   pid=$!
-  # A moment into the publishing (each session takes some tens of ms).
-  sleep "0.$((RANDOM % 6 + 2))"
+  if [ $((attempt % 2)) -eq 1 ]; then
+    wait_inside_transaction || true
+  else
+    sleep "0.$((RANDOM % 5))$((RANDOM % 10))"
+  fi
   kill -9 "$pid" 2>/dev/null || true
   wait "$pid" 2>/dev/null || true
   after=$(whole)
@@ -53,9 +79,9 @@ for attempt in $(seq 1 12); do
     [ "$(sql "SELECT count(*) FROM accelcal.certificates WHERE certificate_number = '$number'")" = 1 ] \
       || fail "$f carries $number, which the store does not hold"
   done
-  [ "$cut_inside" = 1 ] && [ "$attempt" -ge 3 ] && break
+  [ "$cut_inside" = 1 ] && [ "$attempt" -ge 4 ] && break
 done
-[ "$cut_inside" = 1 ] || fail "no kill landed inside a publishing transaction in 12 tries"
+[ "$cut_inside" = 1 ] || fail "no kill landed inside a publishing transaction in $attempt tries"
 
 # The rest of the backlog, then nothing left; each session once, numbers distinct.
 "$accelcal" lab publish >"$work/publish.out" 2>&1 || { cat "$work/publish.out"; fail "the final publish"; }

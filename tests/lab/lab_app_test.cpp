@@ -34,9 +34,9 @@ std::string ReadFile(const std::string& path) {
 
 class LabApp : public testing::LabDatabaseTest {
  protected:
+  bool StartMigrated() const override { return true; }
   void SetUp() override {
     LabDatabaseTest::SetUp();
-    Migrate();
     dir_ = fs::temp_directory_path() / fmt::format("accelcal-lab-app-{}", database());
     fs::create_directories(dir_);
   }
@@ -122,7 +122,8 @@ TEST_F(LabApp, ALostWriteBackIsMadeByTheNextPublish) {
   sqlite3_close(db);
   fs::remove(ReportPathFor(path, "html"));
   ASSERT_EQ(UnpublishedSessions(dir_.string()), std::vector<std::string>{path});
-  const std::vector<SessionPublishOutcome> out = PublishSessionFiles(*lab, UnpublishedSessions(dir_.string()), kProcedure);
+  const std::vector<SessionPublishOutcome> out =
+      PublishSessionFiles(*lab, UnpublishedSessions(dir_.string()), kProcedure);
   ASSERT_EQ(out.at(0).kind, Kind::kAlreadyPublished) << out[0].message;
   EXPECT_EQ(out[0].certificate_numbers, std::vector<std::string>{"LAB-000001"});
   EXPECT_EQ(Writer(path)->LabCertificates().at(0).certificate_number, "LAB-000001");
@@ -164,7 +165,8 @@ TEST_F(LabApp, TheWizardsEndPublishesOnlyWhenTheBenchHasALab) {
     ASSERT_TRUE(waiting.has_value());
     EXPECT_EQ(waiting->kind, Kind::kFailed);
     EXPECT_TRUE(waiting->lab_unreachable);
-    EXPECT_NE(waiting->message.find("it waits for `accelcal lab publish`"), std::string::npos) << waiting->message;
+    EXPECT_NE(waiting->message.find("it waits for `accelcal lab publish`"), std::string::npos)
+        << waiting->message;
   }
   ScopedEnv user("PGUSER", "bench_1");
   const std::optional<SessionPublishOutcome> published = PublishIfLabConfigured(*store, kProcedure);
@@ -186,7 +188,8 @@ TEST_F(LabApp, WhatCannotBePublishedSaysWhy) {
 
 TEST_F(LabApp, TheEquipmentCheckWarnsOfExpiredSoonAndUnknownItems) {
   const auto manager = As(kManager);
-  manager->RegisterEquipment({"TT-01", "turntable", "Turntable A", "C-100", "2020-01-01", "2021-01-01", "metro lab"});
+  manager->RegisterEquipment(
+      {"TT-01", "turntable", "Turntable A", "C-100", "2020-01-01", "2021-01-01", "metro lab"});
   manager->RegisterEquipment({"RUL-01", "ruler", "Steel ruler", "C-200", "2026-01-01", "2099-01-01", ""});
   manager->RegisterEquipment({"LVL-01", "level", "Level", "C-300", "2020-01-01", "2020-06-01", ""});
   // A level recalibrated: its new certificate counts; the old one stays on record.
@@ -195,9 +198,12 @@ TEST_F(LabApp, TheEquipmentCheckWarnsOfExpiredSoonAndUnknownItems) {
   const EquipmentCheck check = CheckEquipment(*bench, {"TT-01", "RUL-01", "LVL-01", "PRISM-9", ""});
   ASSERT_EQ(check.items.size(), 4u);
   ASSERT_EQ(check.warnings.size(), 2u);
-  EXPECT_NE(check.warnings[0].find("turntable TT-01: its calibration expired on 2021-01-01 (certificate C-100)"),
-            std::string::npos) << check.warnings[0];
-  EXPECT_NE(check.warnings[1].find("PRISM-9: not in the lab's equipment register"), std::string::npos) << check.warnings[1];
+  EXPECT_NE(
+      check.warnings[0].find("turntable TT-01: its calibration expired on 2021-01-01 (certificate C-100)"),
+      std::string::npos)
+      << check.warnings[0];
+  EXPECT_NE(check.warnings[1].find("PRISM-9: not in the lab's equipment register"), std::string::npos)
+      << check.warnings[1];
   EXPECT_TRUE(check.any_expired_or_unknown);
   EXPECT_EQ(check.items[2].certificate_ref, "C-301");
   // Running out soon is a warning, not a failure.
@@ -206,8 +212,11 @@ TEST_F(LabApp, TheEquipmentCheckWarnsOfExpiredSoonAndUnknownItems) {
   for (const LabDueItem& i : due.items) turntable_due |= i.id == "TT-01" && i.days_left && *i.days_left < 0;
   EXPECT_TRUE(turntable_due);
   // Registering the same certificate again changes nothing; with other dates it is refused.
-  EXPECT_NO_THROW(manager->RegisterEquipment({"RUL-01", "ruler", "Steel ruler", "C-200", "2026-01-01", "2099-01-01", ""}));
-  EXPECT_THROW(manager->RegisterEquipment({"RUL-01", "ruler", "Steel ruler", "C-200", "2026-01-01", "2098-01-01", ""}), Error);
+  EXPECT_NO_THROW(manager->RegisterEquipment(
+      {"RUL-01", "ruler", "Steel ruler", "C-200", "2026-01-01", "2099-01-01", ""}));
+  EXPECT_THROW(
+      manager->RegisterEquipment({"RUL-01", "ruler", "Steel ruler", "C-200", "2026-01-01", "2098-01-01", ""}),
+      Error);
 }
 
 TEST_F(LabApp, TheWelcomeChecksOnlyWhenTheBenchIsPointedAtALab) {

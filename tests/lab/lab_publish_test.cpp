@@ -18,9 +18,9 @@ using testing::NumberedRenderer;
 
 class LabPublish : public testing::LabDatabaseTest {
  protected:
+  bool StartMigrated() const override { return true; }
   void SetUp() override {
     LabDatabaseTest::SetUp();
-    Migrate();
   }
 
   static long long Count(const std::string& table) {
@@ -36,7 +36,9 @@ class LabPublish : public testing::LabDatabaseTest {
     EXPECT_EQ(Count("certificates"), sessions);
     EXPECT_EQ(Count("certificate_documents"), 2 * sessions);
     EXPECT_EQ(Count("session_equipment"), sessions);
-    EXPECT_EQ(RawAs(kAdmin)->Exec("SELECT count(DISTINCT certificate_number) FROM accelcal.certificates").Int(0, 0), sessions);
+    EXPECT_EQ(
+        RawAs(kAdmin)->Exec("SELECT count(DISTINCT certificate_number) FROM accelcal.certificates").Int(0, 0),
+        sessions);
   }
 };
 
@@ -48,10 +50,11 @@ TEST_F(LabPublish, ASessionPublishedTwiceIsOneRowWithItsFirstNumber) {
   ASSERT_EQ(first.certificates.size(), 1u);
   EXPECT_EQ(first.certificates[0].certificate_number, "LAB-000001");
   int renders = 0;
-  const LabPublishResult second = As("bench_1")->Publish(p, [&](const LabSensorCalibration& s, const std::string& n) {
-    ++renders;
-    return NumberedRenderer()(s, n);
-  });
+  const LabPublishResult second =
+      As("bench_1")->Publish(p, [&](const LabSensorCalibration& s, const std::string& n) {
+        ++renders;
+        return NumberedRenderer()(s, n);
+      });
   EXPECT_FALSE(second.newly_published);
   EXPECT_EQ(renders, 0);
   ASSERT_EQ(second.certificates.size(), 1u);
@@ -71,7 +74,9 @@ TEST_F(LabPublish, ACalibrationChangedAfterPublishingIsNotTakenAgain) {
     As("bench_1")->Publish(p, NumberedRenderer());
     FAIL() << "a changed calibration was accepted";
   } catch (const Error& e) {
-    EXPECT_NE(std::string(e.what()).find("as certificate LAB-000001 with another calibration"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("as certificate LAB-000001 with another calibration"),
+              std::string::npos)
+        << e.what();
   }
   ExpectWhole(1);
 }
@@ -87,7 +92,8 @@ TEST_F(LabPublish, ASessionOfTwoSensorsHasACalibrationAndANumberEach) {
   ASSERT_EQ(r.certificates.size(), 2u);
   EXPECT_NE(r.certificates[0].certificate_number, r.certificates[1].certificate_number);
   EXPECT_EQ(As("bench_2")->History("BOARD-B").entries.at(0).verdict, "FAIL");
-  EXPECT_EQ(As("bench_2")->History("BOARD-A").entries.at(0).certificate_number, r.certificates[0].certificate_number);
+  EXPECT_EQ(As("bench_2")->History("BOARD-A").entries.at(0).certificate_number,
+            r.certificates[0].certificate_number);
   EXPECT_EQ(Count("sessions"), 1);
   EXPECT_EQ(Count("session_sensors"), 2);
   EXPECT_EQ(Count("certificates"), 2);
@@ -95,9 +101,12 @@ TEST_F(LabPublish, ASessionOfTwoSensorsHasACalibrationAndANumberEach) {
 
 TEST_F(LabPublish, AFailureHalfWayLeavesNothing) {
   const LabPublication p = MakePublication(NewRandomUuid(), "DEV-1");
-  EXPECT_THROW(As("bench_1")->Publish(p, [](const LabSensorCalibration&, const std::string&) -> std::vector<LabDocument> {
-    throw Error("the renderer failed");
-  }), Error);
+  EXPECT_THROW(
+      As("bench_1")->Publish(p,
+                             [](const LabSensorCalibration&, const std::string&) -> std::vector<LabDocument> {
+                               throw Error("the renderer failed");
+                             }),
+      Error);
   ExpectWhole(0);
   EXPECT_EQ(Count("devices"), 0);
   // Published later, whole; the number drawn by the failed attempt is not used again.
@@ -114,8 +123,9 @@ TEST_F(LabPublish, ALostConnectionLeavesNothingAndTheRetryPublishesOnce) {
   auto superuser = RawAs("postgres");  // (ending another role's backend takes a superuser)
   try {
     bench->Publish(p, [&](const LabSensorCalibration& s, const std::string& n) {
-      superuser->Exec("SELECT pg_terminate_backend(pid) FROM pg_stat_activity WHERE usename = 'bench_1' AND datname = $1",
-                  {PgText(database())});
+      superuser->Exec(
+          "SELECT pg_terminate_backend(pid) FROM pg_stat_activity WHERE usename = 'bench_1' AND datname = $1",
+          {PgText(database())});
       return NumberedRenderer()(s, n);
     });
     FAIL() << "the publish went through a dead connection";
@@ -161,8 +171,11 @@ TEST_F(LabPublish, EightConcurrentPublishersOfAHundredSessionsEach) {
   ExpectWhole(kPublishers * kSessions);
   // Each bench's sessions are its own, by the database's account.
   for (int t = 0; t < kPublishers; ++t)
-    EXPECT_EQ(RawAs(kAdmin)->Exec("SELECT count(*) FROM accelcal.sessions WHERE bench = $1",
-                                  {PgText(BenchRoles()[static_cast<size_t>(t)])}).Int(0, 0), kSessions);
+    EXPECT_EQ(RawAs(kAdmin)
+                  ->Exec("SELECT count(*) FROM accelcal.sessions WHERE bench = $1",
+                         {PgText(BenchRoles()[static_cast<size_t>(t)])})
+                  .Int(0, 0),
+              kSessions);
 }
 
 // Eight publishers race over the same 40 sessions (a copied session file, a retry beside the
@@ -170,7 +183,8 @@ TEST_F(LabPublish, EightConcurrentPublishersOfAHundredSessionsEach) {
 TEST_F(LabPublish, PublishersRacingOverTheSameSessionsMakeOneRowEach) {
   constexpr int kPublishers = 8, kSessions = 40;
   std::vector<LabPublication> shared;
-  for (int i = 0; i < kSessions; ++i) shared.push_back(MakePublication(NewRandomUuid(), fmt::format("DEV-{}", i)));
+  for (int i = 0; i < kSessions; ++i)
+    shared.push_back(MakePublication(NewRandomUuid(), fmt::format("DEV-{}", i)));
   std::vector<std::map<std::string, std::string>> seen(kPublishers);
   std::vector<int> new_ones(kPublishers, 0);
   std::vector<std::string> errors(kPublishers);

@@ -14,11 +14,14 @@ using testing::NumberedRenderer;
 
 class LabRoles : public testing::LabDatabaseTest {
  protected:
+  bool StartMigrated() const override { return true; }
   void SetUp() override {
     LabDatabaseTest::SetUp();
-    Migrate();
     uuid_ = NewRandomUuid();
-    number_ = As("bench_1")->Publish(MakePublication(uuid_, "DEV-1"), NumberedRenderer()).certificates.at(0).certificate_number;
+    number_ = As("bench_1")
+                  ->Publish(MakePublication(uuid_, "DEV-1"), NumberedRenderer())
+                  .certificates.at(0)
+                  .certificate_number;
   }
 
   // Runs `fn`, which the database must refuse with `sqlstate`; returns the message.
@@ -35,8 +38,9 @@ class LabRoles : public testing::LabDatabaseTest {
   }
 
   static std::string Status(const std::string& number) {
-    return RawAs(kAdmin)->Exec("SELECT status FROM accelcal.certificates WHERE certificate_number = $1",
-                               {PgText(number)}).Text(0, 0);
+    return RawAs(kAdmin)
+        ->Exec("SELECT status FROM accelcal.certificates WHERE certificate_number = $1", {PgText(number)})
+        .Text(0, 0);
   }
 
   std::string uuid_;
@@ -44,7 +48,8 @@ class LabRoles : public testing::LabDatabaseTest {
 };
 
 TEST_F(LabRoles, ABenchPublishesAndReadsEveryBenchsWork) {
-  As("bench_2")->Publish(MakePublication(NewRandomUuid(), "DEV-1", "2026-02-01T00:00:00.000Z"), NumberedRenderer());
+  As("bench_2")->Publish(MakePublication(NewRandomUuid(), "DEV-1", "2026-02-01T00:00:00.000Z"),
+                         NumberedRenderer());
   const LabHistory h = As("bench_3")->History("DEV-1");
   ASSERT_EQ(h.entries.size(), 2u);
   EXPECT_EQ(h.entries[0].bench, "bench_1");
@@ -53,13 +58,18 @@ TEST_F(LabRoles, ABenchPublishesAndReadsEveryBenchsWork) {
 
 TEST_F(LabRoles, ABenchCannotApproveWithdrawOrDelete) {
   const auto bench = As("bench_1");
-  const std::string approve = Refused([&] { bench->SetCertificateStatus(number_, LabCertificateStatus::kApproved); });
+  const std::string approve =
+      Refused([&] { bench->SetCertificateStatus(number_, LabCertificateStatus::kApproved); });
   EXPECT_NE(approve.find("permission denied for table certificates"), std::string::npos) << approve;
   Refused([&] { bench->SetCertificateStatus(number_, LabCertificateStatus::kWithdrawn, "mine"); });
   auto raw = RawAs("bench_1");
-  Refused([&] { raw->Exec("DELETE FROM accelcal.certificates WHERE certificate_number = $1", {PgText(number_)}); });
+  Refused([&] {
+    raw->Exec("DELETE FROM accelcal.certificates WHERE certificate_number = $1", {PgText(number_)});
+  });
   Refused([&] { raw->Exec("DELETE FROM accelcal.sessions WHERE session_uuid = $1", {PgText(uuid_)}); });
-  Refused([&] { raw->Exec("UPDATE accelcal.calibrations SET verdict = 'PASS' WHERE session_uuid = $1", {PgText(uuid_)}); });
+  Refused([&] {
+    raw->Exec("UPDATE accelcal.calibrations SET verdict = 'PASS' WHERE session_uuid = $1", {PgText(uuid_)});
+  });
   Refused([&] { raw->Exec("UPDATE accelcal.certificate_documents SET content = 'x'"); });
   Refused([&] { raw->Exec("TRUNCATE accelcal.certificates CASCADE"); });
   EXPECT_EQ(Status(number_), "issued");
@@ -69,28 +79,36 @@ TEST_F(LabRoles, ABenchInsertsOnlyAsItselfAndOnlyNumbersItDrew) {
   auto raw = RawAs("bench_2");
   // Another bench's name on a session: row-level security.
   const std::string as_other = Refused([&] {
-    raw->Exec("INSERT INTO accelcal.sessions (session_uuid, bench, name, procedure, source, operator, place, "
-              "gravity, created_utc, finished_utc, accelcal_version) VALUES ($1, 'bench_1', 'x', 'p', 's', 'o', "
-              "'', 'g', now(), now(), 't')", {PgText(NewRandomUuid())});
+    raw->Exec(
+        "INSERT INTO accelcal.sessions (session_uuid, bench, name, procedure, source, operator, place, "
+        "gravity, created_utc, finished_utc, accelcal_version) VALUES ($1, 'bench_1', 'x', 'p', 's', 'o', "
+        "'', 'g', now(), now(), 't')",
+        {PgText(NewRandomUuid())});
   });
   EXPECT_NE(as_other.find("row-level security"), std::string::npos) << as_other;
   // Parts of another bench's session.
   Refused([&] {
-    raw->Exec("INSERT INTO accelcal.session_equipment (session_uuid, role, equipment_id, name, uncertainty, "
-              "traceability) VALUES ($1, 'level', 'L', 'l', 'u', 't')", {PgText(uuid_)});
+    raw->Exec(
+        "INSERT INTO accelcal.session_equipment (session_uuid, role, equipment_id, name, uncertainty, "
+        "traceability) VALUES ($1, 'level', 'L', 'l', 'u', 't')",
+        {PgText(uuid_)});
   });
   // A certificate number it did not draw (its own session, a number of its choosing).
   const std::string mine = NewRandomUuid();
   As("bench_2")->Publish(MakePublication(mine, "DEV-2"), NumberedRenderer());
   const std::string forged = Refused([&] {
-    raw->Exec("INSERT INTO accelcal.certificates (certificate_number, seq, session_uuid, sensor_index) "
-              "VALUES ('LAB-999999', 999999, $1, 1)", {PgText(mine)});
+    raw->Exec(
+        "INSERT INTO accelcal.certificates (certificate_number, seq, session_uuid, sensor_index) "
+        "VALUES ('LAB-999999', 999999, $1, 1)",
+        {PgText(mine)});
   });
   EXPECT_NE(forged.find("not the one this connection just drew"), std::string::npos) << forged;
   // Nor a status of its own choosing on a new certificate (no grant on the column).
   Refused([&] {
-    raw->Exec("INSERT INTO accelcal.certificates (certificate_number, seq, session_uuid, sensor_index, status) "
-              "VALUES ('LAB-999998', 999998, $1, 1, 'approved')", {PgText(mine)});
+    raw->Exec(
+        "INSERT INTO accelcal.certificates (certificate_number, seq, session_uuid, sensor_index, status) "
+        "VALUES ('LAB-999998', 999998, $1, 1, 'approved')",
+        {PgText(mine)});
   });
   // Nor the sequence itself.
   Refused([&] { raw->Exec("SELECT nextval('accelcal.certificate_seq')"); });
@@ -98,7 +116,9 @@ TEST_F(LabRoles, ABenchInsertsOnlyAsItselfAndOnlyNumbersItDrew) {
 
 TEST_F(LabRoles, ABenchCannotKeepTheEquipmentRegisterOrTheIntervals) {
   const auto bench = As("bench_1");
-  Refused([&] { bench->RegisterEquipment({"TT-9", "turntable", "t", "C-1", "2026-01-01", "2027-01-01", ""}); });
+  Refused([&] {
+    bench->RegisterEquipment({"TT-9", "turntable", "t", "C-1", "2026-01-01", "2027-01-01", ""});
+  });
   Refused([&] { bench->SetDeviceTypeInterval("X", 30); });
 }
 
@@ -108,9 +128,11 @@ TEST_F(LabRoles, AManagerApprovesAndWithdrawsAndTheWithdrawnCertificateStays) {
   EXPECT_EQ(Status(number_), "approved");
   // A withdrawal states its reason (the schema's rule).
   Refused([&] { manager->SetCertificateStatus(number_, LabCertificateStatus::kWithdrawn, " "); }, "23514");
-  manager->SetCertificateStatus(number_, LabCertificateStatus::kWithdrawn, "the turntable's certificate had expired");
+  manager->SetCertificateStatus(number_, LabCertificateStatus::kWithdrawn,
+                                "the turntable's certificate had expired");
   // Withdrawn is final.
-  const std::string again = Refused([&] { manager->SetCertificateStatus(number_, LabCertificateStatus::kApproved); }, "23514");
+  const std::string again =
+      Refused([&] { manager->SetCertificateStatus(number_, LabCertificateStatus::kApproved); }, "23514");
   EXPECT_NE(again.find("stays withdrawn"), std::string::npos) << again;
   const LabHistory h = As("bench_2")->History("DEV-1");
   ASSERT_EQ(h.entries.size(), 1u);
@@ -122,7 +144,10 @@ TEST_F(LabRoles, AManagerApprovesAndWithdrawsAndTheWithdrawnCertificateStays) {
 }
 
 TEST_F(LabRoles, NobodyDeletesACertificateNotEvenTheOwner) {
-  Refused([&] { RawAs(kManager)->Exec("DELETE FROM accelcal.certificates WHERE certificate_number = $1", {PgText(number_)}); });
+  Refused([&] {
+    RawAs(kManager)->Exec("DELETE FROM accelcal.certificates WHERE certificate_number = $1",
+                          {PgText(number_)});
+  });
   // The owner of the tables passes every grant: the schema's trigger still refuses.
   const std::string owner = Refused([&] {
     RawAs(kAdmin)->Exec("DELETE FROM accelcal.certificates WHERE certificate_number = $1", {PgText(number_)});

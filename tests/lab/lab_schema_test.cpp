@@ -31,7 +31,8 @@ std::vector<int> AllVersions() {
 
 TEST_F(LabSchema, TheMigrationsAreNumberedOneByOne) {
   ASSERT_EQ(static_cast<int>(LabMigrations().size()), kLabSchemaVersion);
-  for (size_t i = 0; i < LabMigrations().size(); ++i) EXPECT_EQ(LabMigrations()[i].version, static_cast<int>(i) + 1);
+  for (size_t i = 0; i < LabMigrations().size(); ++i)
+    EXPECT_EQ(LabMigrations()[i].version, static_cast<int>(i) + 1);
 }
 
 TEST_F(LabSchema, AnEmptyDatabaseIsMigratedToTheLatestVersionOnce) {
@@ -62,7 +63,8 @@ TEST_F(LabSchema, EachEarlierVersionWithDataIsMigratedToTheLatest) {
       const auto bench = As("bench_1", true);  // (a bench of that time: no check of the version)
       for (int i = 0; i < 3; ++i) {
         const std::string date = fmt::format("2025-0{}-10T09:00:00.000Z", i + 1);
-        const LabPublishResult r = bench->Publish(MakePublication(NewRandomUuid(), "OLD-7", date), NumberedRenderer());
+        const LabPublishResult r =
+            bench->Publish(MakePublication(NewRandomUuid(), "OLD-7", date), NumberedRenderer());
         numbers.push_back(r.certificates.at(0).certificate_number);
       }
     }
@@ -136,11 +138,15 @@ TEST_F(LabSchema, TwoAdministratorsMigratingAtOnceApplyEachVersionOnce) {
 TEST_F(LabSchema, ANewerRegisterThatOnlyAddsIsUsedOneThatBreaksIsRefused) {
   Migrate();
   auto admin = RawAs(kAdmin);
-  admin->Exec("INSERT INTO accelcal.schema_migrations (version, description, older_clients_ok) "
-              "VALUES ($1, 'a later addition', true)", {detail::PgInt(kLabSchemaVersion + 1)});
+  admin->Exec(
+      "INSERT INTO accelcal.schema_migrations (version, description, older_clients_ok) "
+      "VALUES ($1, 'a later addition', true)",
+      {detail::PgInt(kLabSchemaVersion + 1)});
   EXPECT_NO_THROW(As("bench_1")->Due(30));
-  admin->Exec("INSERT INTO accelcal.schema_migrations (version, description, older_clients_ok) "
-              "VALUES ($1, 'a later change', false)", {detail::PgInt(kLabSchemaVersion + 2)});
+  admin->Exec(
+      "INSERT INTO accelcal.schema_migrations (version, description, older_clients_ok) "
+      "VALUES ($1, 'a later change', false)",
+      {detail::PgInt(kLabSchemaVersion + 2)});
   try {
     As("bench_1");
     FAIL() << "a register this accelcal cannot work with was used";

@@ -38,8 +38,10 @@ class ScopedEnv {
     ::setenv(name, value.c_str(), 1);
   }
   ~ScopedEnv() {
-    if (old_.empty()) ::unsetenv(name_);
-    else ::setenv(name_, old_.c_str(), 1);
+    if (old_.empty())
+      ::unsetenv(name_);
+    else
+      ::setenv(name_, old_.c_str(), 1);
   }
   ScopedEnv(const ScopedEnv&) = delete;
   ScopedEnv& operator=(const ScopedEnv&) = delete;
@@ -49,8 +51,13 @@ class ScopedEnv {
   std::string old_;
 };
 
+// A fixture whose StartMigrated() is true starts from a register at the latest version (a copy of
+// a template database migrated once per run: faster than migrating each test's); else from an
+// empty database.
 class LabDatabaseTest : public ::testing::Test {
  protected:
+  virtual bool StartMigrated() const { return false; }
+
   void SetUp() override {
     ASSERT_NE(std::getenv("PGHOST"), nullptr) << "run by tests/lab/with_server.sh, which starts the server";
     database_ = fmt::format("t_{}", std::random_device{}() % 100000000);
@@ -58,8 +65,9 @@ class LabDatabaseTest : public ::testing::Test {
       ScopedEnv db("PGDATABASE", "lab");
       ScopedEnv user("PGUSER", kAdmin);
       detail::PgConnection admin;
-      admin.ExecScript("CREATE DATABASE " + database_);
       EnsureRoles(admin);
+      if (StartMigrated()) MakeMigratedTemplate(admin);
+      admin.ExecScript("CREATE DATABASE " + database_ + (StartMigrated() ? " TEMPLATE " + std::string(kTemplate) : ""));
     }
     ::setenv("PGDATABASE", database_.c_str(), 1);
     ::setenv("PGUSER", kAdmin, 1);
@@ -68,13 +76,17 @@ class LabDatabaseTest : public ::testing::Test {
   void TearDown() override {
     ::setenv("PGDATABASE", "lab", 1);
     ::setenv("PGUSER", kAdmin, 1);
-    detail::PgConnection admin;
-    admin.ExecScript("DROP DATABASE IF EXISTS " + database_ + " WITH (FORCE)");
+    // As the superuser: FORCE ends the backends of connections just closed that are still
+    // going away, which only a superuser may do to other roles' backends.
+    ScopedEnv user("PGUSER", "postgres");
+    detail::PgConnection superuser;
+    superuser.ExecScript("DROP DATABASE IF EXISTS " + database_ + " WITH (FORCE)");
   }
 
-  // The register created (as the administrator) at `version`, the tests' login roles joined to
-  // its groups (as a lab's administrator does: GRANT accelcal_bench TO bench_1, ...).
-  void Migrate(int version = kLabSchemaVersion) {
+  // The register created (as the administrator) at `version` in the database of PGDATABASE, the
+  // tests' login roles joined to its groups (as a lab's administrator does: GRANT accelcal_bench
+  // TO bench_1, ...).
+  static void Migrate(int version = kLabSchemaVersion) {
     ScopedEnv user("PGUSER", kAdmin);
     LabStore::Connect(true)->Migrate(version);
     detail::PgConnection admin;
@@ -96,14 +108,29 @@ class LabDatabaseTest : public ::testing::Test {
   const std::string& database() const { return database_; }
 
  private:
+  static constexpr const char* kTemplate = "t_migrated_template";
+
+  // The template, made once per run (its connections closed: a template is copied only alone).
+  static void MakeMigratedTemplate(detail::PgConnection& admin) {
+    static bool made = false;
+    if (made) return;
+    admin.ExecScript(std::string("DROP DATABASE IF EXISTS ") + kTemplate);
+    admin.ExecScript(std::string("CREATE DATABASE ") + kTemplate);
+    ScopedEnv db("PGDATABASE", kTemplate);
+    Migrate();
+    made = true;
+  }
+
   // Creates the login roles once per cluster; joins them to the lab's groups once those exist.
   static void EnsureRoles(detail::PgConnection& admin) {
     std::vector<std::string> roles = BenchRoles();
     roles.push_back(kManager);
     roles.push_back(kOutsider);
     for (const std::string& r : roles)
-      admin.ExecScript(fmt::format("DO $$ BEGIN IF NOT EXISTS (SELECT FROM pg_roles WHERE rolname = '{0}') "
-                                   "THEN CREATE ROLE {0} LOGIN; END IF; END $$", r));
+      admin.ExecScript(
+          fmt::format("DO $$ BEGIN IF NOT EXISTS (SELECT FROM pg_roles WHERE rolname = '{0}') "
+                      "THEN CREATE ROLE {0} LOGIN; END IF; END $$",
+                      r));
   }
 
   std::string database_;

@@ -56,7 +56,8 @@ TEST_F(SessionLabIdentity, ALabNumberIsWrittenBackOnceAndNeverReplaced) {
     store->RecordInput("welcome", "device", "SIM-0001");
     updated = store->Info().updated_utc;
     store->RecordLabCertificate({0, "LAB-000042", "lab 1234 (database lab)", "2026-11-27T08:00:00.000Z"});
-    store->RecordLabCertificate({0, "LAB-000042", "lab 1234 (database lab)", "2026-11-27T08:00:00.000Z"});  // again: nothing
+    store->RecordLabCertificate(
+        {0, "LAB-000042", "lab 1234 (database lab)", "2026-11-27T08:00:00.000Z"});  // again: nothing
     try {
       store->RecordLabCertificate({0, "LAB-000043", "lab 1234 (database lab)", "2026-11-27T08:01:00.000Z"});
       FAIL() << "a second number replaced the first";

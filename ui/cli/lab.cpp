@@ -22,9 +22,10 @@ void RunStatus() {
   const std::unique_ptr<LabStore> lab = LabStore::Connect(true);
   const LabSchemaState state = lab->SchemaState();
   const std::vector<std::string> roles = lab->LabRoles();
-  std::cout << fmt::format("{}\nrole {}: {}\nregister version {} (this accelcal: {}){}\n", lab->Identity(),
-                           lab->Role(), roles.empty() ? "neither a bench nor a lab manager" : fmt::format("{}", fmt::join(roles, ", ")),
-                           state.version, kLabSchemaVersion, state.usable ? "" : "\n" + state.problem);
+  std::cout << fmt::format(
+      "{}\nrole {}: {}\nregister version {} (this accelcal: {}){}\n", lab->Identity(), lab->Role(),
+      roles.empty() ? "neither a bench nor a lab manager" : fmt::format("{}", fmt::join(roles, ", ")),
+      state.version, kLabSchemaVersion, state.usable ? "" : "\n" + state.problem);
 }
 
 void RunMigrate(int target) {
@@ -40,11 +41,13 @@ void RunMigrate(int target) {
   std::cout << fmt::format("the register is at version {} ({})\n", applied.back(), lab->Identity());
 }
 
-void RunStatusChange(const std::vector<std::string>& numbers, LabCertificateStatus status, const std::string& reason) {
+void RunStatusChange(const std::vector<std::string>& numbers, LabCertificateStatus status,
+                     const std::string& reason) {
   const std::unique_ptr<LabStore> lab = LabStore::Connect();
   for (const std::string& number : numbers) {
     lab->SetCertificateStatus(number, status, reason);
-    std::cout << fmt::format("certificate {} {} by {}\n", number, LabCertificateStatusText(status), lab->Role());
+    std::cout << fmt::format("certificate {} {} by {}\n", number, LabCertificateStatusText(status),
+                             lab->Role());
   }
 }
 
@@ -73,7 +76,8 @@ long DaysOption(const std::string& text, const char* option) {
 }
 
 void SetupAdministration(CLI::App& lab) {
-  lab.add_subcommand("status", "Which lab store this bench reaches, as which role, and its register's version")
+  lab.add_subcommand("status",
+                     "Which lab store this bench reaches, as which role, and its register's version")
       ->callback([] { RunStatus(); });
 
   auto target = std::make_shared<int>(kLabSchemaVersion);
@@ -81,7 +85,8 @@ void SetupAdministration(CLI::App& lab) {
       "migrate",
       "Create the lab's register, or bring it to this accelcal's version (the database's owner;\n"
       "the first time also CREATEROLE, for the groups accelcal_bench and accelcal_manager)");
-  migrate->add_option("--to", *target, "Register version to reach (default: this accelcal's)")->capture_default_str();
+  migrate->add_option("--to", *target, "Register version to reach (default: this accelcal's)")
+      ->capture_default_str();
   migrate->callback([target] { RunMigrate(*target); });
 
   auto numbers = std::make_shared<std::vector<std::string>>();
@@ -95,19 +100,23 @@ void SetupAdministration(CLI::App& lab) {
       "withdraw", "A lab manager withdraws certificates (they stay in the register, marked withdrawn)");
   withdraw->add_option("certificate", *withdrawn, "Certificate numbers")->required();
   withdraw->add_option("--reason", *reason, "Why (kept with the certificate)")->required();
-  withdraw->callback([withdrawn, reason] { RunStatusChange(*withdrawn, LabCertificateStatus::kWithdrawn, *reason); });
+  withdraw->callback(
+      [withdrawn, reason] { RunStatusChange(*withdrawn, LabCertificateStatus::kWithdrawn, *reason); });
 
   auto cert = std::make_shared<CertificateOptions>();
-  CLI::App* certificate = lab.add_subcommand("certificate", "A certificate as the lab stored it when it was issued");
+  CLI::App* certificate =
+      lab.add_subcommand("certificate", "A certificate as the lab stored it when it was issued");
   certificate->add_option("number", cert->number, "Certificate number")->required();
   certificate->add_option("--format", cert->format, "html or text")
-      ->check(CLI::IsMember({"html", "text"}))->capture_default_str();
+      ->check(CLI::IsMember({"html", "text"}))
+      ->capture_default_str();
   certificate->add_option("-o,--output", cert->output_path, "Write here instead of standard output");
   certificate->callback([cert] { RunCertificate(*cert); });
 
   auto serial = std::make_shared<std::string>();
   auto type = std::make_shared<std::string>();
-  CLI::App* device = lab.add_subcommand("device", "A lab manager sets a device's type (its recalibration interval)");
+  CLI::App* device =
+      lab.add_subcommand("device", "A lab manager sets a device's type (its recalibration interval)");
   device->add_option("serial", *serial, "Device serial")->required();
   device->add_option("--type", *type, "Device type (see device-type)")->required();
   device->callback([serial, type] {
@@ -117,7 +126,8 @@ void SetupAdministration(CLI::App& lab) {
 
   auto type_name = std::make_shared<std::string>();
   auto interval = std::make_shared<std::string>();
-  CLI::App* device_type = lab.add_subcommand("device-type", "A lab manager sets a device type's recalibration interval");
+  CLI::App* device_type =
+      lab.add_subcommand("device-type", "A lab manager sets a device type's recalibration interval");
   device_type->add_option("type", *type_name, "Device type, e.g. MMA7260Q")->required();
   device_type->add_option("--interval", *interval, "Recalibration interval: 365d, 52w, 1y")->required();
   device_type->callback([type_name, interval] {

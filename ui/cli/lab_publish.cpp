@@ -35,7 +35,8 @@ void RunPublish(const PublishOptions& o) {
     }
     paths = UnpublishedSessions(dir);
     if (paths.empty()) {
-      std::cout << fmt::format("nothing to publish: every finished session in {} is in the lab's register\n", dir);
+      std::cout << fmt::format("nothing to publish: every finished session in {} is in the lab's register\n",
+                               dir);
       return;
     }
   }
@@ -44,10 +45,12 @@ void RunPublish(const PublishOptions& o) {
     lab = LabStore::Connect();
   } catch (const LabError& e) {
     if (!e.unreachable()) throw;
-    throw Error(fmt::format("{}: {} session(s) wait, published by the next `accelcal lab publish`", e.what(), paths.size()));
+    throw Error(fmt::format("{}: {} session(s) wait, published by the next `accelcal lab publish`", e.what(),
+                            paths.size()));
   }
   long failed = 0, published = 0, held = 0, waiting = 0;
-  for (const SessionPublishOutcome& outcome : PublishSessionFiles(*lab, paths, ShippedProcedurePath("seed_calibration.toml"))) {
+  for (const SessionPublishOutcome& outcome :
+       PublishSessionFiles(*lab, paths, ShippedProcedurePath("seed_calibration.toml"))) {
     std::cout << DescribeOutcome(outcome) << "\n";
     published += outcome.kind == Kind::kPublished;
     held += outcome.kind == Kind::kAlreadyPublished;
@@ -58,7 +61,8 @@ void RunPublish(const PublishOptions& o) {
                            held, failed, lab->Identity());
   if (failed > 0)
     throw Error(waiting > 0 ? fmt::format("the lab store was lost: {} session(s) wait, published by the next "
-                                          "`accelcal lab publish`", waiting)
+                                          "`accelcal lab publish`",
+                                          waiting)
                             : fmt::format("{} session(s) not published (said above)", failed));
 }
 

@@ -18,17 +18,20 @@ namespace {
 std::string OrDash(const std::string& text) { return text.empty() ? "-" : text; }
 
 std::string HistoryText(const LabHistory& h) {
-  std::string t = fmt::format("device {} ({}): {} certificate(s)\n", h.serial,
-                              h.device_type.empty() ? "no type: the lab's default interval" : "type " + h.device_type,
-                              h.entries.size());
-  t += fmt::format("{:<14} {:<19}  {:<10} {:<9} {:<12} {}\n", "certificate", "date (UTC)", "verdict", "status",
-                   "bench", "session");
+  std::string t =
+      fmt::format("device {} ({}): {} certificate(s)\n", h.serial,
+                  h.device_type.empty() ? "no type: the lab's default interval" : "type " + h.device_type,
+                  h.entries.size());
+  t += fmt::format("{:<14} {:<19}  {:<10} {:<9} {:<12} {}\n", "certificate", "date (UTC)", "verdict",
+                   "status", "bench", "session");
   for (const LabHistoryEntry& e : h.entries) {
     t += fmt::format("{:<14} {:<19}  {:<10} {:<9} {:<12} {}\n", e.certificate_number, ShortUtc(e.date_utc),
                      e.verdict, e.status, e.bench, e.session);
-    if (!e.approved_by.empty()) t += fmt::format("  approved {} by {}\n", ShortUtc(e.approved_utc), e.approved_by);
+    if (!e.approved_by.empty())
+      t += fmt::format("  approved {} by {}\n", ShortUtc(e.approved_utc), e.approved_by);
     if (!e.withdrawn_by.empty())
-      t += fmt::format("  withdrawn {} by {}: {}\n", ShortUtc(e.withdrawn_utc), e.withdrawn_by, e.withdrawn_reason);
+      t += fmt::format("  withdrawn {} by {}: {}\n", ShortUtc(e.withdrawn_utc), e.withdrawn_by,
+                       e.withdrawn_reason);
   }
   return t;
 }
@@ -46,20 +49,27 @@ std::string DueText(const LabDueList& due) {
   std::string t = fmt::format("due within {} day(s) of {} (UTC):\n", due.within_days, due.today);
   for (const LabDueItem& i : due.items) {
     const bool device = i.kind == LabDueItem::Kind::kDevice;
-    const std::string last = i.last.empty() ? "" : fmt::format("; last {} of {}", device ? "certificate" : "calibration, certificate", i.last) + (i.last_date.empty() ? "" : " on " + i.last_date);
-    t += fmt::format("{:<9}  {:<14} {}{}{}\n", device ? "device" : "equipment", i.id, WhenText(i.days_left, i.due_date),
-                     i.type.empty() ? "" : fmt::format(" [{}{}]", i.type, i.name.empty() ? "" : ": " + i.name), last);
+    const std::string last =
+        i.last.empty()
+            ? ""
+            : fmt::format("; last {} of {}", device ? "certificate" : "calibration, certificate", i.last) +
+                  (i.last_date.empty() ? "" : " on " + i.last_date);
+    t += fmt::format(
+        "{:<9}  {:<14} {}{}{}\n", device ? "device" : "equipment", i.id, WhenText(i.days_left, i.due_date),
+        i.type.empty() ? "" : fmt::format(" [{}{}]", i.type, i.name.empty() ? "" : ": " + i.name), last);
   }
   return t;
 }
 
 std::string EquipmentText(const std::vector<LabEquipmentStatus>& items) {
-  if (items.empty()) return "the lab's equipment register is empty (a lab manager adds items with `accelcal lab equipment add`)\n";
-  std::string t = fmt::format("{:<12} {:<10} {:<28} {:<14} {:<10}  {:<10}  {}\n", "id", "kind", "name", "certificate",
-                              "calibrated", "valid until", "state");
+  if (items.empty())
+    return "the lab's equipment register is empty (a lab manager adds items with `accelcal lab equipment "
+           "add`)\n";
+  std::string t = fmt::format("{:<12} {:<10} {:<28} {:<14} {:<10}  {:<10}  {}\n", "id", "kind", "name",
+                              "certificate", "calibrated", "valid until", "state");
   for (const LabEquipmentStatus& s : items) {
-    std::string state = !s.registered ? "not registered"
-                        : !s.days_left ? "no certificate"
+    std::string state = !s.registered      ? "not registered"
+                        : !s.days_left     ? "no certificate"
                         : *s.days_left < 0 ? fmt::format("EXPIRED {} day(s) ago", -*s.days_left)
                                            : fmt::format("valid, {} day(s) left", *s.days_left);
     t += fmt::format("{:<12} {:<10} {:<28} {:<14} {:<10}  {:<11} {}\n", s.id, OrDash(s.kind), OrDash(s.name),
@@ -96,7 +106,9 @@ void RunEquipment(const EquipmentOptions& o) {
     std::cout << LabEquipmentJsonText(check.items);
   } else {
     for (const std::string& w : check.warnings) std::cout << "warning: " << w << "\n";
-    if (check.warnings.empty()) std::cout << fmt::format("all {} item(s) calibrated, none running out within {} days\n", check.items.size(), kEquipmentSoonDays);
+    if (check.warnings.empty())
+      std::cout << fmt::format("all {} item(s) calibrated, none running out within {} days\n",
+                               check.items.size(), kEquipmentSoonDays);
   }
   if (check.any_expired_or_unknown) throw Error("equipment expired or unknown to the lab (said above)");
 }
@@ -108,7 +120,9 @@ void SetupLabHistoryCommand(CLI::App& lab) {
   CLI::App* sub = lab.add_subcommand(
       "history", "Every certificate of a device across the lab's benches, withdrawn ones included");
   sub->add_option("serial", o->serial, "Device serial")->required();
-  sub->add_option("--format", o->format, "text or json")->check(CLI::IsMember({"text", "json"}))->capture_default_str();
+  sub->add_option("--format", o->format, "text or json")
+      ->check(CLI::IsMember({"text", "json"}))
+      ->capture_default_str();
   sub->callback([o] {
     const LabHistory h = LabStore::Connect()->History(o->serial);
     std::cout << (o->format == "json" ? LabHistoryJsonText(h) : HistoryText(h));
@@ -123,7 +137,9 @@ void SetupLabDueCommand(CLI::App& lab) {
       "lab's default) after its last valid calibration, an item of equipment when its\n"
       "certificate runs out; overdue ones first");
   sub->add_option("--within", o->within, "Window from today: 30d, 6w, 1y (default 30d)");
-  sub->add_option("--format", o->format, "text or json")->check(CLI::IsMember({"text", "json"}))->capture_default_str();
+  sub->add_option("--format", o->format, "text or json")
+      ->check(CLI::IsMember({"text", "json"}))
+      ->capture_default_str();
   sub->callback([o] {
     const std::optional<long> days = ParseDays(o->within);
     if (!days) throw Error(fmt::format("--within {}: give days, weeks or years (30d, 6w, 1y)", o->within));
@@ -140,7 +156,9 @@ void SetupLabEquipmentCommand(CLI::App& lab) {
       "certificates; --check ID... warns of items expired, running out within 30 days, or\n"
       "unknown (exit 1 for expired or unknown: what the wizard's welcome checks)");
   sub->add_option("--check", o->check, "Equipment ids to check");
-  sub->add_option("--format", o->format, "text or json")->check(CLI::IsMember({"text", "json"}))->capture_default_str();
+  sub->add_option("--format", o->format, "text or json")
+      ->check(CLI::IsMember({"text", "json"}))
+      ->capture_default_str();
   sub->callback([o] {
     if (o->add.id.empty()) RunEquipment(*o);
   });

@@ -11,12 +11,14 @@ std::string Label(const LabEquipmentStatus& s) {
 
 // The warning for `s`; empty when it is valid beyond `soon_days`.
 std::string WarningOf(const LabEquipmentStatus& s, int soon_days) {
-  if (!s.registered) return fmt::format("{}: not in the lab's equipment register (its calibration cannot be checked)", s.id);
-  if (!s.days_left)
-    return fmt::format("{}: the lab holds no calibration certificate for it", Label(s));
+  if (!s.registered)
+    return fmt::format("{}: not in the lab's equipment register (its calibration cannot be checked)", s.id);
+  if (!s.days_left) return fmt::format("{}: the lab holds no calibration certificate for it", Label(s));
   if (*s.days_left < 0)
-    return fmt::format("{}: its calibration expired on {} (certificate {}): have it recalibrated before it is "
-                       "used for a certificate", Label(s), s.valid_until, s.certificate_ref);
+    return fmt::format(
+        "{}: its calibration expired on {} (certificate {}): have it recalibrated before it is "
+        "used for a certificate",
+        Label(s), s.valid_until, s.certificate_ref);
   if (*s.days_left <= soon_days)
     return fmt::format("{}: its calibration runs out on {} (in {} day(s); certificate {})", Label(s),
                        s.valid_until, *s.days_left, s.certificate_ref);

@@ -41,8 +41,8 @@ LabPublication PublicationOf(const SessionInfo& info, const std::string& calibra
   p.finished_utc = info.updated_utc;
   p.accelcal_version = kAccelcalVersion;
   // One sensor per session today (a fixture of many boards adds more, each its own device).
-  p.sensors.push_back({0, info.device, calibration_json, std::string(VerdictToString(model.verdict)),
-                       in.meta.date_utc});
+  p.sensors.push_back(
+      {0, info.device, calibration_json, std::string(VerdictToString(model.verdict)), in.meta.date_utc});
   p.equipment = EquipmentUsed(in.equipment);
   return p;
 }
@@ -61,11 +61,14 @@ LabCertificateRenderer RendererOf(const ReportModel& model) {
 void WriteBack(LabStore& lab, SessionStore& store, const LabPublishResult& published,
                SessionPublishOutcome* out) {
   for (const LabIssuedCertificate& c : published.certificates) {
-    store.RecordLabCertificate({c.sensor_index, c.certificate_number, lab.Identity(), published.published_utc});
+    store.RecordLabCertificate(
+        {c.sensor_index, c.certificate_number, lab.Identity(), published.published_utc});
     out->certificate_numbers.push_back(c.certificate_number);
     if (c.sensor_index != 0) continue;  // one sensor's report beside the session today
     for (const LabDocument& d : c.documents) {
-      const char* extension = d.media_type == "text/html" ? "html" : d.media_type == "text/plain" ? "txt" : nullptr;
+      const char* extension = d.media_type == "text/html"    ? "html"
+                              : d.media_type == "text/plain" ? "txt"
+                                                             : nullptr;
       if (extension == nullptr) continue;
       const std::string path = ReportPathFor(store.path(), extension);
       WriteFileAtomically(path, d.bytes);
@@ -82,7 +85,8 @@ SessionPublishOutcome NotReady(SessionPublishOutcome out, std::string why) {
 
 }  // namespace
 
-SessionPublishOutcome PublishSession(LabStore& lab, SessionStore& store, const std::string& default_procedure_path) {
+SessionPublishOutcome PublishSession(LabStore& lab, SessionStore& store,
+                                     const std::string& default_procedure_path) {
   SessionPublishOutcome out;
   out.path = store.path();
   try {
@@ -93,15 +97,18 @@ SessionPublishOutcome PublishSession(LabStore& lab, SessionStore& store, const s
     const std::optional<std::string> calibration_json = store.Result();
     if (!calibration_json) return NotReady(out, "no calibration: nothing to certify");
     if (info.device.empty())
-      return NotReady(out, "no device serial: the lab's register is by serial (the wizard's welcome asks it)");
+      return NotReady(out,
+                      "no device serial: the lab's register is by serial (the wizard's welcome asks it)");
     for (const LabCertificateMark& mark : store.LabCertificates())
       if (mark.lab.rfind("lab " + lab.LabId() + " ", 0) != 0)
-        return NotReady(out, fmt::format("already published to another lab's register, as certificate {} ({})",
-                                         mark.certificate_number, mark.lab));
+        return NotReady(out,
+                        fmt::format("already published to another lab's register, as certificate {} ({})",
+                                    mark.certificate_number, mark.lab));
     ReportInputs in = ReportInputsOfSession(store, default_procedure_path);
     in.meta.certificate_number.clear();  // the lab's number goes on by the renderer
     const ReportModel model = BuildReportModel(in);
-    const LabPublishResult published = lab.Publish(PublicationOf(info, *calibration_json, in, model), RendererOf(model));
+    const LabPublishResult published =
+        lab.Publish(PublicationOf(info, *calibration_json, in, model), RendererOf(model));
     out.kind = published.newly_published ? Kind::kPublished : Kind::kAlreadyPublished;
     WriteBack(lab, store, published, &out);
   } catch (const LabError& e) {
@@ -111,14 +118,16 @@ SessionPublishOutcome PublishSession(LabStore& lab, SessionStore& store, const s
   } catch (const Error& e) {
     // A store that took the session and a write-back that failed: the number is the lab's
     // still, and the next publish writes it (the store hands back what it holds).
-    out.message = out.certificate_numbers.empty() ? e.what() : fmt::format("{} (in the lab as {})", e.what(), fmt::join(out.certificate_numbers, ", "));
+    out.message = out.certificate_numbers.empty() ? e.what()
+                                                  : fmt::format("{} (in the lab as {})", e.what(),
+                                                                fmt::join(out.certificate_numbers, ", "));
     out.kind = Kind::kFailed;
   }
   return out;
 }
 
 std::vector<SessionPublishOutcome> PublishSessionFiles(LabStore& lab, const std::vector<std::string>& paths,
-                                                      const std::string& default_procedure_path) {
+                                                       const std::string& default_procedure_path) {
   std::vector<SessionPublishOutcome> outcomes;
   std::string unreachable;
   for (const std::string& path : paths) {
@@ -166,7 +175,8 @@ std::optional<SessionPublishOutcome> PublishIfLabConfigured(SessionStore& store,
 std::vector<std::string> UnpublishedSessions(const std::string& dir) {
   std::vector<std::string> backlog;
   for (const SessionInfo& s : ListSessions(dir).sessions)
-    if (s.state == SessionState::kDone && s.has_result && s.num_lab_certificates == 0) backlog.push_back(s.path);
+    if (s.state == SessionState::kDone && s.has_result && s.num_lab_certificates == 0)
+      backlog.push_back(s.path);
   return backlog;
 }
 
@@ -174,10 +184,14 @@ std::string DescribeOutcome(const SessionPublishOutcome& o) {
   const std::string who = o.name.empty() ? o.path : o.name;
   const std::string numbers = fmt::format("{}", fmt::join(o.certificate_numbers, ", "));
   switch (o.kind) {
-    case Kind::kPublished: return fmt::format("{}: published as certificate {}", who, numbers);
-    case Kind::kAlreadyPublished: return fmt::format("{}: already in the lab's register as certificate {}", who, numbers);
-    case Kind::kNotReady: return fmt::format("{}: not published, {}", who, o.message);
-    case Kind::kFailed: break;
+    case Kind::kPublished:
+      return fmt::format("{}: published as certificate {}", who, numbers);
+    case Kind::kAlreadyPublished:
+      return fmt::format("{}: already in the lab's register as certificate {}", who, numbers);
+    case Kind::kNotReady:
+      return fmt::format("{}: not published, {}", who, o.message);
+    case Kind::kFailed:
+      break;
   }
   return fmt::format("{}: not published: {}", who, o.message);
 }

@@ -38,12 +38,13 @@ struct SessionPublishOutcome {
 // Publishes the session `store` holds, opened read-write (the numbers are written back). Never
 // throws for the session's own problems: they are the outcome's. `default_procedure_path` gives
 // the certificate's limits and equipment as `accelcal report` does (app/session_report.h).
-SessionPublishOutcome PublishSession(LabStore& lab, SessionStore& store, const std::string& default_procedure_path);
+SessionPublishOutcome PublishSession(LabStore& lab, SessionStore& store,
+                                     const std::string& default_procedure_path);
 
 // Opens each session file read-write and publishes it, in order. Once the store is unreachable,
 // the rest are not tried (each says so): a bench offline publishes its backlog next time.
 std::vector<SessionPublishOutcome> PublishSessionFiles(LabStore& lab, const std::vector<std::string>& paths,
-                                                      const std::string& default_procedure_path);
+                                                       const std::string& default_procedure_path);
 
 // The backlog of `dir`: its sessions that are finished, hold a calibration and carry no lab
 // certificate number yet, by creation time. Throws accelcal::Error when `dir` cannot be read.

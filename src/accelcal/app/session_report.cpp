@@ -13,11 +13,15 @@ ReportInputs ReportInputsOfSession(const SessionStore& store, const std::string&
   const SessionInfo info = store.Info();
   const std::optional<std::string> result = store.Result();
   if (!result && !DescribeRecords(store).empty())
-    throw Error(fmt::format("session {} has no calibration: it holds records ({}), which another "
-                            "command analyses", info.path, DescribeRecords(store)));
+    throw Error(
+        fmt::format("session {} has no calibration: it holds records ({}), which another "
+                    "command analyses",
+                    info.path, DescribeRecords(store)));
   if (!result)
-    throw Error(fmt::format("session {} has no calibration yet: {} captures accepted; run the "
-                            "wizard to finish it", info.path, info.num_captures));
+    throw Error(
+        fmt::format("session {} has no calibration yet: {} captures accepted; run the "
+                    "wizard to finish it",
+                    info.path, info.num_captures));
   ReportInputs in = ReportInputsFromJournal(store, info.path);
   in.meta.device = info.device;
   in.meta.operator_name = info.operator_name;

@@ -6,14 +6,19 @@ namespace accelcal {
 namespace {
 
 // "" -> null: an absent value, as every JSON of accelcal writes it.
-nlohmann::json TextOrNull(const std::string& text) { return text.empty() ? nlohmann::json() : nlohmann::json(text); }
+nlohmann::json TextOrNull(const std::string& text) {
+  return text.empty() ? nlohmann::json() : nlohmann::json(text);
+}
 
-nlohmann::json DaysOrNull(const std::optional<long>& days) { return days ? nlohmann::json(*days) : nlohmann::json(); }
+nlohmann::json DaysOrNull(const std::optional<long>& days) {
+  return days ? nlohmann::json(*days) : nlohmann::json();
+}
 
 }  // namespace
 
 std::string LabHistoryJsonText(const LabHistory& h) {
-  nlohmann::json j = {{"device", h.serial}, {"device_type", TextOrNull(h.device_type)},
+  nlohmann::json j = {{"device", h.serial},
+                      {"device_type", TextOrNull(h.device_type)},
                       {"calibrations", nlohmann::json::array()}};
   for (const LabHistoryEntry& e : h.entries)
     j["calibrations"].push_back({{"certificate_number", e.certificate_number},
@@ -34,7 +39,8 @@ std::string LabHistoryJsonText(const LabHistory& h) {
 }
 
 std::string LabDueJsonText(const LabDueList& due) {
-  nlohmann::json j = {{"today", due.today}, {"within_days", due.within_days}, {"due", nlohmann::json::array()}};
+  nlohmann::json j = {
+      {"today", due.today}, {"within_days", due.within_days}, {"due", nlohmann::json::array()}};
   for (const LabDueItem& item : due.items)
     j["due"].push_back({{"kind", item.kind == LabDueItem::Kind::kDevice ? "device" : "equipment"},
                         {"id", item.id},

@@ -11,9 +11,9 @@
 namespace accelcal {
 
 // SQLSTATEs accelcal tells apart.
-inline constexpr const char* kSqlStateRefused = "42501";        // insufficient_privilege
-inline constexpr const char* kSqlStateUnreachable = "08001";    // could not connect (set by us)
-inline constexpr const char* kSqlStateConnectionLost = "08006"; // connection failure mid-way
+inline constexpr const char* kSqlStateRefused = "42501";         // insufficient_privilege
+inline constexpr const char* kSqlStateUnreachable = "08001";     // could not connect (set by us)
+inline constexpr const char* kSqlStateConnectionLost = "08006";  // connection failure mid-way
 
 class LabError : public Error {
  public:

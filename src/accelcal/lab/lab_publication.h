@@ -25,7 +25,7 @@ struct LabEquipmentUse {
   std::string role;          // "ruler", "turntable", "level", "prism"
   std::string equipment_id;  // may be empty: not identified
   std::string name;
-  std::string uncertainty;   // "0.5 mm", "not stated"
+  std::string uncertainty;  // "0.5 mm", "not stated"
   std::string traceability;
 };
 
@@ -36,7 +36,7 @@ struct LabPublication {
   std::string source;
   std::string operator_name;
   std::string place;
-  std::string gravity;       // as answered: "standard", "9.7803 +- 1e-05", "lat -34.9 alt 43"
+  std::string gravity;  // as answered: "standard", "9.7803 +- 1e-05", "lat -34.9 alt 43"
   double gravity_mps2 = 0.0;
   double gravity_sigma_mps2 = 0.0;
   std::string created_utc;
@@ -53,8 +53,8 @@ struct LabDocument {
 };
 
 // Renders the certificate of `sensor` with the lab's `certificate_number`.
-using LabCertificateRenderer =
-    std::function<std::vector<LabDocument>(const LabSensorCalibration& sensor, const std::string& certificate_number)>;
+using LabCertificateRenderer = std::function<std::vector<LabDocument>(const LabSensorCalibration& sensor,
+                                                                      const std::string& certificate_number)>;
 
 struct LabIssuedCertificate {
   int sensor_index = 0;

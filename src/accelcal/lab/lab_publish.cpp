@@ -27,8 +27,10 @@ void Validate(const LabPublication& p) {
   if (p.sensors.empty()) throw Error(fmt::format("session {} has no calibration to publish", p.session_name));
   for (const LabSensorCalibration& s : p.sensors)
     if (s.device_serial.empty())
-      throw Error(fmt::format("session {} names no device serial: the lab's register is by serial "
-                              "(the wizard's welcome asks it)", p.session_name));
+      throw Error(
+          fmt::format("session {} names no device serial: the lab's register is by serial "
+                      "(the wizard's welcome asks it)",
+                      p.session_name));
 }
 
 PgParam Number(double value) {
@@ -42,7 +44,8 @@ bool InsertSession(PgConnection& db, const LabPublication& p, std::string* publi
       "INSERT INTO accelcal.sessions (session_uuid, name, procedure, source, operator, place, gravity, "
       "gravity_mps2, gravity_sigma_mps2, created_utc, finished_utc, accelcal_version) "
       "VALUES ($1, $2, $3, $4, $5, $6, $7, $8, $9, $10, $11, $12) "
-      "ON CONFLICT (session_uuid) DO NOTHING RETURNING " + detail::IsoUtc("published_utc"),
+      "ON CONFLICT (session_uuid) DO NOTHING RETURNING " +
+          detail::IsoUtc("published_utc"),
       {PgText(p.session_uuid), PgText(p.session_name), PgText(p.procedure), PgText(p.source),
        PgText(p.operator_name), PgText(p.place), PgText(p.gravity), Number(p.gravity_mps2),
        Number(p.gravity_sigma_mps2), PgText(p.created_utc), PgText(p.finished_utc),
@@ -55,22 +58,25 @@ bool InsertSession(PgConnection& db, const LabPublication& p, std::string* publi
 void InsertSensor(PgConnection& db, const std::string& uuid, const LabSensorCalibration& s) {
   db.Exec("INSERT INTO accelcal.devices (serial) VALUES ($1) ON CONFLICT (serial) DO NOTHING",
           {PgText(s.device_serial)});
-  db.Exec("INSERT INTO accelcal.session_sensors (session_uuid, sensor_index, device_serial) "
-          "VALUES ($1, $2, $3)",
-          {PgText(uuid), PgInt(s.sensor_index), PgText(s.device_serial)});
-  db.Exec("INSERT INTO accelcal.calibrations (session_uuid, sensor_index, calibration_json, "
-          "calibration_sha256, verdict, date_utc) "
-          "VALUES ($1, $2, $3, encode(sha256(convert_to($3, 'UTF8')), 'hex'), $4, $5)",
-          {PgText(uuid), PgInt(s.sensor_index), PgText(s.calibration_json), PgText(s.verdict),
-           PgText(s.date_utc)});
+  db.Exec(
+      "INSERT INTO accelcal.session_sensors (session_uuid, sensor_index, device_serial) "
+      "VALUES ($1, $2, $3)",
+      {PgText(uuid), PgInt(s.sensor_index), PgText(s.device_serial)});
+  db.Exec(
+      "INSERT INTO accelcal.calibrations (session_uuid, sensor_index, calibration_json, "
+      "calibration_sha256, verdict, date_utc) "
+      "VALUES ($1, $2, $3, encode(sha256(convert_to($3, 'UTF8')), 'hex'), $4, $5)",
+      {PgText(uuid), PgInt(s.sensor_index), PgText(s.calibration_json), PgText(s.verdict),
+       PgText(s.date_utc)});
 }
 
 void InsertEquipment(PgConnection& db, const LabPublication& p) {
   for (const LabEquipmentUse& e : p.equipment)
-    db.Exec("INSERT INTO accelcal.session_equipment (session_uuid, role, equipment_id, name, "
-            "uncertainty, traceability) VALUES ($1, $2, $3, $4, $5, $6)",
-            {PgText(p.session_uuid), PgText(e.role), PgText(e.equipment_id), PgText(e.name),
-             PgText(e.uncertainty), PgText(e.traceability)});
+    db.Exec(
+        "INSERT INTO accelcal.session_equipment (session_uuid, role, equipment_id, name, "
+        "uncertainty, traceability) VALUES ($1, $2, $3, $4, $5, $6)",
+        {PgText(p.session_uuid), PgText(e.role), PgText(e.equipment_id), PgText(e.name),
+         PgText(e.uncertainty), PgText(e.traceability)});
 }
 
 // Draws the sensor's number, renders its certificate with it, stores both.
@@ -81,20 +87,22 @@ LabIssuedCertificate IssueCertificate(PgConnection& db, const std::string& uuid,
   issued.sensor_index = s.sensor_index;
   issued.certificate_number = drawn.Text(0, 1);
   issued.documents = render(s, issued.certificate_number);
-  db.Exec("INSERT INTO accelcal.certificates (certificate_number, seq, session_uuid, sensor_index) "
-          "VALUES ($1, $2, $3, $4)",
-          {PgText(issued.certificate_number), PgText(drawn.Text(0, 0)), PgText(uuid), PgInt(s.sensor_index)});
+  db.Exec(
+      "INSERT INTO accelcal.certificates (certificate_number, seq, session_uuid, sensor_index) "
+      "VALUES ($1, $2, $3, $4)",
+      {PgText(issued.certificate_number), PgText(drawn.Text(0, 0)), PgText(uuid), PgInt(s.sensor_index)});
   for (const LabDocument& d : issued.documents)
-    db.Exec("INSERT INTO accelcal.certificate_documents (certificate_number, media_type, content, sha256) "
-            "VALUES ($1, $2, $3, encode(sha256($3), 'hex'))",
-            {PgText(issued.certificate_number), PgText(d.media_type), PgBytes(d.bytes)});
+    db.Exec(
+        "INSERT INTO accelcal.certificate_documents (certificate_number, media_type, content, sha256) "
+        "VALUES ($1, $2, $3, encode(sha256($3), 'hex'))",
+        {PgText(issued.certificate_number), PgText(d.media_type), PgBytes(d.bytes)});
   return issued;
 }
 
 // The store holds the session already: the same calibrations (else the session changed after it
 // was published, and the lab keeps what it certified), and their certificates as stored.
 std::vector<LabIssuedCertificate> HeldCertificates(PgConnection& db, const LabPublication& p,
-                                                  std::string* published_utc) {
+                                                   std::string* published_utc) {
   const PgResult session = db.Exec(
       "SELECT " + detail::IsoUtc("published_utc") + ", bench FROM accelcal.sessions WHERE session_uuid = $1",
       {PgText(p.session_uuid)});
@@ -108,14 +116,16 @@ std::vector<LabIssuedCertificate> HeldCertificates(PgConnection& db, const LabPu
         "WHERE c.session_uuid = $1 AND c.sensor_index = $2",
         {PgText(p.session_uuid), PgInt(s.sensor_index), PgText(s.calibration_json)});
     if (row.rows() == 0)
-      throw Error(fmt::format("session {} is in the lab's register (published by {} on {}) without a "
-                              "certificate for sensor {}", p.session_name, session.Text(0, 1),
-                              *published_utc, s.sensor_index));
+      throw Error(
+          fmt::format("session {} is in the lab's register (published by {} on {}) without a "
+                      "certificate for sensor {}",
+                      p.session_name, session.Text(0, 1), *published_utc, s.sensor_index));
     if (row.Text(0, 1) != "t")
-      throw Error(fmt::format("session {} was published on {} as certificate {} with another calibration: "
-                              "its calibration changed since, and the lab keeps what it certified (a "
-                              "lab manager may withdraw {}; calibrate again in a new session)",
-                              p.session_name, *published_utc, row.Text(0, 0), row.Text(0, 0)));
+      throw Error(
+          fmt::format("session {} was published on {} as certificate {} with another calibration: "
+                      "its calibration changed since, and the lab keeps what it certified (a "
+                      "lab manager may withdraw {}; calibrate again in a new session)",
+                      p.session_name, *published_utc, row.Text(0, 0), row.Text(0, 0)));
     LabIssuedCertificate c;
     c.sensor_index = s.sensor_index;
     c.certificate_number = row.Text(0, 0);
@@ -149,7 +159,8 @@ LabPublishResult LabStore::Publish(const LabPublication& publication, const LabC
 std::vector<LabDocument> LabStore::CertificateDocuments(const std::string& certificate_number) const {
   const PgResult r = db_->Exec(
       "SELECT media_type, content FROM accelcal.certificate_documents WHERE certificate_number = $1 "
-      "ORDER BY media_type", {PgText(certificate_number)});
+      "ORDER BY media_type",
+      {PgText(certificate_number)});
   std::vector<LabDocument> documents;
   for (int i = 0; i < r.rows(); ++i) documents.push_back({r.Text(i, 0), r.Bytes(i, 1)});
   return documents;

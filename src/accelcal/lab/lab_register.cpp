@@ -23,23 +23,29 @@ std::optional<long> DaysLeft(const PgResult& r, int row, int column) {
 }  // namespace
 
 LabHistory LabStore::History(const std::string& serial) const {
-  const PgResult device = db_->Exec(
-      "SELECT coalesce(device_type, '') FROM accelcal.devices WHERE serial = $1", {PgText(serial)});
+  const PgResult device =
+      db_->Exec("SELECT coalesce(device_type, '') FROM accelcal.devices WHERE serial = $1", {PgText(serial)});
   if (device.rows() == 0) {
     const long long known = db_->Exec("SELECT count(*) FROM accelcal.devices").Int(0, 0);
-    throw Error(fmt::format("no device {} in the lab's register ({} device(s) published; `accelcal lab due "
-                            "--within 100000d` lists them)", serial, known));
+    throw Error(
+        fmt::format("no device {} in the lab's register ({} device(s) published; `accelcal lab due "
+                    "--within 100000d` lists them)",
+                    serial, known));
   }
   LabHistory h;
   h.serial = serial;
   h.device_type = device.Text(0, 0);
-  const PgResult r = db_->Exec(
-      "SELECT certificate_number, session, session_uuid::text, bench, " + IsoUtc("date_utc") +
-      ", verdict, status, procedure, operator, coalesce(approved_by, ''), "
-      "coalesce(" + IsoUtc("approved_utc") + ", ''), coalesce(withdrawn_by, ''), "
-      "coalesce(" + IsoUtc("withdrawn_utc") + ", ''), coalesce(withdrawn_reason, '') "
-      "FROM accelcal.device_history WHERE serial = $1 ORDER BY date_utc, seq",
-      {PgText(serial)});
+  const PgResult r =
+      db_->Exec("SELECT certificate_number, session, session_uuid::text, bench, " + IsoUtc("date_utc") +
+                    ", verdict, status, procedure, operator, coalesce(approved_by, ''), "
+                    "coalesce(" +
+                    IsoUtc("approved_utc") +
+                    ", ''), coalesce(withdrawn_by, ''), "
+                    "coalesce(" +
+                    IsoUtc("withdrawn_utc") +
+                    ", ''), coalesce(withdrawn_reason, '') "
+                    "FROM accelcal.device_history WHERE serial = $1 ORDER BY date_utc, seq",
+                {PgText(serial)});
   for (int i = 0; i < r.rows(); ++i) {
     LabHistoryEntry e;
     e.certificate_number = r.Text(i, 0);
@@ -70,15 +76,20 @@ LabDueList LabStore::Due(int within_days) const {
   // when its latest certificate runs out, at once without one.
   const PgResult r = db_->Exec(
       "SELECT 'device', serial, coalesce(device_type, ''), '', coalesce(last_certificate_number, ''), "
-      "coalesce(" + IsoDate("last_calibrated_utc") + ", ''), coalesce(" + IsoDate("due_utc") + ", ''), "
-      "due_utc::date - current_date AS days_left "
-      "FROM accelcal.device_due WHERE due_utc IS NULL OR due_utc::date <= current_date + $1::integer "
-      "UNION ALL "
-      "SELECT 'equipment', equipment_id, kind, name, coalesce(certificate_ref, ''), "
-      "coalesce(" + IsoDate("calibrated_on") + ", ''), coalesce(" + IsoDate("valid_until") + ", ''), "
-      "valid_until - current_date "
-      "FROM accelcal.equipment_due WHERE valid_until IS NULL OR valid_until <= current_date + $1::integer "
-      "ORDER BY days_left NULLS FIRST, 2",
+      "coalesce(" +
+          IsoDate("last_calibrated_utc") + ", ''), coalesce(" + IsoDate("due_utc") +
+          ", ''), "
+          "due_utc::date - current_date AS days_left "
+          "FROM accelcal.device_due WHERE due_utc IS NULL OR due_utc::date <= current_date + $1::integer "
+          "UNION ALL "
+          "SELECT 'equipment', equipment_id, kind, name, coalesce(certificate_ref, ''), "
+          "coalesce(" +
+          IsoDate("calibrated_on") + ", ''), coalesce(" + IsoDate("valid_until") +
+          ", ''), "
+          "valid_until - current_date "
+          "FROM accelcal.equipment_due WHERE valid_until IS NULL OR valid_until <= current_date + "
+          "$1::integer "
+          "ORDER BY days_left NULLS FIRST, 2",
       {PgInt(within_days)});
   for (int i = 0; i < r.rows(); ++i) {
     LabDueItem item;

@@ -195,7 +195,8 @@ CREATE TRIGGER certificate_status_rules BEFORE UPDATE ON accelcal.certificates
 -- What is published stays: no grant deletes it, and these refuse even the owner.
 CREATE FUNCTION accelcal.refuse_change() RETURNS trigger LANGUAGE plpgsql AS $$
 BEGIN
-  RAISE EXCEPTION '% of accelcal.%: published records are never changed or deleted (a certificate is withdrawn, never removed)',
+  RAISE EXCEPTION '% of accelcal.%: published records are never changed or deleted '
+    '(a certificate is withdrawn, never removed)',
     lower(TG_OP), TG_TABLE_NAME USING ERRCODE = 'insufficient_privilege';
 END $$;
 CREATE TRIGGER certificates_stay BEFORE DELETE ON accelcal.certificates
@@ -275,7 +276,8 @@ SELECT d.serial, d.device_type,
        coalesce(t.recal_interval_days, s.default_recal_interval_days) AS recal_interval_days,
        v.certificate_number AS last_certificate_number,
        v.date_utc AS last_calibrated_utc,
-       v.date_utc + make_interval(days => coalesce(t.recal_interval_days, s.default_recal_interval_days)) AS due_utc
+       v.date_utc + make_interval(days => coalesce(t.recal_interval_days, s.default_recal_interval_days))
+         AS due_utc
 FROM accelcal.devices d
 CROSS JOIN accelcal.lab_settings s
 LEFT JOIN accelcal.device_types t USING (device_type)
@@ -320,7 +322,8 @@ GRANT SELECT ON accelcal.device_history TO accelcal_bench, accelcal_manager;
 
 const std::vector<LabMigration>& LabMigrations() {
   static const std::vector<LabMigration> migrations = {
-      {1, "the register: devices, sessions, sensors, calibrations, certificates, equipment; roles", true, kVersion1},
+      {1, "the register: devices, sessions, sensors, calibrations, certificates, equipment; roles", true,
+       kVersion1},
       {2, "recalibration due: device types and intervals, device_due and equipment_due", true, kVersion2},
       {3, "the device_history view", true, kVersion3},
   };

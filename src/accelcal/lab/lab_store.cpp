@@ -41,9 +41,12 @@ bool LabConfigured() {
 
 std::string LabCertificateStatusText(LabCertificateStatus status) {
   switch (status) {
-    case LabCertificateStatus::kApproved: return "approved";
-    case LabCertificateStatus::kWithdrawn: return "withdrawn";
-    case LabCertificateStatus::kIssued: break;
+    case LabCertificateStatus::kApproved:
+      return "approved";
+    case LabCertificateStatus::kWithdrawn:
+      return "withdrawn";
+    case LabCertificateStatus::kIssued:
+      break;
   }
   return "issued";
 }
@@ -91,31 +94,37 @@ LabSchemaState LabStore::SchemaState() const {
       "THEN has_schema_privilege('accelcal', 'USAGE') ELSE false END");
   const bool exists = access.Text(0, 0) == "t";
   if (!exists) {
-    s.problem = fmt::format("the lab store ({}) has no accelcal register yet: its administrator "
-                            "creates it with `accelcal lab migrate`", db_->Where());
+    s.problem = fmt::format(
+        "the lab store ({}) has no accelcal register yet: its administrator "
+        "creates it with `accelcal lab migrate`",
+        db_->Where());
     return s;
   }
   if (access.Text(0, 1) != "t") {
-    s.problem = fmt::format("role {} may not use the lab's register ({}): the administrator makes it "
-                            "a bench (GRANT accelcal_bench TO {}) or a lab manager (accelcal_manager)",
-                            role_, db_->Where(), role_);
+    s.problem = fmt::format(
+        "role {} may not use the lab's register ({}): the administrator makes it "
+        "a bench (GRANT accelcal_bench TO {}) or a lab manager (accelcal_manager)",
+        role_, db_->Where(), role_);
     return s;
   }
   s.version = CurrentVersion(*db_);
   if (s.version < kLabSchemaVersion) {
-    s.problem = fmt::format("the lab store ({}) has register version {}, older than this accelcal's "
-                            "({}): its administrator runs `accelcal lab migrate` with this accelcal",
-                            db_->Where(), s.version, kLabSchemaVersion);
+    s.problem = fmt::format(
+        "the lab store ({}) has register version {}, older than this accelcal's "
+        "({}): its administrator runs `accelcal lab migrate` with this accelcal",
+        db_->Where(), s.version, kLabSchemaVersion);
     return s;
   }
   if (s.version > kLabSchemaVersion) {
     const detail::PgResult breaking = db_->Exec(
         "SELECT string_agg(version::text, ', ' ORDER BY version) FROM accelcal.schema_migrations "
-        "WHERE version > $1 AND NOT older_clients_ok", {PgInt(kLabSchemaVersion)});
+        "WHERE version > $1 AND NOT older_clients_ok",
+        {PgInt(kLabSchemaVersion)});
     if (!breaking.IsNull(0, 0)) {
-      s.problem = fmt::format("the lab store ({}) has register version {}, whose version(s) {} this "
-                              "accelcal ({}) cannot work with: update accelcal on this bench",
-                              db_->Where(), s.version, breaking.Text(0, 0), kLabSchemaVersion);
+      s.problem = fmt::format(
+          "the lab store ({}) has register version {}, whose version(s) {} this "
+          "accelcal ({}) cannot work with: update accelcal on this bench",
+          db_->Where(), s.version, breaking.Text(0, 0), kLabSchemaVersion);
       return s;
     }
   }
@@ -138,9 +147,11 @@ std::vector<int> LabStore::Migrate(int target) {
       detail::PgTransaction transaction(*db_);
       if (CurrentVersion(*db_) >= m.version) continue;  // applied already (rolled back: nothing written)
       db_->ExecScript(std::string(m.sql));
-      db_->Exec("INSERT INTO accelcal.schema_migrations (version, description, older_clients_ok) "
-                "VALUES ($1, $2, $3)",
-                {PgInt(m.version), PgText(std::string(m.description)), PgText(m.older_clients_ok ? "true" : "false")});
+      db_->Exec(
+          "INSERT INTO accelcal.schema_migrations (version, description, older_clients_ok) "
+          "VALUES ($1, $2, $3)",
+          {PgInt(m.version), PgText(std::string(m.description)),
+           PgText(m.older_clients_ok ? "true" : "false")});
       transaction.Commit();
       applied.push_back(m.version);
     }

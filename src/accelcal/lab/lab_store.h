@@ -40,7 +40,7 @@ std::string LabCertificateStatusText(LabCertificateStatus status);  // "issued",
 // Registering an item of equipment, or a new certificate of an item already registered.
 struct LabEquipmentRegistration {
   std::string id;
-  std::string kind;             // "ruler", "turntable", "level", "prism", ...
+  std::string kind;  // "ruler", "turntable", "level", "prism", ...
   std::string name;
   std::string certificate_ref;  // its calibration certificate's reference
   std::string calibrated_on;    // "2026-01-10"
@@ -49,9 +49,9 @@ struct LabEquipmentRegistration {
 };
 
 struct LabSchemaState {
-  int version = 0;                   // 0: no accelcal schema yet
-  bool usable = false;               // this accelcal may read and publish with it
-  std::string problem;               // why not, and what to do
+  int version = 0;      // 0: no accelcal schema yet
+  bool usable = false;  // this accelcal may read and publish with it
+  std::string problem;  // why not, and what to do
 };
 
 class LabStore {

@@ -15,7 +15,8 @@ template <typename F>
 void Load(void* library, const char* name, F* function) {
   void* symbol = dlsym(library, name);
   if (symbol == nullptr)
-    throw LabError(fmt::format("{} has no {}: a libpq older than accelcal needs", kLibPq, name), kSqlStateUnreachable);
+    throw LabError(fmt::format("{} has no {}: a libpq older than accelcal needs", kLibPq, name),
+                   kSqlStateUnreachable);
   *function = reinterpret_cast<F>(symbol);
 }
 
@@ -24,7 +25,9 @@ LibPq LoadLibPq() {
   void* library = dlopen(kLibPq, RTLD_NOW | RTLD_LOCAL);
   if (library == nullptr)
     throw LabError(fmt::format("the lab store needs PostgreSQL's client library {} (Debian package "
-                               "libpq5): {}", kLibPq, dlerror()), kSqlStateUnreachable);
+                               "libpq5): {}",
+                               kLibPq, dlerror()),
+                   kSqlStateUnreachable);
   LibPq pq{};
   Load(library, "PQconnectdbParams", &pq.connectdb_params);
   Load(library, "PQstatus", &pq.status);

@@ -21,7 +21,8 @@ PgResult::PgResult(PgResult&& other) noexcept : result_(std::exchange(other.resu
 int PgResult::rows() const { return Pq().ntuples(result_); }
 
 std::string PgResult::Text(int row, int column) const {
-  return std::string(Pq().getvalue(result_, row, column), static_cast<size_t>(Pq().getlength(result_, row, column)));
+  return std::string(Pq().getvalue(result_, row, column),
+                     static_cast<size_t>(Pq().getlength(result_, row, column)));
 }
 
 bool PgResult::IsNull(int row, int column) const { return Pq().getisnull(result_, row, column) == 1; }
@@ -116,13 +117,15 @@ void PgConnection::Fail(pg_result* result, const std::string& what) {
   if (result != nullptr) {
     if (const char* state = Pq().result_error_field(result, PG_DIAG_SQLSTATE)) sqlstate = state;
     if (const char* primary = Pq().result_error_field(result, PG_DIAG_MESSAGE_PRIMARY)) message = primary;
-    if (const char* detail = Pq().result_error_field(result, PG_DIAG_MESSAGE_DETAIL)) message += std::string(" (") + detail + ")";
+    if (const char* detail = Pq().result_error_field(result, PG_DIAG_MESSAGE_DETAIL))
+      message += std::string(" (") + detail + ")";
     Pq().clear(result);
   }
   if (Pq().status(conn_) != CONNECTION_OK) {
     if (sqlstate.empty() || sqlstate.rfind("08", 0) != 0) sqlstate = kSqlStateConnectionLost;
     if (message.empty()) message = OneLine(Pq().error_message(conn_));
-    throw LabError(fmt::format("lost the connection to the lab store ({}) {}: {}", where_, what, message), sqlstate);
+    throw LabError(fmt::format("lost the connection to the lab store ({}) {}: {}", where_, what, message),
+                   sqlstate);
   }
   if (message.empty()) message = OneLine(Pq().error_message(conn_));
   if (sqlstate == kSqlStateRefused)
@@ -139,7 +142,7 @@ PgResult PgConnection::Exec(const std::string& sql, const std::vector<PgParam>& 
     formats.push_back(p.binary ? 1 : 0);
   }
   pg_result* result = Pq().exec_params(conn_, sql.c_str(), static_cast<int>(params.size()), nullptr,
-                                   values.data(), lengths.data(), formats.data(), 0);
+                                       values.data(), lengths.data(), formats.data(), 0);
   const ExecStatusType status = result ? Pq().result_status(result) : PGRES_FATAL_ERROR;
   if (status != PGRES_COMMAND_OK && status != PGRES_TUPLES_OK) {
     Fail(result, StatementKind(sql));

@@ -12,8 +12,6 @@ inline std::string IsoUtc(const std::string& column) {
 }
 
 // `column` (a date or timestamptz) as "2026-03-01", UTC.
-inline std::string IsoDate(const std::string& column) {
-  return "to_char(" + column + ", 'YYYY-MM-DD')";
-}
+inline std::string IsoDate(const std::string& column) { return "to_char(" + column + ", 'YYYY-MM-DD')"; }
 
 }  // namespace accelcal::detail
