@@ -21,7 +21,7 @@ int main(int argc, char** argv) {
       "With no subcommand: the guided wizard on the virtual bench, in a new session.\n\n"
       "Example:\n"
       "  accelcal wizard --source serial:/dev/ttyUSB0@115200 --session bench.db\n"
-      "  accelcal simulate scenarios/bench_default.toml -o captures.csv\n"
+      "  accelcal simulate bench_default -o captures.csv\n"
       "  accelcal fit captures.csv -o cal.json\n"
       "  accelcal apply cal.json < raw.txt > calibrated.txt",
       "accelcal"};
