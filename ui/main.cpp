@@ -10,6 +10,7 @@
 #include "accelcal/base/version.h"
 #include "accelcal/base/error.h"
 #include "accelcal/base/safe_text.h"
+#include "cli/cli_checks.h"
 #include "cli/commands.h"
 #include "cli/usage_errors.h"
 #include "cli/wizard.h"
@@ -63,6 +64,7 @@ int main(int argc, char** argv) {
   accelcal::cli::SetupAllanCommand(app);
   accelcal::cli::SetupNoiseCommand(app);
   accelcal::cli::SetupHelpCommands(app, "accelcal " + VersionText());  // last: it walks the others
+  accelcal::cli::RefuseNegativeWholeNumbers(app);
 
   try {
     app.parse(argc, argv);
