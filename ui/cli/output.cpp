@@ -4,6 +4,7 @@
 
 #include "accelcal/base/error.h"
 #include "accelcal/io/atomic_write.h"
+#include "cli/shipped_files.h"
 
 namespace accelcal::cli {
 
@@ -24,7 +25,7 @@ std::string ShortUtc(const std::string& iso) {
 }
 
 std::string ShippedProcedurePath(const std::string& file_name) {
-  return std::string(ACCELCAL_PROCEDURES_DIR) + "/" + file_name;
+  return (ShippedDir(kShippedProcedures) / file_name).string();
 }
 
 }  // namespace accelcal::cli
