@@ -9,10 +9,12 @@ packages=(
   g++ cmake make pkg-config tmux jq
   libeigen3-dev libnlopt-cxx-dev libncurses-dev libsqlite3-dev libtomlplusplus-dev
   nlohmann-json3-dev libcli11-dev libfmt-dev libgtest-dev libbenchmark-dev
+  libzstd-dev liblz4-dev libbz2-dev
 )
 # Only the tests need these: headless Chromium renders the HTML report and prints it to PDF,
-# poppler-utils reads the PDF's pages back (tests/e2e/report_html.sh).
-test_packages=(chromium poppler-utils)
+# poppler-utils reads the PDF's pages back (tests/e2e/report_html.sh); Node.js and its npm run
+# the bag writers and readers written elsewhere that the bag tests install (tests/e2e/bags_*.sh).
+test_packages=(chromium poppler-utils nodejs)
 [ "${1:-}" = "--no-test" ] || packages+=("${test_packages[@]}")
 
 missing=()

@@ -18,5 +18,7 @@ CLI::Validator Positive();
 // lets any exception other than its ValidationError pass through its validators, so main
 // reports it as bad input.
 CLI::Validator InputFile();
+// As InputFile, or a ROS 2 bag folder (a directory holding metadata.yaml).
+CLI::Validator InputFileOrBag();
 
 }  // namespace accelcal::cli
