@@ -21,9 +21,9 @@ SampleFormat BagFormat(const std::string& path, const SampleFormat& given) {
   SampleFormat f = given;
   if (given.unit.kind != ReadingUnit::Kind::kMps2) {
     if (given.unit_declared)
-      throw Error(fmt::format("{} is a bag: sensor_msgs/Imu's linear_acceleration is in m/s^2, "
-                              "not {}{}", path, given.unit.Name(),
-                              given.unit.is_counts() ? " (a calibration made from counts does not apply to it)" : ""));
+      throw Error(fmt::format("{} is a bag: sensor_msgs/Imu's linear_acceleration is in m/s^2, and "
+                              "the readings were declared in {} (--unit, or the calibration's "
+                              "unit)", path, given.unit.Name()));
     f.unit = ReadingUnit{ReadingUnit::Kind::kMps2, ReadingUnit::kDefaultCountsPerUnit};
   }
   f.unit_declared = true;
