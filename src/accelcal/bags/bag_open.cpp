@@ -39,7 +39,9 @@ std::optional<BagKind> DetectBag(const std::string& path) {
   const ssize_t got = ::read(fd, head, sizeof head);
   ::close(fd);
   if (got >= 8 && std::memcmp(head, "\x89MCAP0\r\n", 8) == 0) return BagKind::kMcap;
-  if (got >= 9 && std::memcmp(head, "#ROSBAG V", 9) == 0) return BagKind::kRos1;
+  if ((got >= 9 && std::memcmp(head, "#ROSBAG V", 9) == 0) ||
+      (got >= 12 && std::memcmp(head, "#ROSRECORD V", 12) == 0))
+    return BagKind::kRos1;  // older formats too: the ROS 1 reader refuses them by name
   if (got == 16 && std::memcmp(head, "SQLite format 3\0", 16) == 0 &&
       (EndsWith(path, ".db3") || Ros2SqliteFile::HoldsRosbag2Tables(path)))
     return BagKind::kRos2Sqlite;

@@ -108,13 +108,13 @@ std::string CompareFields(const std::vector<Field>& fields,
                           const std::vector<std::pair<std::string_view, std::string_view>>& expected,
                           std::string_view what) {
   for (size_t i = 0; i < expected.size(); ++i) {
+    const std::string_view shown = expected[i].first.substr(0, expected[i].first.find('|'));
     if (i >= fields.size())
-      return fmt::format("{} ends before its field '{} {}'", what, expected[i].first, expected[i].second);
+      return fmt::format("{} ends before its field '{} {}'", what, shown, expected[i].second);
     if (!TypeIs(fields[i].type, expected[i].first) || fields[i].name != expected[i].second)
       return fmt::format("{} has '{} {}' where '{} {}' belongs", what,
                          detail::PrintableExcerpt(fields[i].type, 40),
-                         detail::PrintableExcerpt(fields[i].name, 40), expected[i].first,
-                         expected[i].second);
+                         detail::PrintableExcerpt(fields[i].name, 40), shown, expected[i].second);
   }
   if (fields.size() > expected.size())
     return fmt::format("{} has a field '{} {}' after its last", what,

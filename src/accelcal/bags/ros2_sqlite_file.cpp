@@ -35,11 +35,22 @@ class Statement {
   sqlite3_stmt* s_ = nullptr;
 };
 
-bool HasTable(sqlite3* db, const char* name) {
-  Statement s(db, "SELECT 1 FROM sqlite_master WHERE type = 'table' AND name = ?");
-  if (s.get() == nullptr) return false;
-  sqlite3_bind_text(s.get(), 1, name, -1, SQLITE_STATIC);
-  return sqlite3_step(s.get()) == SQLITE_ROW;
+// The names of the database's tables; false with *error when SQLite cannot list them (a file
+// that is not a database, or is damaged where its schema lies).
+bool TableNames(sqlite3* db, std::vector<std::string>* names, std::string* error) {
+  Statement s(db, "SELECT name FROM sqlite_master WHERE type = 'table'");
+  if (s.get() == nullptr) {
+    *error = sqlite3_errmsg(db);
+    return false;
+  }
+  int rc;
+  while ((rc = sqlite3_step(s.get())) == SQLITE_ROW) names->push_back(ColumnText(s.get(), 0));
+  if (rc != SQLITE_DONE) *error = sqlite3_errmsg(db);
+  return rc == SQLITE_DONE;
+}
+
+bool Holds(const std::vector<std::string>& names, const char* name) {
+  return std::find(names.begin(), names.end(), name) != names.end();
 }
 
 sqlite3* OpenReadOnly(const std::string& path, std::string* error) {
@@ -60,7 +71,8 @@ bool Ros2SqliteFile::HoldsRosbag2Tables(const std::string& path) {
   std::string error;
   sqlite3* db = OpenReadOnly(path, &error);
   if (db == nullptr) return false;
-  const bool holds = HasTable(db, "topics") && HasTable(db, "messages");
+  std::vector<std::string> names;
+  const bool holds = TableNames(db, &names, &error) && Holds(names, "topics") && Holds(names, "messages");
   sqlite3_close(db);
   return holds;
 }
@@ -69,14 +81,20 @@ Ros2SqliteFile::Ros2SqliteFile(const std::string& path) : path_(path) {
   std::string error;
   db_ = OpenReadOnly(path, &error);
   if (db_ == nullptr) throw Error(fmt::format("cannot open '{}': {}", path, error));
-  if (!HasTable(db_, "topics") || !HasTable(db_, "messages")) {
-    const std::string why = sqlite3_errcode(db_) == SQLITE_NOTADB
-                                ? "not an SQLite database"
-                                : "an SQLite file without rosbag2's topics and messages tables";
+  std::vector<std::string> names;
+  if (!TableNames(db_, &names, &error)) {
     sqlite3_close(db_);
     db_ = nullptr;
-    throw Error(fmt::format("{}: not a ROS 2 bag ({})", path, why));
+    throw Error(fmt::format("{}: its SQLite database cannot be read (SQLite: {}): damaged, or cut "
+                            "short where its tables are described", path, error));
   }
+  if (!Holds(names, "topics") || !Holds(names, "messages")) {
+    sqlite3_close(db_);
+    db_ = nullptr;
+    throw Error(fmt::format("{}: not a ROS 2 bag (an SQLite file without rosbag2's topics and "
+                            "messages tables)", path));
+  }
+  has_definitions_ = Holds(names, "message_definitions");
   ReadTopics();
 }
 
@@ -88,7 +106,7 @@ Ros2SqliteFile::~Ros2SqliteFile() {
 void Ros2SqliteFile::ReadTopics() {
   // Jazzy's bags hold the definitions of their types (rosbag2 schema 4); older ones do not.
   std::map<std::string, std::pair<std::string, std::string>> definitions;
-  if (HasTable(db_, "message_definitions")) {
+  if (has_definitions_) {
     Statement s(db_, "SELECT topic_type, encoding, encoded_message_definition FROM message_definitions");
     while (s.get() != nullptr && sqlite3_step(s.get()) == SQLITE_ROW)
       definitions[ColumnText(s.get(), 0)] = {ColumnText(s.get(), 1), ColumnText(s.get(), 2)};

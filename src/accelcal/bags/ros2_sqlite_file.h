@@ -51,6 +51,7 @@ class Ros2SqliteFile final : public BagFile {
   sqlite3* db_ = nullptr;
   sqlite3_stmt* rows_ = nullptr;
   std::vector<Topic> topics_;
+  bool has_definitions_ = false;  // Jazzy's message_definitions table
   bool started_ = false;
   bool done_ = false;
   long long rows_read_ = 0;
