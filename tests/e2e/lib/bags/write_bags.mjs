@@ -7,7 +7,7 @@
 // are laid out here from the published format description (wiki.ros.org/Bags/Format/2.0), and
 // read_ros1.mjs reads them back with @foxglove/rosbag to prove them.
 //
-// Usage: node write_bags.mjs SAMPLES OUTDIR [--variant NAME]
+// Usage: node write_bags.mjs SAMPLES OUTDIR [--variant NAME] [--forms LIST]
 //   SAMPLES  lines "t ax ay az" in ADC counts (accelcal's text recording); converted to m/s^2 as
 //            an IMU driver would, a = (counts - 2048) / 34.8, and stamped from t
 //            (1700000000 s + t, to the nanosecond)
@@ -21,6 +21,8 @@
 //   --variant zero_stamps   every header stamp zero (a driver that never set them)
 //   --variant wrong_schema  (MCAP) the IMU channel's schema says sensor_msgs/msg/Imu but defines
 //                           its Header with a seq field, as ROS 1's
+//   --forms LIST            only these bags (comma-separated: mcap_zstd, mcap_lz4, mcap_none, db3,
+//                           folders, bag_none, bag_bz2, bag_lz4; default all)
 import fs from "node:fs";
 import path from "node:path";
 import { McapWriter } from "@mcap/core";
@@ -34,7 +36,10 @@ import common from "@foxglove/rosmsg-msgs-common";
 import { stringify, md5 } from "@foxglove/rosmsg";
 
 const [samplesPath, outDir, ...rest] = process.argv.slice(2);
-const variant = rest[0] === "--variant" ? rest[1] : "";
+const option = (name, fallback) => (rest.indexOf(name) >= 0 ? rest[rest.indexOf(name) + 1] : fallback);
+const variant = option("--variant", "");
+const formsOption = option("--forms", "all");
+const wanted = (form) => formsOption === "all" || formsOption.split(",").includes(form);
 if (!samplesPath || !outDir) {
   console.error("usage: node write_bags.mjs SAMPLES OUTDIR [--variant NAME]");
   process.exit(2);
@@ -94,8 +99,14 @@ for (const [i, s] of samples.entries()) {
 if (variant === "zero_stamps") for (const s of samples) s.sec = s.nsec = 0;
 
 // The text: t as the bag reader computes it from the stamp, the values as doubles print.
-const text = samples.map((s) => `${s.sec + s.nsec * 1e-9} ${s.a[0]} ${s.a[1]} ${s.a[2]}`);
-fs.writeFileSync(path.join(outDir, "imu.txt"), text.join("\n") + "\n");
+{
+  const fd = fs.openSync(path.join(outDir, "imu.txt"), "w");
+  for (let i = 0; i < samples.length; i += 10000) {
+    const text = samples.slice(i, i + 10000).map((s) => `${s.sec + s.nsec * 1e-9} ${s.a[0]} ${s.a[1]} ${s.a[2]}\n`);
+    fs.writeSync(fd, text.join(""));
+  }
+  fs.closeSync(fd);
+}
 
 // /status, a String topic at about 1 Hz over the same span.
 const statuses = [];
@@ -131,11 +142,12 @@ function imuObject(s, ros1) {
 }
 
 // --- MCAP (ROS 2 profile) ---------------------------------------------------------------------
+// The writer's output, straight to the file.
 class Sink {
-  constructor() { this.parts = []; this.size = 0n; }
-  async write(buffer) { this.parts.push(Buffer.from(buffer)); this.size += BigInt(buffer.byteLength); }
+  constructor(file) { this.fd = fs.openSync(file, "w"); this.size = 0n; }
+  async write(buffer) { fs.writeSync(this.fd, buffer); this.size += BigInt(buffer.byteLength); }
   position() { return this.size; }
-  bytes() { return Buffer.concat(this.parts); }
+  close() { fs.closeSync(this.fd); }
 }
 
 async function writeMcap(file, compression) {
@@ -145,7 +157,7 @@ async function writeMcap(file, compression) {
     lz4: (data) => ({ compression: "lz4", compressedData: lz4js.compress(data) }),
     none: undefined,
   };
-  const sink = new Sink();
+  const sink = new Sink(file);
   const writer = new McapWriter({ writable: sink, chunkSize: 64 * 1024, compressChunk: compressors[compression] });
   await writer.start({ profile: "ros2", library: "write_bags.mjs (@mcap/core)" });
   let imuDefinition = stringify(ros2Imu);
@@ -165,7 +177,7 @@ async function writeMcap(file, compression) {
     await writer.addMessage({ channelId: channels[topic], sequence: sequence++, logTime: receiveNs, publishTime: receiveNs, data });
   }
   await writer.end();
-  fs.writeFileSync(file, sink.bytes());
+  sink.close();
 }
 
 // --- ROS 2 SQLite (rosbag2's sqlite3 storage, schema version 3 as Humble writes it) -----------
@@ -260,7 +272,9 @@ function writeRos1(file, compression) {
   const connectionRecord = (c) => record([op(0x07), ["conn", u32(c.id)], ["topic", c.topic]],
     fields([["topic", c.topic], ["type", c.type], ["md5sum", md5(c.definitions)],
             ["message_definition", stringify(c.definitions)], ["callerid", "/imu_driver"], ["latching", "0"]]));
-  const parts = [Buffer.from("#ROSBAG V2.0\n")];
+  const fd = fs.openSync(file, "w");
+  const parts = { push: (b) => fs.writeSync(fd, b) };
+  parts.push(Buffer.from("#ROSBAG V2.0\n"));
   const headerAt = 13;
   parts.push(Buffer.alloc(4096));  // the bag header, written last (it holds index_pos)
   let pos = headerAt + 4096;
@@ -314,23 +328,25 @@ function writeRos1(file, compression) {
   // The bag header record, padded with spaces to 4096 bytes in all.
   const header = fields([op(0x03), ["index_pos", u64(indexPos)], ["conn_count", u32(conns.length)], ["chunk_count", u32(chunkInfos.length)]]);
   const padding = 4096 - 4 - header.length - 4;
-  parts[1] = Buffer.concat([u32(header.length), header, u32(padding), Buffer.alloc(padding, " ")]);
-  fs.writeFileSync(file, Buffer.concat(parts));
+  fs.writeSync(fd, Buffer.concat([u32(header.length), header, u32(padding), Buffer.alloc(padding, " ")]), 0, 4096, headerAt);
+  fs.closeSync(fd);
 }
 
 // --- All of them ------------------------------------------------------------------------------
 const out = (name) => path.join(outDir, name);
-await writeMcap(out("imu_zstd.mcap"), "zstd");
+if (wanted("mcap_zstd") || wanted("folders")) await writeMcap(out("imu_zstd.mcap"), "zstd");
 if (variant !== "wrong_schema") {
-  await writeMcap(out("imu_lz4.mcap"), "lz4");
-  await writeMcap(out("imu_none.mcap"), "none");
-  await writeDb3(out("imu.db3"));
-  fs.mkdirSync(out("imu_sqlite"), { recursive: true });
-  fs.copyFileSync(out("imu.db3"), out("imu_sqlite/imu_sqlite_0.db3"));
-  writeMetadata(out("imu_sqlite"), "sqlite3", "imu_sqlite_0.db3");
-  fs.mkdirSync(out("imu_mcapdir"), { recursive: true });
-  fs.copyFileSync(out("imu_zstd.mcap"), out("imu_mcapdir/imu_mcapdir_0.mcap"));
-  writeMetadata(out("imu_mcapdir"), "mcap", "imu_mcapdir_0.mcap");
-  for (const c of ["none", "bz2", "lz4"]) writeRos1(out(`imu_${c}.bag`), c);
+  if (wanted("mcap_lz4")) await writeMcap(out("imu_lz4.mcap"), "lz4");
+  if (wanted("mcap_none")) await writeMcap(out("imu_none.mcap"), "none");
+  if (wanted("db3") || wanted("folders")) await writeDb3(out("imu.db3"));
+  if (wanted("folders")) {
+    fs.mkdirSync(out("imu_sqlite"), { recursive: true });
+    fs.copyFileSync(out("imu.db3"), out("imu_sqlite/imu_sqlite_0.db3"));
+    writeMetadata(out("imu_sqlite"), "sqlite3", "imu_sqlite_0.db3");
+    fs.mkdirSync(out("imu_mcapdir"), { recursive: true });
+    fs.copyFileSync(out("imu_zstd.mcap"), out("imu_mcapdir/imu_mcapdir_0.mcap"));
+    writeMetadata(out("imu_mcapdir"), "mcap", "imu_mcapdir_0.mcap");
+  }
+  for (const c of ["none", "bz2", "lz4"]) if (wanted(`bag_${c}`)) writeRos1(out(`imu_${c}.bag`), c);
 }
 console.log(`wrote ${samples.length} IMU samples on ${imuTopics.join(", ")} and ${statuses.length} /status messages to ${outDir}`);
