@@ -162,8 +162,15 @@ TEST(BagImu, SchemaChecks) {
 }
 
 TEST(BagCodec, WholeAndCutFrames) {
+  // About 500 kB of numbers that compress but not to nothing: several blocks of either codec.
   std::string data;
-  for (int i = 0; i < 20000; ++i) data += "message " + std::to_string(i % 97) + ";";
+  uint64_t x = 88172645463325252ull;
+  for (int i = 0; i < 40000; ++i) {
+    x ^= x << 13;
+    x ^= x >> 7;
+    x ^= x << 17;
+    data += "sample " + std::to_string(x % 100000) + ";";
+  }
   std::vector<uint8_t> zstd(ZSTD_compressBound(data.size()));
   zstd.resize(ZSTD_compress(zstd.data(), zstd.size(), data.data(), data.size(), 3));
   std::vector<uint8_t> lz4(LZ4F_compressFrameBound(data.size(), nullptr));
@@ -316,7 +323,7 @@ TEST(BagMcap, TinyFileReadAndItsDamage) {
     }
     ADD_FAILURE() << "a bad CRC read";
   } catch (const Error& e) {
-    EXPECT_TRUE(Contains(e.what(), "chunk 1 (at byte 43): its records' CRC-32 is ")) << e.what();
+    EXPECT_TRUE(Contains(e.what(), "chunk 1 (at byte 38): its records' CRC-32 is ")) << e.what();
   }
 
   // Cut inside the second message: the first is read, and the cut said.
