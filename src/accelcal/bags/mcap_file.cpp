@@ -18,15 +18,15 @@ constexpr size_t kRecordHead = 9;     // opcode and uint64 length
 constexpr size_t kFooterBody = 20;    // summary_start, summary_offset_start, summary_crc
 
 enum McapOp : uint8_t {
-  kHeader = 0x01,
-  kFooter = 0x02,
-  kSchema = 0x03,
-  kChannel = 0x04,
-  kMessage = 0x05,
-  kChunk = 0x06,
-  kChunkIndex = 0x08,
-  kStatistics = 0x0B,
-  kDataEnd = 0x0F,
+  kMcapHeader = 0x01,
+  kMcapFooter = 0x02,
+  kMcapSchema = 0x03,
+  kMcapChannel = 0x04,
+  kMcapMessage = 0x05,
+  kMcapChunk = 0x06,
+  kMcapChunkIndex = 0x08,
+  kMcapStatistics = 0x0B,
+  kMcapDataEnd = 0x0F,
 };
 
 constexpr size_t kMessageHead = 2 + 4 + 8 + 8;  // channel_id, sequence, log_time, publish_time
@@ -37,11 +37,11 @@ constexpr uint64_t kMaxChunkBytes = uint64_t{1} << 32;
 
 std::string_view McapRecordName(uint8_t op) {
   switch (op) {
-    case kHeader: return "Header";
-    case kSchema: return "Schema";
-    case kChannel: return "Channel";
-    case kMessage: return "Message";
-    case kChunk: return "Chunk";
+    case kMcapHeader: return "Header";
+    case kMcapSchema: return "Schema";
+    case kMcapChannel: return "Channel";
+    case kMcapMessage: return "Message";
+    case kMcapChunk: return "Chunk";
     default: return "";
   }
 }
@@ -74,7 +74,7 @@ void McapFile::ReadSummary() {
   if (size < sizeof kMcapMagic + tail) return;
   if (std::memcmp(d + size - sizeof kMcapMagic, kMcapMagic, sizeof kMcapMagic) != 0) return;
   const size_t footer_at = size - tail;
-  if (d[footer_at] != kFooter || LoadLittle<uint64_t>(d + footer_at + 1) != kFooterBody) return;
+  if (d[footer_at] != kMcapFooter || LoadLittle<uint64_t>(d + footer_at + 1) != kFooterBody) return;
   ByteReader footer(d + footer_at + kRecordHead, kFooterBody);
   const uint64_t summary_start = footer.U64();
   const uint64_t summary_offset_start = footer.U64();
@@ -123,9 +123,9 @@ bool McapFile::SummaryCrcMatches(uint64_t summary_start, size_t footer_at) const
 void McapFile::ParseSummaryRecord(uint8_t op, const uint8_t* body, uint64_t length) {
   ByteReader r(body, length);
   switch (op) {
-    case kSchema: AddSchema(body, length); return;
-    case kChannel: AddChannel(body, length); return;
-    case kStatistics: {
+    case kMcapSchema: AddSchema(body, length); return;
+    case kMcapChannel: AddChannel(body, length); return;
+    case kMcapStatistics: {
       r.Skip(8 + 2 + 4 + 4 + 4 + 4);
       message_start_ns_ = r.U64();
       message_end_ns_ = r.U64();
@@ -138,7 +138,7 @@ void McapFile::ParseSummaryRecord(uint8_t op, const uint8_t* body, uint64_t leng
       has_statistics_ = r.ok() && !channel_counts_.empty();
       return;
     }
-    case kChunkIndex: {
+    case kMcapChunkIndex: {
       r.Skip(8 + 8 + 8 + 8);
       r.Skip(r.U32());  // message_index_offsets
       r.Skip(8);        // message_index_length
@@ -232,7 +232,7 @@ bool McapFile::ReadBatch(MessageSink* sink) {
     const uint64_t available = size - body_at;
     if (length > available) {
       chunk_offset_ = pos_;
-      if (op == kChunk) {
+      if (op == kMcapChunk) {
         ReadChunk(body, available, length, sink);
       } else {
         const std::string_view name = McapRecordName(op);
@@ -247,16 +247,16 @@ bool McapFile::ReadBatch(MessageSink* sink) {
     }
     pos_ = body_at + static_cast<size_t>(length);
     switch (op) {
-      case kSchema: AddSchema(body, length); break;
-      case kChannel: AddChannel(body, length); break;
-      case kMessage: OnMessage(body, length, sink); break;
-      case kChunk:
+      case kMcapSchema: AddSchema(body, length); break;
+      case kMcapChannel: AddChannel(body, length); break;
+      case kMcapMessage: OnMessage(body, length, sink); break;
+      case kMcapChunk:
         chunk_offset_ = body_at - kRecordHead;
         ReadChunk(body, length, length, sink);
         file_.ReleaseBefore(pos_);
         return true;
-      case kDataEnd:
-      case kFooter:
+      case kMcapDataEnd:
+      case kMcapFooter:
         done_ = true;
         break;
       default: break;  // message indexes, attachments, metadata: nothing for us
@@ -346,11 +346,11 @@ void McapFile::ParseRecords(const uint8_t* data, size_t size, bool cut, MessageS
     }
     const uint8_t* body = data + p;
     p += static_cast<size_t>(length);
-    if (op == kMessage) {
+    if (op == kMcapMessage) {
       OnMessage(body, length, sink);
-    } else if (op == kSchema) {
+    } else if (op == kMcapSchema) {
       AddSchema(body, length);
-    } else if (op == kChannel) {
+    } else if (op == kMcapChannel) {
       AddChannel(body, length);
     }
   }

@@ -15,12 +15,12 @@ namespace {
 constexpr std::string_view kRos1Magic = "#ROSBAG V2.0\n";
 
 enum Ros1Op : uint8_t {
-  kMessageData = 0x02,
-  kBagHeader = 0x03,
-  kIndexData = 0x04,
-  kChunk = 0x05,
-  kChunkInfo = 0x06,
-  kConnection = 0x07,
+  kRos1MessageData = 0x02,
+  kRos1BagHeader = 0x03,
+  kRos1IndexData = 0x04,
+  kRos1Chunk = 0x05,
+  kRos1ChunkInfo = 0x06,
+  kRos1Connection = 0x07,
 };
 
 // A chunk that declares more than this uncompressed is taken for damage, not allocated.
@@ -120,7 +120,7 @@ Ros1BagFile::Ros1BagFile(const std::string& path) : file_(path) {
   }
   pos_ = kRos1Magic.size();
   const Ros1Record header = RecordAt(file_.data() + pos_, file_.size() - pos_);
-  if (!header.head_complete || OpOf(header.header) != kBagHeader)
+  if (!header.head_complete || OpOf(header.header) != kRos1BagHeader)
     throw Error(fmt::format("{}: its bag header record is missing or cut", file_.path()));
   FieldReader f(header.header);
   std::string_view name, value;
@@ -163,9 +163,9 @@ void Ros1BagFile::ReadIndex() {
       return;
     }
     const std::optional<uint8_t> op = OpOf(r.header);
-    if (op == kConnection) {
+    if (op == kRos1Connection) {
       AddConnection(r.header, std::string_view(reinterpret_cast<const char*>(r.data), r.data_length));
-    } else if (op == kChunkInfo) {
+    } else if (op == kRos1ChunkInfo) {
       FieldReader f(r.header);
       std::string_view name, value;
       uint64_t start = 0, end = 0;
@@ -262,7 +262,7 @@ bool Ros1BagFile::ReadBatch(MessageSink* sink) {
     }
     const std::optional<uint8_t> op = OpOf(r.header);
     const bool cut = r.data_available < r.data_length;
-    if (op == kChunk) {
+    if (op == kRos1Chunk) {
       chunk_offset_ = pos_;
       ++chunks_read_;
       ReadChunk(r.header, r.data, r.data_available, r.data_length, sink);
@@ -280,11 +280,11 @@ bool Ros1BagFile::ReadBatch(MessageSink* sink) {
       done_ = true;
       break;
     }
-    if (op == kConnection) {
+    if (op == kRos1Connection) {
       AddConnection(r.header, std::string_view(reinterpret_cast<const char*>(r.data), r.data_length));
-    } else if (op == kMessageData) {
+    } else if (op == kRos1MessageData) {
       OnMessage(r.header, r.data, r.data_length, sink);
-    } else if (op == kChunkInfo) {
+    } else if (op == kRos1ChunkInfo) {
       done_ = true;  // the index section of a bag whose index_pos was not written
       break;
     }
@@ -358,9 +358,9 @@ void Ros1BagFile::ParseRecords(const uint8_t* data, size_t size, bool cut, Messa
       else if (name == "conn") conn = FieldValue<uint32_t>(value);
       else if (name == "time") time_ns = Ros1TimeNs(value);
     }
-    if (op == kMessageData) {
+    if (op == kRos1MessageData) {
       Dispatch(conn, time_ns, r.data, r.data_length, sink);
-    } else if (op == kConnection) {
+    } else if (op == kRos1Connection) {
       AddConnection(r.header, std::string_view(reinterpret_cast<const char*>(r.data), r.data_length));
     }
     p += r.total;
