@@ -112,9 +112,29 @@ std::vector<const Effect*> InCorrectionOrder(std::vector<const Effect*> effects)
 // line reads "rpm_scale = 0.00136 +- 4.4e-05", never "... 4.4e-05 1".
 inline std::string_view UnitAfterValue(std::string_view unit) { return unit == "1" ? std::string_view() : unit; }
 
-// The library, in a fixed order. Ownership: the returned effects are static; never freed.
+// The library, in a fixed order: the effects the diagnosis tries. Ownership: the returned effects
+// are static; never freed.
 const std::vector<const Effect*>& AllEffects();
-// nullptr when there is no effect of that name.
+// Every effect known by name: the library's, then the registered ones (EffectRegistration) in
+// the order registered.
+std::vector<const Effect*> KnownEffects();
+// The known effect of that name; nullptr when there is none.
 const Effect* FindEffect(std::string_view name);
+
+// Makes `effect`, defined outside the library (a test's), known by name while the registration
+// lives: a calibration that lists it is read, applied, put in words, reported and exported as
+// one of the library's (each of those asks the effect, never its name). The diagnosis tries only
+// the library's. `effect` must outlive the registration. Throws accelcal::Error when a known
+// effect already has its name.
+class EffectRegistration {
+ public:
+  explicit EffectRegistration(const Effect& effect);
+  ~EffectRegistration();
+  EffectRegistration(const EffectRegistration&) = delete;
+  EffectRegistration& operator=(const EffectRegistration&) = delete;
+
+ private:
+  const Effect* effect_;
+};
 
 }  // namespace accelcal

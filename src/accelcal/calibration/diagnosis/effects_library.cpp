@@ -3,9 +3,11 @@
 // bench_effects.cpp (errors of the bench during the calibration).
 #include <algorithm>
 #include <cmath>
+#include <mutex>
 
 #include <fmt/core.h>
 
+#include "accelcal/base/error.h"
 #include "accelcal/base/linear_algebra.h"
 #include "accelcal/calibration/diagnosis/effect_support.h"
 
@@ -124,10 +126,50 @@ std::vector<const Effect*> InCorrectionOrder(std::vector<const Effect*> effects)
   return effects;
 }
 
-const Effect* FindEffect(std::string_view name) {
-  for (const Effect* e : AllEffects())
+namespace {
+
+// The effects registered from outside the library (EffectRegistration), under their lock.
+std::mutex& RegisteredEffectsMutex() {
+  static std::mutex mutex;
+  return mutex;
+}
+std::vector<const Effect*>& RegisteredEffects() {
+  static std::vector<const Effect*> registered;
+  return registered;
+}
+
+const Effect* FindIn(const std::vector<const Effect*>& effects, std::string_view name) {
+  for (const Effect* e : effects)
     if (e->Name() == name) return e;
   return nullptr;
+}
+
+}  // namespace
+
+std::vector<const Effect*> KnownEffects() {
+  std::vector<const Effect*> known = AllEffects();
+  const std::lock_guard<std::mutex> lock(RegisteredEffectsMutex());
+  known.insert(known.end(), RegisteredEffects().begin(), RegisteredEffects().end());
+  return known;
+}
+
+const Effect* FindEffect(std::string_view name) {
+  if (const Effect* e = FindIn(AllEffects(), name)) return e;
+  const std::lock_guard<std::mutex> lock(RegisteredEffectsMutex());
+  return FindIn(RegisteredEffects(), name);
+}
+
+EffectRegistration::EffectRegistration(const Effect& effect) : effect_(&effect) {
+  const std::lock_guard<std::mutex> lock(RegisteredEffectsMutex());
+  if (FindIn(AllEffects(), effect.Name()) != nullptr || FindIn(RegisteredEffects(), effect.Name()) != nullptr)
+    throw Error(fmt::format("an effect named '{}' is already known", effect.Name()));
+  RegisteredEffects().push_back(effect_);
+}
+
+EffectRegistration::~EffectRegistration() {
+  const std::lock_guard<std::mutex> lock(RegisteredEffectsMutex());
+  std::vector<const Effect*>& registered = RegisteredEffects();
+  registered.erase(std::remove(registered.begin(), registered.end(), effect_), registered.end());
 }
 
 }  // namespace accelcal

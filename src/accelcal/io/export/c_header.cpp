@@ -6,6 +6,8 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include "accelcal/base/error.h"
+
 namespace accelcal {
 namespace {
 
@@ -75,6 +77,11 @@ std::string EffectCode(const std::string& name) {
            "  }\n";
   // quadratic_nonlinearity: d = k u + q u^2; u is the root near d / k, in the form that stays
   // accurate as q -> 0.
+  if (name != "quadratic_nonlinearity")
+    throw Error(fmt::format("the C header cannot carry the effect '{}': this version of accelcal "
+                            "has no C form for it, and a header without it would not correct "
+                            "readings as `accelcal apply` does (export its parameters with --to "
+                            "csv, or correct the readings with accelcal apply)", name));
   return "  /* quadratic_nonlinearity: d = k u + q u^2, solved for u (root near d/k) */\n"
          "  for (j = 0; j < 3; ++j) {\n"
          "    const ACCELCAL_REAL k = accelcal_scale_counts_per_mps2[j];\n"
@@ -87,6 +94,7 @@ std::string EffectCode(const std::string& name) {
 
 ExportResult ExportCHeader(const Calibration& cal, const ExportContext& context) {
   const std::vector<std::string> effects = SensorEffectNames(cal);
+  for (const std::string& name : effects) EffectCode(name);  // refuses one it cannot write
   const bool temperature = Has(effects, "temperature_bias") || Has(effects, "temperature_scale");
   const bool quadratic = Has(effects, "quadratic_nonlinearity");
   const bool cubic = Has(effects, "cubic_nonlinearity");
