@@ -1,12 +1,19 @@
 // An effect owns what is said and written of it (issue 28): an effect defined only here, and
 // registered from here (EffectRegistration), is read, put in words, reported and exported from
 // what it declares, with no other file knowing its name.
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
 #include <string>
 #include <vector>
+#include <unistd.h>
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include "accelcal/base/error.h"
+#include "accelcal/calibration/apply.h"
 #include "accelcal/calibration/diagnosis/effect.h"
 #include "accelcal/io/export/c_header.h"
 #include "export_test_support.h"
@@ -39,6 +46,37 @@ class WarmupBias final : public DifferentiableEffect<WarmupBias> {
   bool CorrectsReadings() const override { return true; }
 };
 
+// The zero-g level bending with temperature: b_j + tq_j (T - T_ref)^2, a sensor's property with a
+// C form of its own.
+class TemperatureCurvature final : public DifferentiableEffect<TemperatureCurvature> {
+ public:
+  std::string_view Name() const override { return "temperature_curvature"; }
+  std::string_view Story() const override { return "the zero-g level bends with temperature"; }
+  int NumParameters() const override { return 3; }
+  std::string ParameterName(int i) const override { return std::string("tq_") + "xyz"[i]; }
+  std::string ParameterUnit(int) const override { return "counts/degC^2"; }
+  double ParameterScale(int, const SensorModel&, const EffectContext&) const override { return 1e-4; }
+  std::string WhyNotIdentifiable(const std::vector<FitCapture>&) const override { return {}; }
+  std::string_view CapturePlan() const override { return "captures at three temperatures or more"; }
+  std::string WhyImplausible(const double*, const SensorModel&, const std::vector<FitCapture>&) const override {
+    return {};
+  }
+  template <class S, class Base>
+  void Apply(const S* tq, const Base&, const FitCapture& c, const EffectContext& ctx, CorrectedCaptureOf<S>* out) const {
+    const double dt_c = c.mean_temp_c - ctx.temp_ref_c;
+    for (int j = 0; j < 3; ++j) out->raw_counts(j) -= tq[j] * dt_c * dt_c;
+  }
+  int CorrectionStage() const override { return 0; }
+  bool CorrectsReadings() const override { return true; }
+  bool ReadsTemperature() const override { return true; }
+  std::optional<CCorrection> InC() const override {
+    return CCorrection{{{"temperature_curvature: tq (counts per degC^2)", "accelcal_tq_counts_per_degc2",
+                         {"tq_x", "tq_y", "tq_z"}}},
+                       "  for (j = 0; j < 3; ++j) d[j] -= accelcal_tq_counts_per_degc2[j] * dt_c * dt_c;\n",
+                       false, {}};
+  }
+};
+
 CalibrationEffect Adopted(const Effect& effect, const std::vector<double>& values) {
   CalibrationEffect e;
   e.name = std::string(effect.Name());
@@ -63,6 +101,60 @@ TEST(EffectOwnership, TheCHeaderRefusesBYNameASensorEffectItCannotCarry) {
     EXPECT_TRUE(testing::Contains(e.what(), "'warmup_bias'")) << e.what();
     EXPECT_TRUE(testing::Contains(e.what(), "C header cannot carry")) << e.what();
   }
+}
+
+// The header `cal` exports, compiled by the system's C compiler (double arithmetic) and run on
+// `readings`: what it makes of each.
+std::vector<Eigen::Vector3d> CorrectedByTheHeader(const Calibration& cal, const std::vector<Sample>& readings) {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / fmt::format("accelcal_effect_ownership_{}", ::getpid());
+  fs::create_directories(dir);
+  std::ofstream(dir / "cal.h") << ExportCHeader(cal, {}).text;
+  std::ofstream(dir / "main.c")
+      << "#define ACCELCAL_REAL double\n#include <stdio.h>\n#include \"cal.h\"\n"
+      << "int main(void) {\n  double x, y, z, t, a[3];\n"
+      << "  while (scanf(\"%lf %lf %lf %lf\", &x, &y, &z, &t) == 4) {\n"
+      << "    accelcal_correct(x, y, z, t, a);\n    printf(\"%.17g %.17g %.17g\\n\", a[0], a[1], a[2]);\n  }\n"
+      << "  return 0;\n}\n";
+  std::ofstream in(dir / "in.txt");
+  for (const Sample& s : readings)
+    in << fmt::format("{} {} {} {}\n", s.raw_counts.x(), s.raw_counts.y(), s.raw_counts.z(), s.temp_c);
+  in.close();
+  std::vector<Eigen::Vector3d> out;
+  if (std::system(fmt::format("cc -std=c99 -Wall -Wextra -Werror -pedantic -o {0}/prog {0}/main.c -lm && "
+                              "{0}/prog < {0}/in.txt > {0}/out.txt", dir.string()).c_str()) == 0) {
+    std::ifstream result(dir / "out.txt");
+    for (Eigen::Vector3d a; result >> a.x() >> a.y() >> a.z();) out.push_back(a);
+  }
+  fs::remove_all(dir);
+  return out;
+}
+
+// An effect of the sensor with a C form: the header declares its constant, runs its statements
+// in correction order (before the temperature scale and the quadratic, stage 0), takes the
+// temperature it reads, and corrects readings as `accelcal apply` does.
+TEST(EffectOwnership, TheCHeaderCarriesASensorEffectInTheCFormItStates) {
+  const TemperatureCurvature curvature;
+  const EffectRegistration registered(curvature);
+  Calibration cal = testing::ExportTestCalibrationWithEffects();
+  cal.effects.push_back(Adopted(curvature, {0.01, -0.02, 0.005}));
+  const ExportResult r = ExportCHeader(cal, {});
+  EXPECT_TRUE(r.cannot_hold.empty());
+  EXPECT_TRUE(testing::Contains(r.text, "static const ACCELCAL_REAL accelcal_tq_counts_per_degc2[3] = {0.01, -0.02, 0.005};"))
+      << r.text;
+  EXPECT_LT(r.text.find("accelcal_tq_counts_per_degc2[j] * dt_c"), r.text.find("temperature_scale: the sensitivity"));
+  std::vector<Sample> readings;
+  for (int i = 0; i < 20; ++i) {
+    Sample s;
+    s.raw_counts = Eigen::Vector3d(1700.0 + 37.0 * i, 2400.0 - 29.0 * i, 2050.0 + 13.0 * (i % 7));
+    s.temp_c = 10.0 + 1.5 * i;
+    readings.push_back(s);
+  }
+  const std::vector<Eigen::Vector3d> got = CorrectedByTheHeader(cal, readings);
+  ASSERT_EQ(got.size(), readings.size());
+  const CalibrationApplier applier(cal);
+  for (size_t i = 0; i < readings.size(); ++i)
+    EXPECT_LT((got[i] - applier.Apply(readings[i])).norm(), 1e-9) << i;
 }
 
 TEST(EffectOwnership, ARegistrationEndsWithItsLifeAndRefusesATakenName) {

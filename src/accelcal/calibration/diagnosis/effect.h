@@ -12,12 +12,14 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include <Eigen/Core>
 
+#include "accelcal/calibration/diagnosis/c_correction.h"
 #include "accelcal/calibration/diagnosis/effect_jet.h"
 #include "accelcal/calibration/fit/fit_capture.h"
 #include "accelcal/base/sensor_model.h"
@@ -79,6 +81,17 @@ class Effect {
   // True for properties of the sensor itself, which `accelcal apply` corrects in every reading;
   // false for errors of the bench during calibration (radius, speed), which it does not.
   virtual bool CorrectsReadings() const = 0;
+  // True when its correction reads the sensor's temperature (a capture's mean_temp_c, a
+  // reading's temp_c, relative to the context's temp_ref_c): `accelcal apply` then needs a
+  // temperature on every reading, and the C header's function takes one.
+  virtual bool ReadsTemperature() const { return false; }
+
+  // --- How each export carries it (io/export/) ----------------------------------------------
+  // Every export writes its parameters (CSV) and says what it cannot hold; a session's effect
+  // (CorrectsReadings false) is never carried (a note says so), nor by a per-axis offset and
+  // scale (ArduPilot, PX4) any effect. A sensor's effect in the C header: its C form
+  // (c_correction.h); without one (the default), the header refuses the calibration, naming it.
+  virtual std::optional<CCorrection> InC() const { return std::nullopt; }
 };
 
 // An effect whose correction is written once, as

@@ -15,6 +15,8 @@ namespace accelcal::effects {
 
 // "q_x", "q_y", "q_z" for stem "q".
 std::string PerAxis(const char* stem, int axis);
+// All three: {"q_x", "q_y", "q_z"}.
+std::vector<std::string> PerAxisNames(const char* stem);
 
 // The full scale the nonlinearity bound is taken against, m/s^2: 6 g, the widest range of the
 // seed's MMA7260Q (the lab chapter's part).

@@ -31,6 +31,8 @@ double Spread(const std::vector<FitCapture>& captures, Get get) {
 
 std::string PerAxis(const char* stem, int axis) { return fmt::format("{}_{}", stem, "xyz"[axis]); }
 
+std::vector<std::string> PerAxisNames(const char* stem) { return {PerAxis(stem, 0), PerAxis(stem, 1), PerAxis(stem, 2)}; }
+
 int CountTurntable(const std::vector<FitCapture>& captures) {
   int n = 0;
   for (const FitCapture& c : captures) n += c.kind == CaptureKind::kTurntable;

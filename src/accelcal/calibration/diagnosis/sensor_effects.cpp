@@ -95,6 +95,19 @@ class QuadraticNonlinearity final : public DifferentiableEffect<QuadraticNonline
   }
   int CorrectionStage() const override { return 2; }
   bool CorrectsReadings() const override { return true; }
+  std::optional<CCorrection> InC() const override {
+    // The same root as Apply's, in the same stable form.
+    return CCorrection{
+        {{"quadratic_nonlinearity: q (counts per (m/s^2)^2)", "accelcal_quadratic_counts_per_mps2_sq",
+          PerAxisNames("q")}},
+        "  /* quadratic_nonlinearity: d = k u + q u^2, solved for u (root near d/k) */\n"
+        "  for (j = 0; j < 3; ++j) {\n"
+        "    const ACCELCAL_REAL k = accelcal_scale_counts_per_mps2[j];\n"
+        "    const ACCELCAL_REAL disc = k * k + 4 * accelcal_quadratic_counts_per_mps2_sq[j] * d[j];\n"
+        "    if (disc > 0) d[j] = k * (2 * d[j] / (k + (ACCELCAL_REAL)sqrt((double)disc)));\n"
+        "  }\n",
+        true, {"sqrt"}};
+  }
 };
 
 // --- cubic_nonlinearity --------------------------------------------------------------------
@@ -151,6 +164,25 @@ class CubicNonlinearity final : public DifferentiableEffect<CubicNonlinearity> {
   }
   int CorrectionStage() const override { return 2; }
   bool CorrectsReadings() const override { return true; }
+  std::optional<CCorrection> InC() const override {
+    // SolveCubic's Newton steps, with its stop where the slope collapses.
+    return CCorrection{
+        {{"cubic_nonlinearity: c3 (counts per (m/s^2)^3)", "accelcal_cubic_counts_per_mps2_cu", PerAxisNames("c3")}},
+        "  /* cubic_nonlinearity: d = k u + c3 u^3, solved for u by Newton from d/k */\n"
+        "  for (j = 0; j < 3; ++j) {\n"
+        "    const ACCELCAL_REAL k = accelcal_scale_counts_per_mps2[j];\n"
+        "    const ACCELCAL_REAL c3 = accelcal_cubic_counts_per_mps2_cu[j];\n"
+        "    ACCELCAL_REAL u = d[j] / k;\n"
+        "    int it;\n"
+        "    for (it = 0; it < 4; ++it) {\n"
+        "      const ACCELCAL_REAL slope = k + 3 * c3 * u * u;\n"
+        "      if (!(slope * slope > (ACCELCAL_REAL)0.01 * k * k)) break;\n"
+        "      u -= (k * u + c3 * u * u * u - d[j]) / slope;\n"
+        "    }\n"
+        "    d[j] = k * u;\n"
+        "  }\n",
+        true, {}};
+  }
 
  private:
   // The root of k u + c3 u^3 = d near d / k, by Newton from there: the term is a small
@@ -241,6 +273,20 @@ class CrossAxisCoupling final : public DifferentiableEffect<CrossAxisCoupling> {
   }
   int CorrectionStage() const override { return 2; }
   bool CorrectsReadings() const override { return true; }
+  std::optional<CCorrection> InC() const override {
+    return CCorrection{
+        {{"cross_axis_coupling: kappa (per m/s^2)", "accelcal_cross_kappa_per_mps2", {"kappa"}}},
+        "  /* cross_axis_coupling: each axis also reads kappa/3 times the product of the other two\n"
+        "     inputs (a magnitude fit sees only the sum kappa: shared equally) */\n"
+        "  {\n"
+        "    ACCELCAL_REAL u[3];\n"
+        "    for (j = 0; j < 3; ++j) u[j] = d[j] / accelcal_scale_counts_per_mps2[j];\n"
+        "    d[0] -= accelcal_scale_counts_per_mps2[0] * accelcal_cross_kappa_per_mps2 / 3 * u[1] * u[2];\n"
+        "    d[1] -= accelcal_scale_counts_per_mps2[1] * accelcal_cross_kappa_per_mps2 / 3 * u[2] * u[0];\n"
+        "    d[2] -= accelcal_scale_counts_per_mps2[2] * accelcal_cross_kappa_per_mps2 / 3 * u[0] * u[1];\n"
+        "  }\n",
+        true, {}};
+  }
 };
 
 // --- temperature_bias ------------------------------------------------------------------------
@@ -287,6 +333,14 @@ class TemperatureBias final : public DifferentiableEffect<TemperatureBias> {
   double Regressor(const FitCapture& c) const override { return c.mean_temp_c; }
   int CorrectionStage() const override { return 0; }
   bool CorrectsReadings() const override { return true; }
+  bool ReadsTemperature() const override { return true; }
+  std::optional<CCorrection> InC() const override {
+    return CCorrection{
+        {{"", "accelcal_tc_bias_counts_per_degc", PerAxisNames("tc_bias")}},
+        "  /* temperature_bias: the zero-g level moves by tc counts per degC */\n"
+        "  for (j = 0; j < 3; ++j) d[j] -= accelcal_tc_bias_counts_per_degc[j] * dt_c;\n",
+        false, {}};
+  }
 };
 
 // --- temperature_scale -----------------------------------------------------------------------
@@ -327,6 +381,14 @@ class TemperatureScale final : public DifferentiableEffect<TemperatureScale> {
   double Regressor(const FitCapture& c) const override { return c.mean_temp_c; }
   int CorrectionStage() const override { return 1; }
   bool CorrectsReadings() const override { return true; }
+  bool ReadsTemperature() const override { return true; }
+  std::optional<CCorrection> InC() const override {
+    return CCorrection{
+        {{"", "accelcal_tc_scale_per_degc", PerAxisNames("tc_scale")}},
+        "  /* temperature_scale: the sensitivity is k (1 + tc dT) */\n"
+        "  for (j = 0; j < 3; ++j) d[j] /= (ACCELCAL_REAL)1 + accelcal_tc_scale_per_degc[j] * dt_c;\n",
+        false, {}};
+  }
 };
 
 // --- bias_drift ------------------------------------------------------------------------------
