@@ -12,6 +12,7 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include "accelcal/app/wizard/diagnosis_words.h"
 #include "accelcal/base/error.h"
 #include "accelcal/calibration/apply.h"
 #include "accelcal/calibration/diagnosis/effect.h"
@@ -69,6 +70,16 @@ class TemperatureCurvature final : public DifferentiableEffect<TemperatureCurvat
   int CorrectionStage() const override { return 0; }
   bool CorrectsReadings() const override { return true; }
   bool ReadsTemperature() const override { return true; }
+  std::string_view PlainName() const override { return "a zero-g level bending with temperature"; }
+  std::optional<BenchStatement> InBenchTerms(std::span<const double> tq, std::span<const double>, std::string_view,
+                                             double) const override {
+    BenchStatement s{"the zero-g level bends with temperature: ", {}, " 10 degC off the reference"};
+    s.size.shape = BenchQuantity::Shape::kPerAxis;
+    for (double v : tq) s.size.values.push_back(v * 100.0);  // tq (10 degC)^2
+    s.size.unit = "counts";
+    s.size.decimals = 2;
+    return s;
+  }
   std::optional<CCorrection> InC() const override {
     return CCorrection{{{"temperature_curvature: tq (counts per degC^2)", "accelcal_tq_counts_per_degc2",
                          {"tq_x", "tq_y", "tq_z"}}},
@@ -155,6 +166,40 @@ TEST(EffectOwnership, TheCHeaderCarriesASensorEffectInTheCFormItStates) {
   const CalibrationApplier applier(cal);
   for (size_t i = 0; i < readings.size(); ++i)
     EXPECT_LT((got[i] - applier.Apply(readings[i])).norm(), 1e-9) << i;
+}
+
+AdoptedEffect Found(const Effect& effect, std::vector<double> values, std::vector<double> sigmas) {
+  AdoptedEffect a;
+  a.name = std::string(effect.Name());
+  for (int i = 0; i < effect.NumParameters(); ++i) {
+    a.parameter_names.push_back(effect.ParameterName(i));
+    a.parameter_units.push_back(effect.ParameterUnit(i));
+  }
+  a.parameters = std::move(values);
+  a.uncertainty = std::move(sigmas);
+  return a;
+}
+
+// What the technician is told: the registered effect's own statement and name, rendered as the
+// library's; one that states nothing is named with its parameters.
+TEST(EffectOwnership, ARegisteredEffectIsSaidInItsOwnBenchWords) {
+  const TemperatureCurvature curvature;
+  const WarmupBias warmup;
+  const EffectRegistration registered(curvature), also(warmup);
+  const AdoptedEffect bend = Found(curvature, {0.01, -0.02, 0.005}, {0.001, 0.001, 0.001});
+  // tq (10 degC)^2 = 100 tq counts.
+  EXPECT_EQ(EffectInPlainWords(bend, 9.80665),
+            "the zero-g level bends with temperature: x +1.00, y -2.00, z +0.50 counts 10 degC off the reference");
+  EXPECT_EQ(PlainEffectName("temperature_curvature"), "a zero-g level bending with temperature");
+  EXPECT_FALSE(IsBenchError("temperature_curvature"));
+  DiagnosisReport r;
+  r.adopted = {bend};
+  const DiagnosisWords w = DiagnosisInPlainWords(r, 9.80665);
+  EXPECT_EQ(w.prompt, "The zero-g level bends with temperature: x +1.00, y -2.00, z +0.50 counts 10 degC off the "
+                      "reference: add it to the calibration (recommended), or keep the basic model?");
+  EXPECT_EQ(EffectInPlainWords(Found(warmup, {1.5, -0.5, 0.25}, {}), 9.80665),
+            "an effect the basic model lacks (warmup_bias): warmup_x 1.5 counts, warmup_y -0.5 counts, warmup_z 0.25 counts");
+  EXPECT_EQ(PlainEffectName("warmup_bias"), "warmup_bias");
 }
 
 TEST(EffectOwnership, ARegistrationEndsWithItsLifeAndRefusesATakenName) {

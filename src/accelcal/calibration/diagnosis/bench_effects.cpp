@@ -24,6 +24,25 @@ constexpr double kMaxRpmScale = 0.05;
 constexpr double kMaxSizeEffectM = 0.01;
 constexpr double kMaxTiltDeg = 5.0;
 
+// "<lead>3.0 mm longer<tail> (+-0.2 mm)": the first of `values` and of `sigmas` times `factor`;
+// none when the value is not a number.
+std::optional<BenchStatement> DirectionStatement(std::string lead, std::span<const double> values,
+                                                 std::span<const double> sigmas, double factor, int decimals,
+                                                 std::string unit, std::string positive, std::string negative,
+                                                 std::string tail) {
+  const double value = FirstOf(values);
+  if (!std::isfinite(value)) return std::nullopt;
+  BenchStatement s{std::move(lead), {}, std::move(tail)};
+  s.size.shape = BenchQuantity::Shape::kDirection;
+  s.size.values = {value * factor};
+  s.size.sigma = FirstOf(sigmas) * factor;
+  s.size.unit = std::move(unit);
+  s.size.decimals = decimals;
+  s.size.positive = std::move(positive);
+  s.size.negative = std::move(negative);
+  return s;
+}
+
 double SmallestRadius(const std::vector<FitCapture>& captures) {
   double smallest = INFINITY;
   for (const FitCapture& c : captures)
@@ -66,6 +85,13 @@ class RadiusOffset final : public DifferentiableEffect<RadiusOffset> {
   double Regressor(const FitCapture& c) const override { return CentripetalMps2(c); }
   int CorrectionStage() const override { return 3; }
   bool CorrectsReadings() const override { return false; }
+  bool IsBenchError() const override { return true; }
+  std::string_view PlainName() const override { return "a wrong turntable radius"; }
+  std::optional<BenchStatement> InBenchTerms(std::span<const double> dr, std::span<const double> sigma,
+                                             std::string_view, double) const override {
+    return DirectionStatement("the turntable radius seems ", dr, sigma, 1000.0, 1, "mm", "longer", "shorter",
+                              " than entered");
+  }
 };
 
 // --- rpm_scale -------------------------------------------------------------------------------
@@ -100,6 +126,13 @@ class RpmScale final : public DifferentiableEffect<RpmScale> {
   double Regressor(const FitCapture& c) const override { return CentripetalMps2(c); }
   int CorrectionStage() const override { return 3; }
   bool CorrectsReadings() const override { return false; }
+  bool IsBenchError() const override { return true; }
+  std::string_view PlainName() const override { return "a wrong table speed"; }
+  std::optional<BenchStatement> InBenchTerms(std::span<const double> s, std::span<const double> sigma,
+                                             std::string_view, double) const override {
+    return DirectionStatement("the turntable seems to turn ", s, sigma, 100.0, 2, "%", "faster", "slower",
+                              " than entered");
+  }
 };
 
 // --- size_effect -----------------------------------------------------------------------------
@@ -159,6 +192,13 @@ class SizeEffect final : public DifferentiableEffect<SizeEffect> {
   double Regressor(const FitCapture& c) const override { return CentripetalMps2(c); }
   int CorrectionStage() const override { return 3; }
   bool CorrectsReadings() const override { return false; }
+  bool IsBenchError() const override { return true; }
+  std::string_view PlainName() const override { return "the sensor's size"; }
+  std::optional<BenchStatement> InBenchTerms(std::span<const double> d, std::span<const double>, std::string_view,
+                                             double) const override {
+    return PerAxisStatement("each axis senses at a point off the one the radius was measured to: ", d, 1000.0, 1,
+                            "mm");
+  }
 };
 
 // --- turntable_tilt --------------------------------------------------------------------------
@@ -211,6 +251,14 @@ class TurntableTilt final : public DifferentiableEffect<TurntableTilt> {
   double Regressor(const FitCapture& c) const override { return CentripetalMps2(c); }
   int CorrectionStage() const override { return 3; }
   bool CorrectsReadings() const override { return false; }
+  bool IsBenchError() const override { return true; }
+  std::string_view PlainName() const override { return "a tilted turntable"; }
+  std::optional<BenchStatement> InBenchTerms(std::span<const double>, std::span<const double>,
+                                             std::string_view interpretation, double) const override {
+    std::string lead = "the turntable's spin axis is not vertical";
+    if (!interpretation.empty()) lead += ": " + std::string(interpretation);
+    return BenchStatement{std::move(lead), {}, "; level the turntable"};
+  }
 };
 
 }  // namespace

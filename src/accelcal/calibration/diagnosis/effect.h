@@ -13,12 +13,14 @@
 
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include <Eigen/Core>
 
+#include "accelcal/calibration/diagnosis/bench_statement.h"
 #include "accelcal/calibration/diagnosis/c_correction.h"
 #include "accelcal/calibration/diagnosis/effect_jet.h"
 #include "accelcal/calibration/fit/fit_capture.h"
@@ -85,6 +87,24 @@ class Effect {
   // reading's temp_c, relative to the context's temp_ref_c): `accelcal apply` then needs a
   // temperature on every reading, and the C header's function takes one.
   virtual bool ReadsTemperature() const { return false; }
+
+  // --- What the technician is told of it (bench_statement.h; app/wizard/diagnosis_words.h) ---
+  // Its name in the bench's words, lower case ("a wrong turntable radius"); empty (the
+  // default): Name() is said.
+  virtual std::string_view PlainName() const { return {}; }
+  // True for an error of the bench during the calibration (radius, speed, tilt): the advice is
+  // to correct it and refit; false for the sensor's own: to add it to the calibration.
+  virtual bool IsBenchError() const { return false; }
+  // What fitted parameters `values` (with their 1-sigma `sigmas`, and Interpretation() of them
+  // `interpretation`) mean at the bench, its size in bench units; `gravity_mps2` sizes a
+  // response at 1 g. None (the default, or values that make no statement): its name and
+  // parameters are said instead.
+  virtual std::optional<BenchStatement> InBenchTerms(std::span<const double> /*values*/,
+                                                     std::span<const double> /*sigmas*/,
+                                                     std::string_view /*interpretation*/,
+                                                     double /*gravity_mps2*/) const {
+    return std::nullopt;
+  }
 
   // --- How each export carries it (io/export/) ----------------------------------------------
   // Every export writes its parameters (CSV) and says what it cannot hold; a session's effect

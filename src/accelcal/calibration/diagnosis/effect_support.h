@@ -3,6 +3,7 @@
 // physically plausible. Private to the diagnosis (the effects are reached through effect.h).
 #pragma once
 
+#include <span>
 #include <string>
 #include <vector>
 
@@ -50,6 +51,13 @@ std::vector<Eigen::Vector3d> RoughDirections(const std::vector<FitCapture>& capt
 
 // The stated centripetal acceleration of a turntable capture, m/s^2; NaN for a static one.
 double CentripetalMps2(const FitCapture& c);
+
+// The first of `values`; NaN when there are none.
+double FirstOf(std::span<const double> values);
+// "<lead>x +4.0, y -2.0, z +0.0 <unit>": each of `values` times `factor`, in `unit`, with
+// `decimals` digits after the point.
+BenchStatement PerAxisStatement(std::string lead, std::span<const double> values, double factor, int decimals,
+                                std::string unit);
 
 // The library's effects, each a static object (never freed).
 const Effect& QuadraticNonlinearityEffect();

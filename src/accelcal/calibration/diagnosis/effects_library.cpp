@@ -33,6 +33,19 @@ std::string PerAxis(const char* stem, int axis) { return fmt::format("{}_{}", st
 
 std::vector<std::string> PerAxisNames(const char* stem) { return {PerAxis(stem, 0), PerAxis(stem, 1), PerAxis(stem, 2)}; }
 
+double FirstOf(std::span<const double> values) { return values.empty() ? kNaN : values.front(); }
+
+BenchStatement PerAxisStatement(std::string lead, std::span<const double> values, double factor, int decimals,
+                                std::string unit) {
+  BenchStatement s;
+  s.lead = std::move(lead);
+  s.size.shape = BenchQuantity::Shape::kPerAxis;
+  for (double v : values) s.size.values.push_back(v * factor);
+  s.size.unit = std::move(unit);
+  s.size.decimals = decimals;
+  return s;
+}
+
 int CountTurntable(const std::vector<FitCapture>& captures) {
   int n = 0;
   for (const FitCapture& c : captures) n += c.kind == CaptureKind::kTurntable;

@@ -108,6 +108,13 @@ class QuadraticNonlinearity final : public DifferentiableEffect<QuadraticNonline
         "  }\n",
         true, {"sqrt"}};
   }
+  std::string_view PlainName() const override { return "a bent response"; }
+  std::optional<BenchStatement> InBenchTerms(std::span<const double> q, std::span<const double>, std::string_view,
+                                             double g) const override {
+    // q g^2: the term at 1 g, counts.
+    return PerAxisStatement("the sensor's output is not quite a straight line: at 1 g it bends by ", q, g * g, 1,
+                            "counts");
+  }
 };
 
 // --- cubic_nonlinearity --------------------------------------------------------------------
@@ -182,6 +189,13 @@ class CubicNonlinearity final : public DifferentiableEffect<CubicNonlinearity> {
         "    d[j] = k * u;\n"
         "  }\n",
         true, {}};
+  }
+  std::string_view PlainName() const override { return "an S-shaped response"; }
+  std::optional<BenchStatement> InBenchTerms(std::span<const double> c3, std::span<const double>, std::string_view,
+                                             double g) const override {
+    // c3 g^3: the term at 1 g, counts.
+    return PerAxisStatement("the sensor's output is not quite a straight line (an S-bend): at 1 g by ", c3,
+                            g * g * g, 1, "counts");
   }
 
  private:
@@ -287,6 +301,20 @@ class CrossAxisCoupling final : public DifferentiableEffect<CrossAxisCoupling> {
         "  }\n",
         true, {}};
   }
+  std::string_view PlainName() const override { return "axes responding to each other"; }
+  std::optional<BenchStatement> InBenchTerms(std::span<const double> values, std::span<const double>,
+                                             std::string_view, double g) const override {
+    const double kappa = FirstOf(values);
+    if (!std::isfinite(kappa)) return std::nullopt;
+    // The corner pose (1, 1, 1)/sqrt(3) loads u_x u_y u_z = g^3 / (3 sqrt 3), where the
+    // coupling shows most: |a| moves by kappa times that over |u| = g.
+    const double corner_mps2 = g * g / (3.0 * std::sqrt(3.0));
+    BenchStatement s{"each axis also responds to the other two together: ", {}, " on a corner pose"};
+    s.size.shape = BenchQuantity::Shape::kValue;
+    s.size.values = {kappa * corner_mps2 * 1000.0};
+    s.size.unit = "mm/s^2";
+    return s;
+  }
 };
 
 // --- temperature_bias ------------------------------------------------------------------------
@@ -341,6 +369,11 @@ class TemperatureBias final : public DifferentiableEffect<TemperatureBias> {
         "  for (j = 0; j < 3; ++j) d[j] -= accelcal_tc_bias_counts_per_degc[j] * dt_c;\n",
         false, {}};
   }
+  std::string_view PlainName() const override { return "a zero-g level moving with temperature"; }
+  std::optional<BenchStatement> InBenchTerms(std::span<const double> tc, std::span<const double>, std::string_view,
+                                             double) const override {
+    return PerAxisStatement("the zero-g level moves with temperature: ", tc, 1.0, 2, "counts per degC");
+  }
 };
 
 // --- temperature_scale -----------------------------------------------------------------------
@@ -388,6 +421,11 @@ class TemperatureScale final : public DifferentiableEffect<TemperatureScale> {
         "  /* temperature_scale: the sensitivity is k (1 + tc dT) */\n"
         "  for (j = 0; j < 3; ++j) d[j] /= (ACCELCAL_REAL)1 + accelcal_tc_scale_per_degc[j] * dt_c;\n",
         false, {}};
+  }
+  std::string_view PlainName() const override { return "a sensitivity changing with temperature"; }
+  std::optional<BenchStatement> InBenchTerms(std::span<const double> tc, std::span<const double>, std::string_view,
+                                             double) const override {
+    return PerAxisStatement("the sensitivity changes with temperature: ", tc, 100.0, 3, "% per degC");
   }
 };
 
@@ -440,6 +478,11 @@ class BiasDrift final : public DifferentiableEffect<BiasDrift> {
   double Regressor(const FitCapture& c) const override { return c.mean_t_s; }
   int CorrectionStage() const override { return 0; }
   bool CorrectsReadings() const override { return false; }  // a session artifact, see README
+  std::string_view PlainName() const override { return "a drifting zero-g level"; }
+  std::optional<BenchStatement> InBenchTerms(std::span<const double> drift, std::span<const double>,
+                                             std::string_view, double) const override {
+    return PerAxisStatement("the zero-g level drifts during the session: ", drift, 60.0, 2, "counts per minute");
+  }
 };
 
 }  // namespace
