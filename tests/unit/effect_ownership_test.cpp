@@ -16,7 +16,11 @@
 #include "accelcal/base/error.h"
 #include "accelcal/calibration/apply.h"
 #include "accelcal/calibration/diagnosis/effect.h"
+#include "accelcal/io/export/ardupilot_params.h"
 #include "accelcal/io/export/c_header.h"
+#include "accelcal/io/export/calibration_csv.h"
+#include "accelcal/report/report_model.h"
+#include "accelcal/report/report_text.h"
 #include "export_test_support.h"
 #include "test_support.h"
 
@@ -79,6 +83,9 @@ class TemperatureCurvature final : public DifferentiableEffect<TemperatureCurvat
     s.size.unit = "counts";
     s.size.decimals = 2;
     return s;
+  }
+  std::string_view ReportNote() const override {
+    return "seen only where the captures' temperatures spread on both sides of the reference.";
   }
   std::optional<CCorrection> InC() const override {
     return CCorrection{{{"temperature_curvature: tq (counts per degC^2)", "accelcal_tq_counts_per_degc2",
@@ -200,6 +207,44 @@ TEST(EffectOwnership, ARegisteredEffectIsSaidInItsOwnBenchWords) {
   EXPECT_EQ(EffectInPlainWords(Found(warmup, {1.5, -0.5, 0.25}, {}), 9.80665),
             "an effect the basic model lacks (warmup_bias): warmup_x 1.5 counts, warmup_y -0.5 counts, warmup_z 0.25 counts");
   EXPECT_EQ(PlainEffectName("warmup_bias"), "warmup_bias");
+}
+
+// The report: its rows (parameters with units and 1-sigma, whether it corrects readings), its
+// own note beside the nine parameters.
+TEST(EffectOwnership, ARegisteredEffectIsReportedWithItsOwnNote) {
+  const TemperatureCurvature curvature;
+  const EffectRegistration registered(curvature);
+  ReportInputs in;
+  in.calibration = testing::ExportTestCalibration();
+  CalibrationEffect e = Adopted(curvature, {0.01, -0.02, 0.005});
+  e.parameters[0].sigma = 0.002;
+  in.calibration.effects.push_back(e);
+  const ReportModel m = BuildReportModel(in);
+  ASSERT_EQ(m.effects.size(), 1u);
+  EXPECT_TRUE(m.effects[0].corrects_readings);
+  ASSERT_EQ(m.effects[0].parameters.size(), 3u);
+  EXPECT_EQ(m.effects[0].parameters[0].unit, "counts/degC^2");
+  EXPECT_EQ(m.parameter_notes.back(), "temperature_curvature: seen only where the captures' temperatures spread on "
+                                      "both sides of the reference.");
+  EXPECT_FALSE(TakesGravityErrorForItsOwn("temperature_curvature"));
+  const std::string text = RenderReportText(m);
+  EXPECT_TRUE(testing::Contains(text, "Effect: temperature_curvature (corrects readings)")) << text;
+  EXPECT_TRUE(testing::Contains(text, "0.002")) << text;
+}
+
+// The other exports: a per-axis offset and scale cannot hold it and says so by name; CSV
+// carries its parameters.
+TEST(EffectOwnership, TheFlightStacksNameARegisteredEffectTheyCannotHoldAndCsvCarriesIt) {
+  const WarmupBias warmup;
+  const EffectRegistration registered(warmup);
+  Calibration cal = testing::ExportTestCalibration();
+  cal.effects.push_back(Adopted(warmup, {1.5, -0.5, 0.25}));
+  DriverScaleOptions driver;
+  driver.nominal_scale_counts_per_mps2 = Eigen::Vector3d::Constant(34.8);
+  const ExportResult ardupilot = ExportArduPilotParams(cal, driver, {});
+  ASSERT_EQ(ardupilot.cannot_hold.size(), 2u);
+  EXPECT_TRUE(testing::Contains(ardupilot.cannot_hold[1], "the sensor effects warmup_bias")) << ardupilot.cannot_hold[1];
+  EXPECT_TRUE(testing::Contains(ExportCalibrationCsv(cal).text, "warmup_bias.warmup_y,-0.5,,counts\r\n"));
 }
 
 TEST(EffectOwnership, ARegistrationEndsWithItsLifeAndRefusesATakenName) {

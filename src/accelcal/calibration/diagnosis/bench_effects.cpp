@@ -87,6 +87,7 @@ class RadiusOffset final : public DifferentiableEffect<RadiusOffset> {
   bool CorrectsReadings() const override { return false; }
   bool IsBenchError() const override { return true; }
   std::string_view PlainName() const override { return "a wrong turntable radius"; }
+  bool TakesGravityErrorForItsOwn() const override { return true; }
   std::optional<BenchStatement> InBenchTerms(std::span<const double> dr, std::span<const double> sigma,
                                              std::string_view, double) const override {
     return DirectionStatement("the turntable radius seems ", dr, sigma, 1000.0, 1, "mm", "longer", "shorter",
@@ -128,6 +129,7 @@ class RpmScale final : public DifferentiableEffect<RpmScale> {
   bool CorrectsReadings() const override { return false; }
   bool IsBenchError() const override { return true; }
   std::string_view PlainName() const override { return "a wrong table speed"; }
+  bool TakesGravityErrorForItsOwn() const override { return true; }
   std::optional<BenchStatement> InBenchTerms(std::span<const double> s, std::span<const double> sigma,
                                              std::string_view, double) const override {
     return DirectionStatement("the turntable seems to turn ", s, sigma, 100.0, 2, "%", "faster", "slower",

@@ -106,6 +106,15 @@ class Effect {
     return std::nullopt;
   }
 
+  // --- What the report says of it (report/report_model.h) ----------------------------------
+  // What a magnitude fit cannot resolve of it, said beside the nine parameters when it is
+  // adopted (one sentence, after its name); empty (the default): nothing.
+  virtual std::string_view ReportNote() const { return {}; }
+  // True when the captures see its size only through w^2 r / g (a speed or radius scale): an
+  // error of the gravity value looks the same, and while gravity is the standard value the
+  // report says so and the verdict cannot be PASS.
+  virtual bool TakesGravityErrorForItsOwn() const { return false; }
+
   // --- How each export carries it (io/export/) ----------------------------------------------
   // Every export writes its parameters (CSV) and says what it cannot hold; a session's effect
   // (CorrectsReadings false) is never carried (a note says so), nor by a per-axis offset and

@@ -1,6 +1,7 @@
 // What the effects of the library (sensor_effects.cpp, bench_effects.cpp) share: how they look
-// at a set of captures to decide whether it identifies them, and the bounds of what is
-// physically plausible. Private to the diagnosis (the effects are reached through effect.h).
+// at a set of captures to decide whether it identifies them, the bounds of what is physically
+// plausible, and the forms of their statements in bench units. Private to the diagnosis (the
+// effects are reached through effect.h).
 #pragma once
 
 #include <span>
@@ -58,17 +59,5 @@ double FirstOf(std::span<const double> values);
 // `decimals` digits after the point.
 BenchStatement PerAxisStatement(std::string lead, std::span<const double> values, double factor, int decimals,
                                 std::string unit);
-
-// The library's effects, each a static object (never freed).
-const Effect& QuadraticNonlinearityEffect();
-const Effect& CubicNonlinearityEffect();
-const Effect& CrossAxisCouplingEffect();
-const Effect& TemperatureBiasEffect();
-const Effect& TemperatureScaleEffect();
-const Effect& BiasDriftEffect();
-const Effect& RadiusOffsetEffect();
-const Effect& RpmScaleEffect();
-const Effect& SizeEffectEffect();
-const Effect& TurntableTiltEffect();
 
 }  // namespace accelcal::effects

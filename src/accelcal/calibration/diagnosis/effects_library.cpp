@@ -124,6 +124,20 @@ double CentripetalMps2(const FitCapture& c) {
   return w * w * c.radius_m;
 }
 
+// The library's effects, each a static object (never freed), defined beside its class: the
+// sensor's in sensor_effects.cpp, the bench's in bench_effects.cpp. A new effect is declared
+// here and listed below, and nowhere else (ARCHITECTURE.md, "How to add an effect").
+const Effect& QuadraticNonlinearityEffect();
+const Effect& CubicNonlinearityEffect();
+const Effect& CrossAxisCouplingEffect();
+const Effect& TemperatureBiasEffect();
+const Effect& TemperatureScaleEffect();
+const Effect& BiasDriftEffect();
+const Effect& RadiusOffsetEffect();
+const Effect& RpmScaleEffect();
+const Effect& SizeEffectEffect();
+const Effect& TurntableTiltEffect();
+
 }  // namespace effects
 
 const std::vector<const Effect*>& AllEffects() {

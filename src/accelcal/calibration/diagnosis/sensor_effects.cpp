@@ -302,6 +302,10 @@ class CrossAxisCoupling final : public DifferentiableEffect<CrossAxisCoupling> {
         true, {}};
   }
   std::string_view PlainName() const override { return "axes responding to each other"; }
+  std::string_view ReportNote() const override {
+    return "a magnitude fit sees only the sum kappa over the three axes of their coupling to the product of "
+           "the other two inputs; the correction shares it equally (right for |a|, not resolved per axis).";
+  }
   std::optional<BenchStatement> InBenchTerms(std::span<const double> values, std::span<const double>,
                                              std::string_view, double g) const override {
     const double kappa = FirstOf(values);
