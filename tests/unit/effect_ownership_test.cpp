@@ -27,52 +27,56 @@
 namespace accelcal {
 namespace {
 
-// The zero-g level settling after power-up: b_j + a_j exp(-t / 300 s). A property of the sensor
-// (apply corrects readings with it), but accelcal_correct in the C header is not given the time
-// since power-up: the header cannot carry it, and says so.
-class WarmupBias final : public DifferentiableEffect<WarmupBias> {
+// What the effects of this test share: three parameters, one per axis, identifiable and
+// plausible whatever the captures, properties of the sensor corrected first.
+template <class Derived>
+class SensorTestEffect : public DifferentiableEffect<Derived> {
  public:
-  std::string_view Name() const override { return "warmup_bias"; }
-  std::string_view Story() const override { return "the zero-g level settles after power-up"; }
+  explicit SensorTestEffect(std::string stem) : stem_(std::move(stem)) {}
   int NumParameters() const override { return 3; }
-  std::string ParameterName(int i) const override { return std::string("warmup_") + "xyz"[i]; }
-  std::string ParameterUnit(int) const override { return "counts"; }
-  double ParameterScale(int, const SensorModel&, const EffectContext&) const override { return 1e-2; }
+  std::string ParameterName(int i) const override { return stem_ + "_" + "xyz"[i]; }
+  double ParameterScale(int, const SensorModel&, const EffectContext&) const override { return 1e-3; }
   std::string WhyNotIdentifiable(const std::vector<FitCapture>&) const override { return {}; }
-  std::string_view CapturePlan() const override { return "captures from power-up on"; }
   std::string WhyImplausible(const double*, const SensorModel&, const std::vector<FitCapture>&) const override {
     return {};
   }
+  int CorrectionStage() const override { return 0; }
+  bool CorrectsReadings() const override { return true; }
+
+ private:
+  std::string stem_;
+};
+
+// The zero-g level settling after power-up: b_j + a_j exp(-t / 300 s). A property of the sensor
+// (apply corrects readings with it), but accelcal_correct in the C header is not given the time
+// since power-up: the header cannot carry it, and says so.
+class WarmupBias final : public SensorTestEffect<WarmupBias> {
+ public:
+  WarmupBias() : SensorTestEffect("warmup") {}
+  std::string_view Name() const override { return "warmup_bias"; }
+  std::string_view Story() const override { return "the zero-g level settles after power-up"; }
+  std::string ParameterUnit(int) const override { return "counts"; }
+  std::string_view CapturePlan() const override { return "captures from power-up on"; }
   template <class S, class Base>
   void Apply(const S* a, const Base&, const FitCapture& c, const EffectContext&, CorrectedCaptureOf<S>* out) const {
     for (int j = 0; j < 3; ++j) out->raw_counts(j) -= a[j] * std::exp(-c.mean_t_s / 300.0);
   }
-  int CorrectionStage() const override { return 0; }
-  bool CorrectsReadings() const override { return true; }
 };
 
 // The zero-g level bending with temperature: b_j + tq_j (T - T_ref)^2, a sensor's property with a
 // C form of its own.
-class TemperatureCurvature final : public DifferentiableEffect<TemperatureCurvature> {
+class TemperatureCurvature final : public SensorTestEffect<TemperatureCurvature> {
  public:
+  TemperatureCurvature() : SensorTestEffect("tq") {}
   std::string_view Name() const override { return "temperature_curvature"; }
   std::string_view Story() const override { return "the zero-g level bends with temperature"; }
-  int NumParameters() const override { return 3; }
-  std::string ParameterName(int i) const override { return std::string("tq_") + "xyz"[i]; }
   std::string ParameterUnit(int) const override { return "counts/degC^2"; }
-  double ParameterScale(int, const SensorModel&, const EffectContext&) const override { return 1e-4; }
-  std::string WhyNotIdentifiable(const std::vector<FitCapture>&) const override { return {}; }
   std::string_view CapturePlan() const override { return "captures at three temperatures or more"; }
-  std::string WhyImplausible(const double*, const SensorModel&, const std::vector<FitCapture>&) const override {
-    return {};
-  }
   template <class S, class Base>
   void Apply(const S* tq, const Base&, const FitCapture& c, const EffectContext& ctx, CorrectedCaptureOf<S>* out) const {
     const double dt_c = c.mean_temp_c - ctx.temp_ref_c;
     for (int j = 0; j < 3; ++j) out->raw_counts(j) -= tq[j] * dt_c * dt_c;
   }
-  int CorrectionStage() const override { return 0; }
-  bool CorrectsReadings() const override { return true; }
   bool ReadsTemperature() const override { return true; }
   std::string_view PlainName() const override { return "a zero-g level bending with temperature"; }
   std::optional<BenchStatement> InBenchTerms(std::span<const double> tq, std::span<const double>, std::string_view,

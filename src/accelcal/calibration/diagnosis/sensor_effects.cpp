@@ -327,7 +327,24 @@ constexpr double kMaxTempBiasMps2PerC = 0.05;
 // 0.1 %/degC, accelcal's (about ten times a typical sensitivity drift).
 constexpr double kMaxTempScalePerC = 1e-3;
 
-class TemperatureBias final : public DifferentiableEffect<TemperatureBias> {
+// What the temperature effects share: a temperature on every capture identifies them, they grow
+// with it, and they read it in every reading they correct.
+template <class Derived>
+class TemperatureEffect : public DifferentiableEffect<Derived> {
+ public:
+  std::string WhyNotIdentifiable(const std::vector<FitCapture>& captures) const override {
+    return NeedsTemperature(captures);
+  }
+  std::string_view CapturePlan() const override {
+    return "a temperature on every capture, varying by 1 degC or more (and not in step with time)";
+  }
+  std::string_view RegressorName() const override { return "temperature"; }
+  double Regressor(const FitCapture& c) const override { return c.mean_temp_c; }
+  bool CorrectsReadings() const override { return true; }
+  bool ReadsTemperature() const override { return true; }
+};
+
+class TemperatureBias final : public TemperatureEffect<TemperatureBias> {
  public:
   std::string_view Name() const override { return "temperature_bias"; }
   std::string_view Story() const override {
@@ -338,12 +355,6 @@ class TemperatureBias final : public DifferentiableEffect<TemperatureBias> {
   std::string ParameterUnit(int) const override { return "counts/degC"; }
   double ParameterScale(int i, const SensorModel& base, const EffectContext&) const override {
     return base.scale_counts_per_mps2(i) * 1e-4;
-  }
-  std::string WhyNotIdentifiable(const std::vector<FitCapture>& captures) const override {
-    return NeedsTemperature(captures);
-  }
-  std::string_view CapturePlan() const override {
-    return "a temperature on every capture, varying by 1 degC or more (and not in step with time)";
   }
   std::string WhyImplausible(const double* tc, const SensorModel& base,
                              const std::vector<FitCapture>&) const override {
@@ -361,11 +372,7 @@ class TemperatureBias final : public DifferentiableEffect<TemperatureBias> {
     const double dt_c = c.mean_temp_c - ctx.temp_ref_c;
     for (int j = 0; j < 3; ++j) out->raw_counts(j) -= tc[j] * dt_c;
   }
-  std::string_view RegressorName() const override { return "temperature"; }
-  double Regressor(const FitCapture& c) const override { return c.mean_temp_c; }
   int CorrectionStage() const override { return 0; }
-  bool CorrectsReadings() const override { return true; }
-  bool ReadsTemperature() const override { return true; }
   std::optional<CCorrection> InC() const override {
     return CCorrection{
         {{"", "accelcal_tc_bias_counts_per_degc", PerAxisNames("tc_bias")}},
@@ -381,7 +388,7 @@ class TemperatureBias final : public DifferentiableEffect<TemperatureBias> {
 };
 
 // --- temperature_scale -----------------------------------------------------------------------
-class TemperatureScale final : public DifferentiableEffect<TemperatureScale> {
+class TemperatureScale final : public TemperatureEffect<TemperatureScale> {
  public:
   std::string_view Name() const override { return "temperature_scale"; }
   std::string_view Story() const override {
@@ -391,12 +398,6 @@ class TemperatureScale final : public DifferentiableEffect<TemperatureScale> {
   std::string ParameterName(int i) const override { return PerAxis("tc_scale", i); }
   std::string ParameterUnit(int) const override { return "1/degC"; }
   double ParameterScale(int, const SensorModel&, const EffectContext&) const override { return 1e-5; }
-  std::string WhyNotIdentifiable(const std::vector<FitCapture>& captures) const override {
-    return NeedsTemperature(captures);
-  }
-  std::string_view CapturePlan() const override {
-    return "a temperature on every capture, varying by 1 degC or more (and not in step with time)";
-  }
   std::string WhyImplausible(const double* tc, const SensorModel&,
                              const std::vector<FitCapture>&) const override {
     for (int j = 0; j < 3; ++j)
@@ -414,11 +415,7 @@ class TemperatureScale final : public DifferentiableEffect<TemperatureScale> {
       out->raw_counts(j) = base.bias_counts(j) +
                            (out->raw_counts(j) - base.bias_counts(j)) / (1.0 + tc[j] * dt_c);
   }
-  std::string_view RegressorName() const override { return "temperature"; }
-  double Regressor(const FitCapture& c) const override { return c.mean_temp_c; }
   int CorrectionStage() const override { return 1; }
-  bool CorrectsReadings() const override { return true; }
-  bool ReadsTemperature() const override { return true; }
   std::optional<CCorrection> InC() const override {
     return CCorrection{
         {{"", "accelcal_tc_scale_per_degc", PerAxisNames("tc_scale")}},
