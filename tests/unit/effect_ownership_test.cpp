@@ -111,7 +111,7 @@ CalibrationEffect Adopted(const Effect& effect, const std::vector<double>& value
 // The defect of issue 28: the C header wrote any sensor effect it did not know as the quadratic
 // nonlinearity (here a second time, beside the real one: the header compiled and corrected
 // readings wrongly, silently). It must refuse the effect by name.
-TEST(EffectOwnership, TheCHeaderRefusesBYNameASensorEffectItCannotCarry) {
+TEST(EffectOwnership, TheCHeaderRefusesByNameASensorEffectItCannotCarry) {
   const WarmupBias warmup;
   const EffectRegistration registered(warmup);
   Calibration cal = testing::ExportTestCalibrationWithEffects();
