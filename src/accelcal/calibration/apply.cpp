@@ -42,7 +42,7 @@ CalibrationApplier::CalibrationApplier(const Calibration& cal)
                                          "sensor's readings)", name));
       continue;
     }
-    if (name.rfind("temperature_", 0) == 0) {
+    if (effect->ReadsTemperature()) {
       context_.temp_ref_c = cal.reference.temp_c;
       if (!std::isfinite(context_.temp_ref_c))
         throw Error(fmt::format("effect '{}': reference.temp_c is missing", name));
