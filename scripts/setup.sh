@@ -11,16 +11,17 @@ packages=(
   g++ cmake make pkg-config tmux jq lowdown
   libeigen3-dev libnlopt-cxx-dev libncurses-dev libsqlite3-dev libtomlplusplus-dev
   nlohmann-json3-dev libcli11-dev libfmt-dev libgtest-dev libbenchmark-dev
-  libpq-dev
+  libzstd-dev liblz4-dev libbz2-dev libpq-dev
 )
 # The .deb: CPack asks dpkg-shlibdeps (dpkg-dev), which asks file(1), for its Depends.
 package_packages=(dpkg-dev file)
 # Only the tests need these: headless Chromium renders the HTML report and prints it to PDF,
 # poppler-utils reads the PDF's pages back (tests/e2e/report_html.sh); man-db's man reads the
-# manual pages (tests/e2e/man_pages.sh, package_deb.sh); the PostgreSQL server runs the lab
-# store's tests (tests/lab/pg_server.sh starts a private one, as the user postgres the package
-# creates, when the tests run as root).
-test_packages=(chromium poppler-utils man-db postgresql)
+# manual pages (tests/e2e/man_pages.sh, package_deb.sh); Node.js and its npm run the bag writers
+# and readers written elsewhere that the bag tests install (tests/e2e/bags_*.sh); the PostgreSQL
+# server runs the lab store's tests (tests/lab/pg_server.sh starts a private one, as the user
+# postgres the package creates, when the tests run as root).
+test_packages=(chromium poppler-utils man-db nodejs postgresql)
 case "${1:-}" in
   --no-test) ;;
   --package) packages+=("${package_packages[@]}") ;;
