@@ -74,9 +74,15 @@ for spec in "a SIM-0001 -700days" "a SIM-0002 -300days" "a SIM-0001 -200days" "a
   n=$((n + 1))
   "$make_session" "$work/$1/accelcal/sessions/s$n-$2.db" --device "$2" --date "$(day "$3")"
 done
-# One session from the wizard itself, on bench B (device WIZ-0001, the rest the defaults).
-{ echo WIZ-0001; yes '' || true; } | XDG_DATA_HOME="$work/b" "$accelcal" wizard --source sim --speed 0 --plain \
+# One session from the wizard itself, on bench B while it is offline (device WIZ-0001, the rest
+# the defaults): the welcome says the equipment could not be checked, the end that the session
+# waits; the wizard itself ends well.
+{ echo WIZ-0001; yes '' || true; } | B_SERVICE=lab-offline bench_b "$accelcal" wizard --source sim --speed 0 --plain \
   --session "$work/b/accelcal/sessions/wizard.db" >"$work/wizard.log" 2>&1 || { tail "$work/wizard.log"; fail "wizard"; }
+grep -q "the equipment's calibration dates could not be checked: cannot reach the lab store" "$work/wizard.log" \
+  || fail "the offline welcome: $(head -20 "$work/wizard.log")"
+grep -q "^The lab's register: wizard: not published: cannot reach the lab store.*it waits for \`accelcal lab publish\`" \
+  "$work/wizard.log" || fail "the offline wizard's end: $(tail -5 "$work/wizard.log")"
 
 # 1. Bench B is offline (its lab's address unreachable) while bench A publishes: B fails, says
 #    its sessions wait, and publishes nothing.
@@ -177,4 +183,23 @@ expect 0 bench_b "$accelcal" lab equipment
 grep -q "^TT-01 .*EXPIRED 35 day(s) ago" "$work/out" || fail "equipment list: $(cat "$work/out")"
 expect 0 bench_a "$accelcal" lab due --within 30d
 grep -q "^equipment .*TT-01 .*overdue by 35 day(s)" "$work/out" || fail "equipment due: $(cat "$work/out")"
+# The wizard on bench A, online, with the expired turntable and the ruler named at its welcome:
+# warned there of the turntable (not of the ruler), and its session published at its end.
+{ echo WIZ-0002; echo; echo; echo; echo "turntable id TT-01; ruler id RUL-01"; yes '' || true; } |
+  bench_a "$accelcal" wizard --source sim --speed 0 --plain --session "$work/a/accelcal/sessions/wizard-a.db" \
+  >"$work/wizard-a.log" 2>&1 || { tail "$work/wizard-a.log"; fail "wizard on bench A"; }
+grep -q "Equipment: turntable TT-01: its calibration expired on" "$work/wizard-a.log" \
+  || fail "no warning of the expired turntable: $(head -30 "$work/wizard-a.log")"
+! grep -q "RUL-01:" "$work/wizard-a.log" || fail "the ruler in date was warned of"
+grep -q "^The lab's register: wizard-a: published as certificate LAB-[0-9]\{6\}$" "$work/wizard-a.log" \
+  || fail "the wizard's end: $(tail -5 "$work/wizard-a.log")"
+expect 0 bench_a "$accelcal" lab history WIZ-0002 --format json
+jq -e '(.calibrations | length) == 1 and .calibrations[0].bench == "bench_a"' "$work/out" >/dev/null || fail "WIZ-0002: $(cat "$work/out")"
+[ "$(lab_number "$work/a/accelcal/sessions/wizard-a.db")" = "$(jq -r '.calibrations[0].certificate_number' "$work/out")" ] \
+  || fail "the wizard's session does not carry its lab number"
+# --no-lab: neither the check nor the publishing.
+{ echo WIZ-0003; yes '' || true; } | bench_a "$accelcal" wizard --no-lab --source sim --speed 0 --plain \
+  --session "$work/a/accelcal/sessions/wizard-c.db" >"$work/wizard-c.log" 2>&1 || fail "wizard --no-lab"
+! grep -q "lab's" "$work/wizard-c.log" || fail "--no-lab reached the lab: $(grep "lab's" "$work/wizard-c.log")"
+[ "$(sql "SELECT count(*) FROM accelcal.sessions WHERE name = 'wizard-c'")" = 0 ] || fail "--no-lab published"
 echo "e2e_two_benches: ok"

@@ -9,6 +9,8 @@
 
 #include <fmt/core.h>
 
+#include "accelcal/app/lab_equipment_check.h"
+#include "accelcal/app/lab_publish.h"
 #include "accelcal/base/error.h"
 #include "accelcal/io/procedure_file.h"
 #include "accelcal/io/scenario_file.h"
@@ -37,12 +39,23 @@ std::string DefaultOperator(bool sim) {
   return sim ? "sim operator" : "";
 }
 
+// The wizard's end on a bench pointed at a lab (docs/lab.md): the finished session published to
+// the lab's register, its number written back; a lab out of reach leaves it in the backlog.
+void PublishAtTheEnd(const std::string& session, const std::string& procedure_path) {
+  SessionOpenOptions existing;
+  existing.create_if_missing = false;
+  const std::unique_ptr<SessionStore> store = SessionStore::Open(session, existing);
+  if (const std::optional<SessionPublishOutcome> outcome = PublishIfLabConfigured(*store, procedure_path))
+    std::cout << "The lab's register: " << DescribeOutcome(*outcome) << "\n";
+}
+
 }  // namespace
 
 int RunWizard(const WizardCommandOptions& options) {
   RefuseAbsentSerialPort(options.source);  // before the session file is created
-  const Procedure procedure = LoadProcedure(
-      options.procedure_path.empty() ? ShippedProcedurePath("seed_calibration.toml") : options.procedure_path);
+  const std::string procedure_path =
+      options.procedure_path.empty() ? ShippedProcedurePath("seed_calibration.toml") : options.procedure_path;
+  const Procedure procedure = LoadProcedure(procedure_path);
   // `--source -`: stdin carries the samples, so the answers come from the terminal (refused
   // here, before anything is opened or written, when there is none).
   std::unique_ptr<TerminalAnswers> tty;
@@ -54,7 +67,7 @@ int RunWizard(const WizardCommandOptions& options) {
   const std::unique_ptr<SampleSource> source = OpenSource(options.source, source_options);
   // A new session goes to the default session directory, where `accelcal sessions` looks.
   const std::string session = options.session_path.empty() ? NewSessionPath() : options.session_path;
-  const std::unique_ptr<SessionJournal> journal = OpenWizardJournal(session, procedure.title, options.source);
+  std::unique_ptr<SessionJournal> journal = OpenWizardJournal(session, procedure.title, options.source);
 
   WizardOptions wizard;
   wizard.session_name = session;
@@ -63,6 +76,7 @@ int RunWizard(const WizardCommandOptions& options) {
   wizard.default_place = options.place;
   wizard.gravity = options.gravity;
   wizard.report_beside = session;
+  if (options.publish) wizard.check_equipment = WelcomeEquipmentWarnings;
   WizardEngine engine(procedure, *source, *journal, wizard);
 
   const bool terminal = ::isatty(STDIN_FILENO) == 1 && ::isatty(STDOUT_FILENO) == 1;
@@ -76,7 +90,11 @@ int RunWizard(const WizardCommandOptions& options) {
     status = ui::RunLineMode(engine, std::cin, std::cout, ::isatty(STDIN_FILENO) == 1 ? STDIN_FILENO : -1);
   }
   // Done only when the procedure ran to its end; a session left with q stays open to resume.
-  if (status == 0 && engine.completed()) journal->MarkDone();
+  if (status == 0 && engine.completed()) {
+    journal->MarkDone();
+    journal.reset();  // closed before the session is opened to publish it
+    if (options.publish) PublishAtTheEnd(session, procedure_path);
+  }
   return status;
 }
 
@@ -107,6 +125,9 @@ void SetupWizardCommand(CLI::App& app) {
   sub->add_option("--session", options->session_path,
                   "Session file: created when new, resumed when it exists (default: a new one)");
   sub->add_flag("--plain", options->plain, "Plain line mode even on a terminal");
+  sub->add_flag("!--no-lab", options->publish,
+                "On a bench pointed at a lab's register (docs/lab.md): neither check the equipment\n"
+                "at the welcome nor publish the finished session (`accelcal lab publish` does later)");
   gravity->Bind(*sub);
   sub->footer(
       "Examples:\n"

@@ -17,6 +17,9 @@ struct WizardCommandOptions {
   std::string procedure_path;       // empty = the shipped seed_calibration.toml (shipped_files.h)
   std::string session_path;         // empty = a new session named by the time
   bool plain = false;               // line mode even on a terminal
+  // On a bench pointed at a lab (LabConfigured): the welcome's equipment check, and the finished
+  // session published at the end. --no-lab: neither.
+  bool publish = true;
   std::string place;                // offered at the welcome (the lab, the bench)
   GravitySpec gravity;
 };

@@ -51,6 +51,7 @@ WizardEngine::WizardEngine(Procedure procedure, SampleSource& source, SessionJou
   if (std::string why = options_.Validate(); !why.empty()) throw Error("wizard options: " + why);
   if (procedure_.steps.empty()) throw Error("the procedure has no steps");
   ReadJournal();
+  if (phase_ == Phase::kWelcome) CheckEquipmentWithLab();
 }
 
 WizardEngine::~WizardEngine() = default;

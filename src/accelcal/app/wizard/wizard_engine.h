@@ -88,6 +88,10 @@ struct WizardOptions {
   std::string report_beside = {};
   // The lab or bench offered at the welcome (may be empty): the report's "place".
   std::string default_place = {};
+  // The lab's check of the bench's equipment (app/lab_equipment_check.h: WelcomeEquipmentWarnings):
+  // its warnings (expired, running out, unknown to the lab) are shown at the welcome, for the
+  // procedure's items and again for the items the equipment answer names. Empty: no check.
+  std::function<std::vector<std::string>(const std::vector<EquipmentItem>&)> check_equipment = {};
 
   std::string Validate() const;
 };
@@ -179,6 +183,8 @@ class WizardEngine final : public WizardDriver {
   WelcomeField Welcome(int field) const;
   // The welcome's equipment answer (recorded), applied to the calibration steps.
   void ReadEquipment();
+  // The session's equipment through options_.check_equipment (the lab's register).
+  void CheckEquipmentWithLab();
   // The rough model's "up" of a capture (unit, platform frame).
   Eigen::Vector3d MeasuredUp(const Capture& c) const;
   void OnCaptureRejected();
@@ -231,6 +237,7 @@ class WizardEngine final : public WizardDriver {
   std::vector<std::string> lines_;
   std::string detail_;  // the figures behind problem_ (a capture that ended unaccepted)
   std::string notice_;  // the last accepted capture, confirmed until the next key
+  std::vector<std::string> equipment_warnings_;  // the lab's, shown at the welcome
   std::vector<std::string> details_;  // the statistics behind lines_ (d shows them)
   bool show_details_ = false;
   bool resumed_ = false;

@@ -1,6 +1,7 @@
 // The wizard engine's typed answers: the welcome (identification and the local gravity) and
 // a turntable run's radius and speed.
 #include <fmt/core.h>
+#include <fmt/format.h>
 
 #include "accelcal/app/wizard/equipment_input.h"
 #include "accelcal/app/wizard/gravity_input.h"
@@ -51,6 +52,11 @@ void WizardEngine::ReadEquipment() {
   if (edited.ok()) steps_.set_equipment(edited.items);
 }
 
+// The items as the session holds them (the procedure's, or as the equipment answer edited them).
+void WizardEngine::CheckEquipmentWithLab() {
+  if (options_.check_equipment) equipment_warnings_ = options_.check_equipment(steps_.equipment());
+}
+
 // Empty when `value` answers `key`; else why not.
 std::string WizardEngine::CheckWelcomeAnswer(const std::string& key, const std::string& value) {
   const ProcedureRequirements& need = procedure_.requirements;
@@ -91,11 +97,17 @@ void WizardEngine::HandleWelcome(const Intent& intent) {
   // The gravity as it reads back (a resume parses it again).
   if (std::string(field.key) == "gravity") value = GravityAnswerText(gravity_);
   model_.RecordInput(kWelcomeStepId, field.key, value);
-  if (std::string(field.key) == "equipment") ReadEquipment();
+  if (std::string(field.key) == "equipment") {
+    ReadEquipment();
+    CheckEquipmentWithLab();
+  }
   if (welcome_field_ + 1 < WelcomeFields()) {
     ++welcome_field_;
     return;
   }
+  // What the lab still warns of (the items as answered) stays on the next screen until a key.
+  if (!equipment_warnings_.empty())
+    notice_ = fmt::format("Equipment: {}", fmt::join(equipment_warnings_, "; "));
   model_.RecordStepDone(kWelcomeStepId, "ok");
   AdvanceFrom(0);
 }

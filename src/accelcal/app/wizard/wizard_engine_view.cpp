@@ -129,6 +129,9 @@ void WizardEngine::SetWelcomeView(WizardView& v) const {
   if (!input_note_.empty()) v.prompt += " " + input_note_;
   v.input = InputRequest{field.key, field.label, field.default_value, input_error_};
   v.keys = {{"Enter", "accept"}, {"b", "back"}, {"q", "save and quit"}};
+  if (equipment_warnings_.empty()) return;
+  v.lines.push_back("The lab's equipment register warns (the equipment question can name other items):");
+  for (const std::string& warning : equipment_warnings_) v.lines.push_back("  " + warning);
 }
 
 void WizardEngine::SetQuietView(WizardView& v) const {
