@@ -17,6 +17,13 @@ namespace {
 
 std::string OrDash(const std::string& text) { return text.empty() ? "-" : text; }
 
+// --format text|json, for the register's listings.
+void AddFormatOption(CLI::App* sub, std::string* format) {
+  sub->add_option("--format", *format, "text or json")
+      ->check(CLI::IsMember({"text", "json"}))
+      ->capture_default_str();
+}
+
 std::string HistoryText(const LabHistory& h) {
   std::string t =
       fmt::format("device {} ({}): {} certificate(s)\n", h.serial,
@@ -120,9 +127,7 @@ void SetupLabHistoryCommand(CLI::App& lab) {
   CLI::App* sub = lab.add_subcommand(
       "history", "Every certificate of a device across the lab's benches, withdrawn ones included");
   sub->add_option("serial", o->serial, "Device serial")->required();
-  sub->add_option("--format", o->format, "text or json")
-      ->check(CLI::IsMember({"text", "json"}))
-      ->capture_default_str();
+  AddFormatOption(sub, &o->format);
   sub->callback([o] {
     const LabHistory h = LabStore::Connect()->History(o->serial);
     std::cout << (o->format == "json" ? LabHistoryJsonText(h) : HistoryText(h));
@@ -137,9 +142,7 @@ void SetupLabDueCommand(CLI::App& lab) {
       "lab's default) after its last valid calibration, an item of equipment when its\n"
       "certificate runs out; overdue ones first");
   sub->add_option("--within", o->within, "Window from today: 30d, 6w, 1y (default 30d)");
-  sub->add_option("--format", o->format, "text or json")
-      ->check(CLI::IsMember({"text", "json"}))
-      ->capture_default_str();
+  AddFormatOption(sub, &o->format);
   sub->callback([o] {
     const std::optional<long> days = ParseDays(o->within);
     if (!days) throw Error(fmt::format("--within {}: give days, weeks or years (30d, 6w, 1y)", o->within));
@@ -156,9 +159,7 @@ void SetupLabEquipmentCommand(CLI::App& lab) {
       "certificates; --check ID... warns of items expired, running out within 30 days, or\n"
       "unknown (exit 1 for expired or unknown: what the wizard's welcome checks)");
   sub->add_option("--check", o->check, "Equipment ids to check");
-  sub->add_option("--format", o->format, "text or json")
-      ->check(CLI::IsMember({"text", "json"}))
-      ->capture_default_str();
+  AddFormatOption(sub, &o->format);
   sub->callback([o] {
     if (o->add.id.empty()) RunEquipment(*o);
   });

@@ -76,7 +76,7 @@ int RunWizard(const WizardCommandOptions& options) {
   wizard.default_place = options.place;
   wizard.gravity = options.gravity;
   wizard.report_beside = session;
-  if (options.publish) wizard.check_equipment = WelcomeEquipmentWarnings;
+  if (!options.no_lab) wizard.check_equipment = WelcomeEquipmentWarnings;
   WizardEngine engine(procedure, *source, *journal, wizard);
 
   const bool terminal = ::isatty(STDIN_FILENO) == 1 && ::isatty(STDOUT_FILENO) == 1;
@@ -93,7 +93,7 @@ int RunWizard(const WizardCommandOptions& options) {
   if (status == 0 && engine.completed()) {
     journal->MarkDone();
     journal.reset();  // closed before the session is opened to publish it
-    if (options.publish) PublishAtTheEnd(session, procedure_path);
+    if (!options.no_lab) PublishAtTheEnd(session, procedure_path);
   }
   return status;
 }
@@ -125,7 +125,7 @@ void SetupWizardCommand(CLI::App& app) {
   sub->add_option("--session", options->session_path,
                   "Session file: created when new, resumed when it exists (default: a new one)");
   sub->add_flag("--plain", options->plain, "Plain line mode even on a terminal");
-  sub->add_flag("!--no-lab", options->publish,
+  sub->add_flag("--no-lab", options->no_lab,
                 "On a bench pointed at a lab's register (docs/lab.md): neither check the equipment\n"
                 "at the welcome nor publish the finished session (`accelcal lab publish` does later)");
   gravity->Bind(*sub);

@@ -19,7 +19,7 @@ struct WizardCommandOptions {
   bool plain = false;               // line mode even on a terminal
   // On a bench pointed at a lab (LabConfigured): the welcome's equipment check, and the finished
   // session published at the end. --no-lab: neither.
-  bool publish = true;
+  bool no_lab = false;
   std::string place;                // offered at the welcome (the lab, the bench)
   GravitySpec gravity;
 };
