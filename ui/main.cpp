@@ -39,6 +39,7 @@ int main(int argc, char** argv) {
   accelcal::cli::SetupWizardCommand(app);
   accelcal::cli::SetupAllanCommand(app);
   accelcal::cli::SetupNoiseCommand(app);
+  accelcal::cli::SetupDeviceInfoCommand(app);
 
   try {
     app.parse(argc, argv);

@@ -22,5 +22,6 @@ void SetupReportCommand(CLI::App& app);
 void SetupWizardCommand(CLI::App& app);
 void SetupAllanCommand(CLI::App& app);
 void SetupNoiseCommand(CLI::App& app);
+void SetupDeviceInfoCommand(CLI::App& app);
 
 }  // namespace accelcal::cli

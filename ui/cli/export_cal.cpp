@@ -23,6 +23,7 @@
 #include "cli/cli_checks.h"
 #include "cli/commands.h"
 #include "cli/output.h"
+#include "cli/vehicle_writeback_cli.h"
 
 namespace accelcal::cli {
 namespace {
@@ -46,6 +47,7 @@ struct ExportCalCommandOptions {
   double gyro_noise_density = kNaN;
   double gyro_random_walk = kNaN;
   std::string rostopic = "/imu0";
+  bool apply = false;  // mavlink:LINK: send the PARAM_SETs (else only say them)
 };
 
 bool IsSqliteFile(const std::string& path) {
@@ -135,6 +137,12 @@ ExportResult Export(const ExportCalCommandOptions& o, const Calibration& cal, co
 void RunExportCal(const ExportCalCommandOptions& o) {
   ExportContext context;
   const Calibration cal = ReadInput(o, &context);
+  if (o.target.rfind("mavlink:", 0) == 0) {
+    const bool scaling_given = !o.procedure_path.empty() || !o.nominal_scale_counts_per_mps2.empty();
+    WriteBackToVehicle(cal, o.target, scaling_given ? std::optional(DriverScale(o)) : std::nullopt, o.apply);
+    return;
+  }
+  if (o.apply) throw Error("--apply writes to a vehicle: it goes with --to mavlink:LINK");
   const ExportResult r = Export(o, cal, context);
   // The statements go where they do not mix with the exported text.
   std::ostream& say = o.output_path.empty() ? std::cerr : std::cout;
@@ -158,17 +166,25 @@ void SetupExportCalCommand(CLI::App& app) {
       "  px4        CAL_ACC0_*OFF, CAL_ACC0_*SCALE (QGroundControl .params file)\n"
       "  kalibr     Kalibr imu.yaml (noise figures from --allan or --noise-density/--random-walk)\n"
       "  csv        parameters with 1-sigma uncertainties, one row each\n"
+      "  mavlink:LINK[,imu=N]  ArduPilot's or PX4's parameters written into the vehicle (dry run\n"
+      "             unless --apply)\n"
       "The file goes to -o (the statements to stdout) or to stdout (the statements to stderr).\n\n"
       "Examples:\n"
       "  accelcal export-cal cal.json --to c-header -o accel_cal.h\n"
       "  accelcal export-cal cal.json --to ardupilot --procedure procedures/seed_calibration.toml -o accel.param\n"
       "  accelcal export-cal session.db --to px4 --nominal-scale-counts-per-mps2 34.8 --nominal-bias-counts 2048\n"
-      "  accelcal export-cal cal.json --to kalibr --allan allan.json -o imu.yaml");
+      "  accelcal export-cal cal.json --to kalibr --allan allan.json -o imu.yaml\n"
+      "  accelcal export-cal session.db --to mavlink:serial:/dev/ttyACM0@115200 --apply");
   // No CLI11 existence check: a missing file is a failed job (exit 1) with the reader's message.
   sub->add_option("calibration", opts->input, "Calibration file (JSON) or session file (.db)")->required();
-  sub->add_option("--to", opts->target, "Target format")
+  sub->add_option("--to", opts->target, "Target format, or mavlink:LINK[,imu=N] (a vehicle)")
       ->required()
-      ->check(CLI::IsMember({"c-header", "ardupilot", "px4", "kalibr", "csv"}));
+      ->check(CLI::IsMember({"c-header", "ardupilot", "px4", "kalibr", "csv"}) |
+              CLI::Validator([](std::string& v) { return v.rfind("mavlink:", 0) == 0 ? std::string() : std::string("not mavlink:"); },
+                             "mavlink:LINK"));
+  sub->add_flag("--apply", opts->apply,
+                "mavlink:LINK: send the PARAM_SETs, wait for each echo and read every value back "
+                "(without it: a dry run that prints them)");
   sub->add_option("-o,--output", opts->output_path, "File to write (default: standard output)");
   sub->add_option("--device", opts->device, "Device serial for the file's comment (a session gives it)");
   sub->add_option("--date", opts->date_utc, "Calibration date for the file's comment (a session gives it)");

@@ -96,7 +96,7 @@ void StatusTracker::OnEnded(ReadResult* result) {
   result->ended = true;
 }
 
-void StatusTracker::Tick(double now_s, ReadResult* result) {
+void StatusTracker::Tick(double now_s, ReadResult* result, const std::string& silence) {
   if (!std::isnan(last_sample_wall_s_)) status_.since_last_sample_s = now_s - last_sample_wall_s_;
   const bool waiting = status_.link == LinkState::kUp || status_.link == LinkState::kConnecting;
   if (!waiting || now_s - quiet_since_s_ <= dead_after_s_) return;
@@ -104,7 +104,18 @@ void StatusTracker::Tick(double now_s, ReadResult* result) {
   result->went_dead = true;
   // A connection error says more than the silence it causes; keep it when there is one.
   if (status_.link_error.empty())
-    status_.link_error = fmt::format("no sample for {:.1f} s", now_s - quiet_since_s_);
+    status_.link_error = fmt::format("no sample for {:.1f} s", now_s - quiet_since_s_) +
+                         (silence.empty() ? "" : ": " + silence);
+}
+
+void StatusTracker::OnNotice(const std::string& notice, ReadResult* result) {
+  status_.last_notice = notice;
+  result->notice = true;
+}
+
+void StatusTracker::SetUnit(const ReadingUnit& unit, double resolution_counts) {
+  status_.unit = unit;
+  status_.resolution_counts = resolution_counts;
 }
 
 }  // namespace accelcal

@@ -36,8 +36,14 @@ class StatusTracker {
   void OnOpenFailed(const std::string& why);
   // The source is finished.
   void OnEnded(ReadResult* result);
-  // Updates the age of the latest sample and applies the dead-link rule.
-  void Tick(double now_s, ReadResult* result);
+  // Updates the age of the latest sample and applies the dead-link rule. `silence`, when not
+  // empty, says why nothing arrives ("no heartbeat from system 1 for 3.2 s"), beside the time.
+  void Tick(double now_s, ReadResult* result, const std::string& silence = {});
+  // Something the source noticed that is neither a sample nor an error (status().last_notice).
+  void OnNotice(const std::string& notice, ReadResult* result);
+  // The stream's unit and resolution, once the source knows them.
+  void SetUnit(const ReadingUnit& unit, double resolution_counts);
+  void SetLostFrames(long lost_frames) { status_.lost_frames = lost_frames; }
 
   const SourceStatus& status() const { return status_; }
 
