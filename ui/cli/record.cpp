@@ -77,6 +77,7 @@ void ReportEvents(const SampleSource& source, const ReadResult& r, bool quiet) {
                s.last_gap.t_before_s, s.last_gap.t_after_s, s.last_gap.missing_s);
   if (r.went_dead) fmt::print(stderr, "accelcal record: link dead: {}\n", s.link_error);
   if (r.reconnected) fmt::print(stderr, "accelcal record: link back up\n");
+  if (r.notice) fmt::print(stderr, "accelcal record: {}\n", s.last_notice);
 }
 
 // Drops the samples at or beyond end_s; true when any was (the duration is reached).

@@ -9,9 +9,11 @@
 #                               "port N", when it prints one) and $bench_group; the peer's
 #                               stderr in $work/peer.err, record's in $work/bench.err
 #   stop_bench                  ends that process group (and only it)
-#   bench_wizard SOURCE DB PROCEDURE [ARGS...]   the wizard on SOURCE: a device serial and an
-#                               operator, then the answers of `yes ''`; output in $work/out;
-#                               status checked
+#   bench_wizard ANSWERS SOURCE DB PROCEDURE [ARGS...]   the wizard on SOURCE: the ANSWERS
+#                               (printf-style; a new session's serial and operator) then those
+#                               of `yes ''`; output in $work/out; status checked
+#   bench_wizard_killed ANSWERS TEXT SOURCE DB PROCEDURE [ARGS...]   the same in the background,
+#                               kill -9 once its output says TEXT (a step done mid-session)
 start_bench() {
   local speed=$1; shift
   rm -f "$work/peer.port" "$work/bench.err"
@@ -35,12 +37,29 @@ stop_bench() {
   bench_group=
 }
 
-bench_wizard() {  # SOURCE DB PROCEDURE [ARGS...]
-  local source=$1 db=$2 procedure=$3; shift 3
+bench_wizard() {  # ANSWERS SOURCE DB PROCEDURE [ARGS...]
+  local answers=$1 source=$2 db=$3 procedure=$4; shift 4
   set +e
-  { printf 'BENCH-7\ntester\n'; yes ''; } | timeout 900 "$accelcal" wizard --source "$source" --bench-control "127.0.0.1:$bench_port" \
-    --procedure "$procedure" --session "$db" --plain "$@" > "$work/out" 2> "$work/err"
+  { printf "$answers"; yes ''; } | timeout 900 "$accelcal" wizard --source "$source" \
+    --bench-control "127.0.0.1:$bench_port" --procedure "$procedure" --session "$db" --plain "$@" \
+    > "$work/out" 2> "$work/err"
   local code=${PIPESTATUS[1]}
   set -e
   [ "$code" -eq 0 ] || { tail -30 "$work/out" >&2; cat "$work/err" >&2; fail "wizard on $source exited $code"; }
+}
+
+bench_wizard_killed() {  # ANSWERS TEXT SOURCE DB PROCEDURE [ARGS...]
+  local answers=$1 text=$2 source=$3 db=$4 procedure=$5; shift 5
+  { printf "$answers"; yes ''; } | "$accelcal" wizard --source "$source" \
+    --bench-control "127.0.0.1:$bench_port" --procedure "$procedure" --session "$db" --plain "$@" \
+    > "$work/out.killed" 2>&1 &
+  local pid=$!  # the last command of the pipeline: accelcal itself
+  for _ in $(seq 1200); do
+    flat "$work/out.killed" "$text" && break
+    kill -0 "$pid" 2>/dev/null || { tail -20 "$work/out.killed" >&2; fail "the wizard ended before: $text"; }
+    sleep 0.1
+  done
+  flat "$work/out.killed" "$text" || fail "the wizard never said: $text"
+  kill -9 "$pid"
+  wait "$pid" 2>/dev/null || true
 }

@@ -331,6 +331,7 @@ std::string MavlinkSource::DescribeReading() const {
                       "other messages skipped",
                       c.frames, connection_.lost_frames(), c.bad_crc, c.wrong_length,
                       c.garbage_bytes, c.other_messages);
+  if (c.other_messages > 0) text += fmt::format(" (latest: {})", MessageName(c.last_other_message));
   if (c.signed_frames > 0) text += fmt::format(", {} signed (signatures not checked)", c.signed_frames);
   if (c.v1_frames > 0) text += fmt::format(", {} MAVLink 1", c.v1_frames);
   if (ties_spread_ > 0) text += fmt::format("; {} repeated time stamps spread by 1 us", ties_spread_);
