@@ -11,8 +11,10 @@ packages=(
   nlohmann-json3-dev libcli11-dev libfmt-dev libgtest-dev libbenchmark-dev
 )
 # Only the tests need these: headless Chromium renders the HTML report and prints it to PDF,
-# poppler-utils reads the PDF's pages back (tests/e2e/report_html.sh).
-test_packages=(chromium poppler-utils)
+# poppler-utils reads the PDF's pages back (tests/e2e/report_html.sh); libiio's tools read the
+# fake IIO tree beside accelcal (tests/e2e/iio_devices.sh); Node.js and npm run the MAVLink test
+# vehicle, whose node-mavlink the tests install into the build directory (tests/peers/).
+test_packages=(chromium poppler-utils libiio-utils nodejs npm)
 [ "${1:-}" = "--no-test" ] || packages+=("${test_packages[@]}")
 
 missing=()

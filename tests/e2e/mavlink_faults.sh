@@ -52,7 +52,7 @@ err_says "of other messages skipped (latest: message 703710)"
 # 5 % of the frames never sent: sequence gaps counted as lost samples (a single one is no gap
 # in t: it is within 3 sample intervals).
 vehicle_record 10 --drop 0.05
-lost=$(sed -n 's/.* \([0-9]*\) frames lost$/\1/p' "$work/err" | tail -1)
+lost=$(sed -n 's/.* \([0-9]*\) samples lost$/\1/p' "$work/err" | tail -1)
 [ -n "$lost" ] && [ "$lost" -ge 20 ] && [ "$lost" -le 90 ] || { cat "$work/err"; fail "5 % of ~1000 frames lost: $lost counted"; }
 
 # Signing on, MAVLink 1: read as well.

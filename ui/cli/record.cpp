@@ -76,6 +76,7 @@ void ReportEvents(const SampleSource& source, const ReadResult& r, bool quiet) {
     fmt::print(stderr, "accelcal record: gap in t: {:.6g} s -> {:.6g} s ({:.3g} s missing)\n",
                s.last_gap.t_before_s, s.last_gap.t_after_s, s.last_gap.missing_s);
   if (r.went_dead) fmt::print(stderr, "accelcal record: link dead: {}\n", s.link_error);
+  else if (r.link_lost) fmt::print(stderr, "accelcal record: link lost: {}\n", s.link_error);
   if (r.reconnected) fmt::print(stderr, "accelcal record: link back up\n");
   if (r.notice) fmt::print(stderr, "accelcal record: {}\n", s.last_notice);
 }

@@ -88,7 +88,7 @@ std::string FindDeviceDir(const IioSourceSpec& spec) {
   std::error_code ec;
   for (const fs::directory_entry& e : fs::directory_iterator(spec.root, ec)) {
     const std::string dir_id = e.path().filename();
-    if (dir_id.rfind("iio:device", 0) != 0) continue;
+    if (dir_id.rfind("iio:device", 0) != 0 || !e.is_directory(ec)) continue;
     std::string error;
     const std::string name = ReadAttribute(e.path() / "name", &error).value_or("");
     seen.push_back(name.empty() ? dir_id : dir_id + " (" + name + ")");

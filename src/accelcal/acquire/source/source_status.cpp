@@ -21,7 +21,7 @@ std::string SourceStatus::BriefReport() const {
   std::string line = fmt::format("{}, {} Hz, {} samples, {} malformed, {} gaps",
                                  LinkStateToString(link), rate, samples_total, malformed_lines,
                                  gaps);
-  if (lost_frames > 0) line += fmt::format(", {} frame{} lost", lost_frames, lost_frames == 1 ? "" : "s");
+  if (lost_frames > 0) line += fmt::format(", {} sample{} lost", lost_frames, lost_frames == 1 ? "" : "s");
   if (!link_error.empty()) line += " (" + link_error + ")";
   return line;
 }

@@ -54,7 +54,8 @@ struct SourceStatus {
   // counts of 0.001 m/s^2; an ADC's 1 count); NaN: unknown or finer than anything that matters
   // (a float). A noise floor near or below step / sqrt(12) is the rounding, not the sensor.
   double resolution_counts = kNaN;
-  // Frames the sender numbered but that never arrived (MAVLink sequence gaps): lost samples.
+  // Samples the sender numbered but that never arrived: MAVLink sequence gaps, IIO timestamps
+  // that jump (buffer overruns).
   long lost_frames = 0;
   // The latest event that is neither a sample nor an error: "system 1 rebooted ...", "the
   // vehicle refused SET_MESSAGE_INTERVAL ...". Empty when none.
