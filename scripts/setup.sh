@@ -12,9 +12,10 @@ packages=(
 )
 # Only the tests need these: headless Chromium renders the HTML report and prints it to PDF,
 # poppler-utils reads the PDF's pages back (tests/e2e/report_html.sh); libiio's tools read the
-# fake IIO tree beside accelcal (tests/e2e/iio_devices.sh); Node.js and npm run the MAVLink test
-# vehicle, whose node-mavlink the tests install into the build directory (tests/peers/).
-test_packages=(chromium poppler-utils libiio-utils nodejs npm)
+# fake IIO tree beside accelcal (tests/e2e/iio_devices.sh). The MAVLink test vehicle runs on the
+# machine's own Node.js and npm (not Debian's: they come with the machine), which install
+# node-mavlink into the build directory when the tests first need it (tests/peers/).
+test_packages=(chromium poppler-utils libiio-utils)
 [ "${1:-}" = "--no-test" ] || packages+=("${test_packages[@]}")
 
 missing=()
