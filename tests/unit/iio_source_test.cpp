@@ -25,12 +25,12 @@ namespace fs = std::filesystem;
 using testing::Contains;
 using testing::ReadUntil;
 
-void Put(const fs::path& file, const std::string& text) {
+void PutAttr(const fs::path& file, const std::string& text) {
   fs::create_directories(file.parent_path());
   std::ofstream(file) << text << "\n";
 }
 
-std::string Get(const fs::path& file) {
+std::string GetAttr(const fs::path& file) {
   std::ifstream in(file);
   std::string text;
   std::getline(in, text);
@@ -44,29 +44,29 @@ class IioSourceTest : public ::testing::Test {
                                                     ::testing::UnitTest::GetInstance()->current_test_info()->name());
     fs::remove_all(root_);
     dev_ = root_ / "iio:device3";
-    Put(dev_ / "name", "adxl345");
-    Put(dev_ / "in_accel_scale", "0.038307");
-    Put(dev_ / "sampling_frequency", "100");
-    Put(dev_ / "trigger/current_trigger", "adxl345-dev3");
-    for (const char* axis : {"x", "y", "z"}) Put(dev_ / fmt::format("in_accel_{}_raw", axis), "0");
+    PutAttr(dev_ / "name", "adxl345");
+    PutAttr(dev_ / "in_accel_scale", "0.038307");
+    PutAttr(dev_ / "sampling_frequency", "100");
+    PutAttr(dev_ / "trigger/current_trigger", "adxl345-dev3");
+    for (const char* axis : {"x", "y", "z"}) PutAttr(dev_ / fmt::format("in_accel_{}_raw", axis), "0");
   }
   void TearDown() override { fs::remove_all(root_); }
 
   void Buffer0() {
-    Put(dev_ / "buffer0/enable", "0");
-    Put(dev_ / "buffer0/length", "64");
+    PutAttr(dev_ / "buffer0/enable", "0");
+    PutAttr(dev_ / "buffer0/length", "64");
     int index = 0;
     for (const char* axis : {"x", "y", "z"}) {
-      Put(dev_ / fmt::format("buffer0/in_accel_{}_en", axis), "0");
-      Put(dev_ / fmt::format("buffer0/in_accel_{}_index", axis), std::to_string(index++));
-      Put(dev_ / fmt::format("buffer0/in_accel_{}_type", axis), "le:s12/16>>4");
+      PutAttr(dev_ / fmt::format("buffer0/in_accel_{}_en", axis), "0");
+      PutAttr(dev_ / fmt::format("buffer0/in_accel_{}_index", axis), std::to_string(index++));
+      PutAttr(dev_ / fmt::format("buffer0/in_accel_{}_type", axis), "le:s12/16>>4");
     }
-    Put(dev_ / "buffer0/in_timestamp_en", "0");
-    Put(dev_ / "buffer0/in_timestamp_index", "3");
-    Put(dev_ / "buffer0/in_timestamp_type", "le:s64/64>>0");
-    Put(dev_ / "buffer0/in_temp_en", "1");  // enabled by someone else: must be turned off
-    Put(dev_ / "buffer0/in_temp_index", "4");
-    Put(dev_ / "buffer0/in_temp_type", "le:s16/16>>0");
+    PutAttr(dev_ / "buffer0/in_timestamp_en", "0");
+    PutAttr(dev_ / "buffer0/in_timestamp_index", "3");
+    PutAttr(dev_ / "buffer0/in_timestamp_type", "le:s64/64>>0");
+    PutAttr(dev_ / "buffer0/in_temp_en", "1");  // enabled by someone else: must be turned off
+    PutAttr(dev_ / "buffer0/in_temp_index", "4");
+    PutAttr(dev_ / "buffer0/in_temp_type", "le:s16/16>>0");
     fifo_ = root_ / "dev-fifo";
     ASSERT_EQ(::mkfifo(fifo_.c_str(), 0600), 0);
   }
@@ -125,10 +125,10 @@ TEST_F(IioSourceTest, BufferedRecordsDecodedWithTheirTimestamps) {
   EXPECT_DOUBLE_EQ(samples[30].t_s, 0.31);
   EXPECT_EQ(source.status().lost_frames, 1);
   EXPECT_TRUE(Contains(source.DescribeReading(), "1 overrun, 1 samples lost")) << source.DescribeReading();
-  EXPECT_EQ(Get(dev_ / "buffer0/in_accel_y_en"), "1");
-  EXPECT_EQ(Get(dev_ / "buffer0/in_timestamp_en"), "1");
-  EXPECT_EQ(Get(dev_ / "buffer0/in_temp_en"), "0");
-  EXPECT_EQ(Get(dev_ / "buffer0/enable"), "1");
+  EXPECT_EQ(GetAttr(dev_ / "buffer0/in_accel_y_en"), "1");
+  EXPECT_EQ(GetAttr(dev_ / "buffer0/in_timestamp_en"), "1");
+  EXPECT_EQ(GetAttr(dev_ / "buffer0/in_temp_en"), "0");
+  EXPECT_EQ(GetAttr(dev_ / "buffer0/enable"), "1");
   EXPECT_TRUE(Contains(source.DescribeReading(), "in_accel_scale 0.038307 and no offset stated, not applied"))
       << source.DescribeReading();
   EXPECT_TRUE(Contains(source.DescribeReading(), "trigger: adxl345-dev3"));
@@ -139,7 +139,7 @@ TEST_F(IioSourceTest, BufferedRecordsDecodedWithTheirTimestamps) {
 
 TEST_F(IioSourceTest, AScanTypeNotUnderstoodIsRefusedByName) {
   Buffer0();
-  Put(dev_ / "buffer0/in_accel_z_type", "le:s12/12>>4");
+  PutAttr(dev_ / "buffer0/in_accel_z_type", "le:s12/12>>4");
   try {
     IioSource source(Spec(), Quick());
     FAIL() << "accepted";
@@ -150,9 +150,9 @@ TEST_F(IioSourceTest, AScanTypeNotUnderstoodIsRefusedByName) {
 }
 
 TEST_F(IioSourceTest, PolledRawFilesAnEioReadAndADeviceThatGoesAway) {
-  Put(dev_ / "in_accel_x_raw", "12");
-  Put(dev_ / "in_accel_y_raw", "-7");
-  Put(dev_ / "in_accel_z_raw", "1002");
+  PutAttr(dev_ / "in_accel_x_raw", "12");
+  PutAttr(dev_ / "in_accel_y_raw", "-7");
+  PutAttr(dev_ / "in_accel_z_raw", "1002");
   IioSource source(ParseIioSpec(fmt::format("iio:iio:device3,root={},rate=200", root_.string())), Quick());
   EXPECT_FALSE(source.buffered());
   std::vector<Sample> samples;

@@ -15,7 +15,7 @@ namespace {
 
 using accelcal::testing::Contains;
 
-std::vector<Frame> Parse(const std::vector<std::uint8_t>& bytes, FrameParser* parser, long* bad) {
+std::vector<Frame> ParseBytes(const std::vector<std::uint8_t>& bytes, FrameParser* parser, long* bad) {
   std::vector<Frame> out;
   parser->Feed(bytes.data(), bytes.size(), &out, bad);
   return out;
@@ -58,7 +58,7 @@ TEST(MavlinkFrameTest, V2RoundTripWithTruncatedPayloadZeroFilled) {
   EXPECT_LT(bytes.size(), 10u + 63u + 2u);  // the trailing zeros (id 0) were dropped
   FrameParser parser;
   long bad = 0;
-  const std::vector<Frame> frames = Parse(bytes, &parser, &bad);
+  const std::vector<Frame> frames = ParseBytes(bytes, &parser, &bad);
   ASSERT_EQ(frames.size(), 1u);
   EXPECT_EQ(bad, 0);
   EXPECT_EQ(frames[0].payload.size(), 63u);
@@ -73,7 +73,7 @@ TEST(MavlinkFrameTest, V1FramesAreRead) {
   FrameWriter writer(7, 1);
   FrameParser parser;
   long bad = 0;
-  const auto frames = Parse(writer.Encode(kScaledImu, Payload(24, 1), 1), &parser, &bad);
+  const auto frames = ParseBytes(writer.Encode(kScaledImu, Payload(24, 1), 1), &parser, &bad);
   ASSERT_EQ(frames.size(), 1u);
   EXPECT_EQ(frames[0].version, 1);
   EXPECT_EQ(frames[0].system, 7);
@@ -95,7 +95,7 @@ TEST(MavlinkFrameTest, SignedFrameAcceptedSignatureSkipped) {
   bytes.insert(bytes.end(), next.begin(), next.end());
   FrameParser parser;
   long bad = 0;
-  const auto frames = Parse(bytes, &parser, &bad);
+  const auto frames = ParseBytes(bytes, &parser, &bad);
   ASSERT_EQ(frames.size(), 2u);
   EXPECT_TRUE(frames[0].signed_frame);
   EXPECT_EQ(parser.counters().signed_frames, 1);
@@ -110,7 +110,7 @@ TEST(MavlinkFrameTest, BadCrcIsCountedAndTheNextFrameStillRead) {
   bytes.insert(bytes.end(), good.begin(), good.end());
   FrameParser parser;
   long bad = 0;
-  const auto frames = Parse(bytes, &parser, &bad);
+  const auto frames = ParseBytes(bytes, &parser, &bad);
   ASSERT_EQ(frames.size(), 1u);
   EXPECT_EQ(parser.counters().bad_crc, 1);
   EXPECT_GE(bad, 1);
@@ -125,7 +125,7 @@ TEST(MavlinkFrameTest, GarbageBurstIsSkippedAndSaid) {
   bytes.insert(bytes.end(), good.begin(), good.end());
   FrameParser parser;
   long bad = 0;
-  const auto frames = Parse(bytes, &parser, &bad);
+  const auto frames = ParseBytes(bytes, &parser, &bad);
   ASSERT_EQ(frames.size(), 1u);
   EXPECT_EQ(frames[0].message, kHeartbeat);
   EXPECT_GE(parser.counters().garbage_bytes, 250);
@@ -143,7 +143,7 @@ TEST(MavlinkFrameTest, TooLongPayloadIsAWrongLength) {
   frame.push_back(static_cast<std::uint8_t>(crc.value() >> 8));
   FrameParser parser;
   long bad = 0;
-  EXPECT_TRUE(Parse(frame, &parser, &bad).empty());
+  EXPECT_TRUE(ParseBytes(frame, &parser, &bad).empty());
   EXPECT_EQ(parser.counters().wrong_length, 1);
   EXPECT_TRUE(Contains(parser.last_complaint(), "70 payload bytes (at most 63 expected)")) << parser.last_complaint();
 }
@@ -155,7 +155,7 @@ TEST(MavlinkFrameTest, UnknownMessageSkippedByItsLength) {
   bytes.insert(bytes.end(), good.begin(), good.end());
   FrameParser parser;
   long bad = 0;
-  const auto frames = Parse(bytes, &parser, &bad);
+  const auto frames = ParseBytes(bytes, &parser, &bad);
   ASSERT_EQ(frames.size(), 1u);
   EXPECT_EQ(parser.counters().other_messages, 1);
   EXPECT_EQ(parser.counters().last_other_message, 0x0ABCDEu);

@@ -131,7 +131,7 @@ std::vector<std::uint8_t> Scaled(FrameWriter& w, std::uint32_t message, double t
   return w.Encode(message, p);
 }
 
-SourceOptions Options() {
+SourceOptions LinkOptions() {
   SourceOptions o;
   o.reconnect_initial_s = 0.05;
   o.dead_after_s = 5.0;
@@ -143,7 +143,7 @@ TEST(MavlinkSourceTest, HighresImuInCountsOfAThousandthMps2) {
     return std::vector<std::vector<std::uint8_t>>{Highres(w, 0.01 * tick, {0.1, -0.2, 9.8}),
                                                   Highres(w, 0.01 * tick, {5, 5, 5}, 1)};
   });
-  MavlinkSource source(ParseMavlinkSpec(fmt::format("mavlink:tcp:127.0.0.1:{}", vehicle.port())), Options());
+  MavlinkSource source(ParseMavlinkSpec(fmt::format("mavlink:tcp:127.0.0.1:{}", vehicle.port())), LinkOptions());
   std::vector<Sample> samples;
   ASSERT_TRUE(ReadUntil(source, &samples, [](const SourceStatus& s) { return s.samples_total >= 30; }));
   EXPECT_NEAR(samples.back().raw_counts.x(), 100.0, 1e-3);
@@ -161,7 +161,7 @@ TEST(MavlinkSourceTest, ScaledImuOfTheAskedInstanceInMilliG) {
     return std::vector<std::vector<std::uint8_t>>{Scaled(w, kScaledImu, 0.01 * tick, 500),
                                                   Scaled(w, kScaledImu2, 0.01 * tick, 1000)};
   });
-  MavlinkSource source(ParseMavlinkSpec(fmt::format("mavlink:tcp:127.0.0.1:{},imu=1", vehicle.port())), Options());
+  MavlinkSource source(ParseMavlinkSpec(fmt::format("mavlink:tcp:127.0.0.1:{},imu=1", vehicle.port())), LinkOptions());
   std::vector<Sample> samples;
   ASSERT_TRUE(ReadUntil(source, &samples, [](const SourceStatus& s) { return s.samples_total >= 20; }));
   EXPECT_NEAR(samples.back().raw_counts.z(), 9806.65, 1e-6);  // 1000 mG, exactly
@@ -179,7 +179,7 @@ TEST(MavlinkSourceTest, SequenceGapsAreLostFramesAndARebootKeepsTimeGoing) {
     if (tick % 10 != 5) out.push_back(frame);  // every tenth sent never arrives: a seq gap
     return out;
   });
-  MavlinkSource source(ParseMavlinkSpec(fmt::format("mavlink:tcp:127.0.0.1:{}", vehicle.port())), Options());
+  MavlinkSource source(ParseMavlinkSpec(fmt::format("mavlink:tcp:127.0.0.1:{}", vehicle.port())), LinkOptions());
   std::vector<Sample> samples;
   ASSERT_TRUE(ReadUntil(source, &samples, [](const SourceStatus& s) { return s.samples_total >= 140; }));
   EXPECT_GE(source.status().lost_frames, 10);
@@ -191,7 +191,7 @@ TEST(MavlinkSourceTest, TheVehiclesCalibrationTakenBackOut) {
   FakeVehicle vehicle([](FrameWriter& w, int tick) {
     return std::vector<std::vector<std::uint8_t>>{Highres(w, 0.01 * tick, {2.0, 1.0, -9.0})};
   });
-  MavlinkSource source(ParseMavlinkSpec(fmt::format("mavlink:tcp:127.0.0.1:{}", vehicle.port())), Options());
+  MavlinkSource source(ParseMavlinkSpec(fmt::format("mavlink:tcp:127.0.0.1:{}", vehicle.port())), LinkOptions());
   AccelUndo undo;
   undo.offset_mps2 = Eigen::Vector3d(0.1, 0.0, 0.0);
   undo.scale = Eigen::Vector3d(2.0, 1.0, 1.0);

@@ -20,7 +20,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr const char* kUsage = "iio:DEVICE[,root=DIR][,dev=FILE][,x=CH,y=CH,z=CH][,rate=HZ][,poll]";
+constexpr const char* kIioUsage = "iio:DEVICE[,root=DIR][,dev=FILE][,x=CH,y=CH,z=CH][,rate=HZ][,poll]";
 
 bool Exists(const std::string& path) {
   std::error_code ec;
@@ -125,7 +125,7 @@ IioSourceSpec ParseIioSpec(const std::string& spec) {
     from = comma + 1;
   }
   s.device = parts[0];
-  if (s.device.empty()) throw Error(fmt::format("source '{}': expected {}", spec, kUsage));
+  if (s.device.empty()) throw Error(fmt::format("source '{}': expected {}", spec, kIioUsage));
   for (size_t i = 1; i < parts.size(); ++i) {
     const size_t eq = parts[i].find('=');
     const std::string key = parts[i].substr(0, eq);
@@ -143,7 +143,7 @@ IioSourceSpec ParseIioSpec(const std::string& spec) {
       if (!detail::ParseDouble(value, &s.rate_hz) || !(s.rate_hz > 0.0) || s.rate_hz > 1e5)
         throw Error(fmt::format("source '{}': rate={} is not a rate in Hz (0 .. 100000)", spec, value));
     } else {
-      throw Error(fmt::format("source '{}': unknown option '{}': expected {}", spec, parts[i], kUsage));
+      throw Error(fmt::format("source '{}': unknown option '{}': expected {}", spec, parts[i], kIioUsage));
     }
   }
   return s;

@@ -8,7 +8,7 @@ namespace accelcal {
 namespace {
 
 // Reads a decimal number at text[*at...]; false when there is none.
-bool Number(std::string_view text, size_t* at, int* value) {
+bool ScanNumber(std::string_view text, size_t* at, int* value) {
   const size_t start = *at;
   long v = 0;
   while (*at < text.size() && std::isdigit(static_cast<unsigned char>(text[*at])) && *at - start < 4)
@@ -63,10 +63,10 @@ std::optional<IioScanType> ParseIioScanType(std::string_view text, std::string* 
   if (sign == 's' || sign == 'S') t.is_signed = true;
   else if (sign == 'u' || sign == 'U') t.is_signed = false;
   else return refuse(fmt::format("sign '{}' is neither s nor u", sign));
-  if (!Number(text, &at, &t.bits) || !Expect(text, &at, "/") || !Number(text, &at, &t.storage_bits))
+  if (!ScanNumber(text, &at, &t.bits) || !Expect(text, &at, "/") || !ScanNumber(text, &at, &t.storage_bits))
     return refuse("no BITS/STORAGEBITS");
-  if (Expect(text, &at, "X") && !Number(text, &at, &t.repeat)) return refuse("no repeat count after X");
-  if (!Expect(text, &at, ">>") || !Number(text, &at, &t.shift)) return refuse("no >>SHIFT");
+  if (Expect(text, &at, "X") && !ScanNumber(text, &at, &t.repeat)) return refuse("no repeat count after X");
+  if (!Expect(text, &at, ">>") || !ScanNumber(text, &at, &t.shift)) return refuse("no >>SHIFT");
   if (at != text.size()) return refuse(fmt::format("'{}' left over", text.substr(at)));
   if (t.storage_bits != 8 && t.storage_bits != 16 && t.storage_bits != 32 && t.storage_bits != 64)
     return refuse(fmt::format("storage of {} bits (8, 16, 32 or 64 expected)", t.storage_bits));

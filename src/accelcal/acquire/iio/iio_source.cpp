@@ -27,7 +27,7 @@ constexpr double kDefaultPollHz = 100.0;
 constexpr size_t kReadBytes = 64 * 1024;
 constexpr double kOverrunPeriods = 1.5;  // a timestamp step beyond this many periods: samples lost
 
-int PollMs(double until_s) {
+int IioPollMs(double until_s) {
   const double left_s = until_s - WallNowS();
   return left_s <= 0.0 ? 0 : static_cast<int>(std::ceil(std::min(left_s, 3600.0) * 1000.0));
 }
@@ -83,7 +83,7 @@ ReadResult IioSource::Read(double timeout_s, std::vector<Sample>* out) {
     }
     if (buffered_) {
       pollfd p{fd_, POLLIN, 0};
-      const int rc = poll(&p, 1, PollMs(deadline_s));
+      const int rc = poll(&p, 1, IioPollMs(deadline_s));
       if (rc > 0) ReadRecords(&result);
       else if (rc < 0 && errno != EINTR) Lost(std::string("poll: ") + std::strerror(errno), &result);
     } else {

@@ -17,10 +17,10 @@ namespace {
 using source_detail::SleepS;
 using source_detail::WallNowS;
 
-constexpr size_t kReadChunkBytes = 64 * 1024;
+constexpr size_t kLinkChunkBytes = 64 * 1024;
 constexpr size_t kMaxBytesPerPump = 1024 * 1024;
 
-int PollMs(double until_s) {
+int LinkPollMs(double until_s) {
   const double left_s = until_s - WallNowS();
   return left_s <= 0.0 ? 0 : static_cast<int>(std::ceil(std::min(left_s, 3600.0) * 1000.0));
 }
@@ -37,7 +37,7 @@ Connection::Connection(LinkSpec link, const ConnectionOptions& options)
       options_(options),
       transport_(MakeTransport(spec_)),
       backoff_(options.reconnect_initial_s, options.reconnect_max_s),
-      buffer_(kReadChunkBytes) {}
+      buffer_(kLinkChunkBytes) {}
 
 Connection::~Connection() { transport_->Close(); }
 
@@ -58,7 +58,7 @@ void Connection::Pump(double timeout_s, const std::function<bool()>& stop,
     HeartbeatIfDue();
     const double wake_s = std::min(deadline_s, next_heartbeat_wall_s_);
     pollfd p{transport_->fd(), POLLIN, 0};
-    const int rc = poll(&p, 1, PollMs(wake_s));
+    const int rc = poll(&p, 1, LinkPollMs(wake_s));
     if (rc < 0 && errno != EINTR) Drop(std::string("poll: ") + std::strerror(errno));
     if (rc > 0) ReadAvailable(on_frame);
     if (stop && stop()) return;

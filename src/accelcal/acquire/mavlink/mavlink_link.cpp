@@ -25,7 +25,7 @@ constexpr const char* kExpectedLinks =
     "mavlink:serial:DEVICE@BAUD, mavlink:tcp:HOST:PORT, mavlink:udp:ADDR:PORT or "
     "mavlink:udpout:HOST:PORT";
 
-bool StartsWith(const std::string& text, std::string_view prefix) {
+bool HasScheme(const std::string& text, std::string_view prefix) {
   return text.compare(0, prefix.size(), prefix) == 0;
 }
 
@@ -149,7 +149,7 @@ Transport::OpenStep UdpTransport::Open(double /*timeout_s*/, std::string* error)
 
 LinkSpec ParseLinkSpec(const std::string& link, const std::string& whole_spec) {
   LinkSpec s;
-  if (StartsWith(link, "serial:")) {
+  if (HasScheme(link, "serial:")) {
     s.kind = LinkKind::kSerial;
     const std::string rest = link.substr(7);
     const size_t at = rest.rfind('@');
@@ -166,7 +166,7 @@ LinkSpec ParseLinkSpec(const std::string& link, const std::string& whole_spec) {
   for (const Scheme& scheme : {Scheme{"tcp:", LinkKind::kTcp, "mavlink:tcp:HOST:PORT, e.g. mavlink:tcp:127.0.0.1:5760"},
                                Scheme{"udp:", LinkKind::kUdp, "mavlink:udp:ADDR:PORT, e.g. mavlink:udp:0.0.0.0:14550"},
                                Scheme{"udpout:", LinkKind::kUdpOut, "mavlink:udpout:HOST:PORT, e.g. mavlink:udpout:192.168.4.1:14555"}}) {
-    if (!StartsWith(link, scheme.prefix)) continue;
+    if (!HasScheme(link, scheme.prefix)) continue;
     const HostPort hp = ParseHostPort(link.substr(std::string_view(scheme.prefix).size()), whole_spec, scheme.example);
     s.kind = scheme.kind;
     s.host = hp.host;

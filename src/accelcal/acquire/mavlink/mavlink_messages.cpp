@@ -99,14 +99,14 @@ std::vector<MessageSpec> BuildTable() {
 
 // Little-endian reads and writes at a byte offset of a payload (MAVLink is little-endian).
 template <typename T>
-T Get(const Payload& p, size_t offset) {
+T GetLe(const Payload& p, size_t offset) {
   T value{};
   if (offset + sizeof(T) <= p.size()) std::memcpy(&value, p.data() + offset, sizeof(T));
   return value;
 }
 
 template <typename T>
-void Put(Payload* p, size_t offset, T value) {
+void PutLe(Payload* p, size_t offset, T value) {
   std::memcpy(p->data() + offset, &value, sizeof(T));
 }
 
@@ -186,12 +186,12 @@ std::string MessageName(std::uint32_t id) {
 
 Heartbeat DecodeHeartbeat(const Payload& p) {
   Heartbeat h;
-  h.custom_mode = Get<std::uint32_t>(p, 0);
-  h.type = Get<std::uint8_t>(p, 4);
-  h.autopilot = Get<std::uint8_t>(p, 5);
-  h.base_mode = Get<std::uint8_t>(p, 6);
-  h.system_status = Get<std::uint8_t>(p, 7);
-  h.mavlink_version = Get<std::uint8_t>(p, 8);
+  h.custom_mode = GetLe<std::uint32_t>(p, 0);
+  h.type = GetLe<std::uint8_t>(p, 4);
+  h.autopilot = GetLe<std::uint8_t>(p, 5);
+  h.base_mode = GetLe<std::uint8_t>(p, 6);
+  h.system_status = GetLe<std::uint8_t>(p, 7);
+  h.mavlink_version = GetLe<std::uint8_t>(p, 8);
   return h;
 }
 
@@ -200,26 +200,26 @@ std::optional<ImuReading> DecodeImu(std::uint32_t message_id, const Payload& p) 
   r.message = message_id;
   switch (message_id) {
     case kHighresImu:
-      r.time_s = static_cast<double>(Get<std::uint64_t>(p, 0)) / 1e6;
-      for (int j = 0; j < 3; ++j) r.acc[static_cast<size_t>(j)] = Get<float>(p, 8 + 4 * static_cast<size_t>(j));
-      r.temp_c = (Get<std::uint16_t>(p, 60) & kHighresTemperatureUpdated) != 0
-                     ? static_cast<double>(Get<float>(p, 56))
+      r.time_s = static_cast<double>(GetLe<std::uint64_t>(p, 0)) / 1e6;
+      for (int j = 0; j < 3; ++j) r.acc[static_cast<size_t>(j)] = GetLe<float>(p, 8 + 4 * static_cast<size_t>(j));
+      r.temp_c = (GetLe<std::uint16_t>(p, 60) & kHighresTemperatureUpdated) != 0
+                     ? static_cast<double>(GetLe<float>(p, 56))
                      : std::numeric_limits<double>::quiet_NaN();
-      r.instance = Get<std::uint8_t>(p, 62);
+      r.instance = GetLe<std::uint8_t>(p, 62);
       return r;
     case kScaledImu:
     case kScaledImu2:
     case kScaledImu3:
-      r.time_s = Get<std::uint32_t>(p, 0) / 1e3;
-      for (int j = 0; j < 3; ++j) r.acc[static_cast<size_t>(j)] = Get<std::int16_t>(p, 4 + 2 * static_cast<size_t>(j));
-      r.temp_c = CentiDegC(Get<std::int16_t>(p, 22));
+      r.time_s = GetLe<std::uint32_t>(p, 0) / 1e3;
+      for (int j = 0; j < 3; ++j) r.acc[static_cast<size_t>(j)] = GetLe<std::int16_t>(p, 4 + 2 * static_cast<size_t>(j));
+      r.temp_c = CentiDegC(GetLe<std::int16_t>(p, 22));
       r.instance = message_id == kScaledImu ? 0 : message_id == kScaledImu2 ? 1 : 2;
       return r;
     case kRawImu:
-      r.time_s = static_cast<double>(Get<std::uint64_t>(p, 0)) / 1e6;
-      for (int j = 0; j < 3; ++j) r.acc[static_cast<size_t>(j)] = Get<std::int16_t>(p, 8 + 2 * static_cast<size_t>(j));
-      r.instance = Get<std::uint8_t>(p, 26);
-      r.temp_c = CentiDegC(Get<std::int16_t>(p, 27));
+      r.time_s = static_cast<double>(GetLe<std::uint64_t>(p, 0)) / 1e6;
+      for (int j = 0; j < 3; ++j) r.acc[static_cast<size_t>(j)] = GetLe<std::int16_t>(p, 8 + 2 * static_cast<size_t>(j));
+      r.instance = GetLe<std::uint8_t>(p, 26);
+      r.temp_c = CentiDegC(GetLe<std::int16_t>(p, 27));
       return r;
   }
   return std::nullopt;
@@ -227,26 +227,26 @@ std::optional<ImuReading> DecodeImu(std::uint32_t message_id, const Payload& p) 
 
 ParamValue DecodeParamValue(const Payload& p) {
   ParamValue v;
-  v.value = Get<float>(p, 0);
-  v.count = Get<std::uint16_t>(p, 4);
-  v.index = Get<std::uint16_t>(p, 6);
+  v.value = GetLe<float>(p, 0);
+  v.count = GetLe<std::uint16_t>(p, 4);
+  v.index = GetLe<std::uint16_t>(p, 6);
   v.id = GetText(p, 8, 16);
-  v.type = Get<std::uint8_t>(p, 24);
+  v.type = GetLe<std::uint8_t>(p, 24);
   return v;
 }
 
 CommandAck DecodeCommandAck(const Payload& p) {
-  return {Get<std::uint16_t>(p, 0), Get<std::uint8_t>(p, 2)};
+  return {GetLe<std::uint16_t>(p, 0), GetLe<std::uint8_t>(p, 2)};
 }
 
 std::string DecodeStatustext(const Payload& p, std::uint8_t* severity) {
-  if (severity != nullptr) *severity = Get<std::uint8_t>(p, 0);
+  if (severity != nullptr) *severity = GetLe<std::uint8_t>(p, 0);
   return GetText(p, 1, 50);
 }
 
 Payload EncodeHeartbeat(const Heartbeat& h) {
   Payload p(9, 0);
-  Put(&p, 0, h.custom_mode);
+  PutLe(&p, 0, h.custom_mode);
   p[4] = h.type;
   p[5] = h.autopilot;
   p[6] = h.base_mode;
@@ -257,7 +257,7 @@ Payload EncodeHeartbeat(const Heartbeat& h) {
 
 Payload EncodeParamRequestRead(std::uint8_t system, std::uint8_t component, std::string_view id) {
   Payload p(20, 0);
-  Put<std::int16_t>(&p, 0, -1);  // by name, not by index
+  PutLe<std::int16_t>(&p, 0, -1);  // by name, not by index
   p[2] = system;
   p[3] = component;
   PutText(&p, 4, id, 16);
@@ -271,7 +271,7 @@ Payload EncodeParamRequestList(std::uint8_t system, std::uint8_t component) {
 Payload EncodeParamSet(std::uint8_t system, std::uint8_t component, std::string_view id,
                        float value, std::uint8_t type) {
   Payload p(23, 0);
-  Put(&p, 0, value);
+  PutLe(&p, 0, value);
   p[4] = system;
   p[5] = component;
   PutText(&p, 6, id, 16);
@@ -282,8 +282,8 @@ Payload EncodeParamSet(std::uint8_t system, std::uint8_t component, std::string_
 Payload EncodeCommandLong(std::uint8_t system, std::uint8_t component, std::uint16_t command,
                           const std::array<float, 7>& params) {
   Payload p(33, 0);
-  for (size_t i = 0; i < 7; ++i) Put(&p, 4 * i, params[i]);
-  Put(&p, 28, command);
+  for (size_t i = 0; i < 7; ++i) PutLe(&p, 4 * i, params[i]);
+  PutLe(&p, 28, command);
   p[30] = system;
   p[31] = component;
   p[32] = 0;  // confirmation
@@ -293,7 +293,7 @@ Payload EncodeCommandLong(std::uint8_t system, std::uint8_t component, std::uint
 Payload EncodeRequestDataStream(std::uint8_t system, std::uint8_t component,
                                 std::uint8_t stream_id, std::uint16_t rate_hz, bool start) {
   Payload p(6, 0);
-  Put(&p, 0, rate_hz);
+  PutLe(&p, 0, rate_hz);
   p[2] = system;
   p[3] = component;
   p[4] = stream_id;

@@ -22,7 +22,7 @@ constexpr double kChooseWaitS = 1.0;    // for a HIGHRES_IMU after another IMU m
 constexpr double kRebootStepS = 0.5;    // the vehicle's clock going back more than this: a reboot
 constexpr size_t kMaxHeld = 20000;      // readings held while the message is chosen
 
-const char* kUsage = "mavlink:LINK[,imu=N][,rate=HZ][,msg=highres|scaled|raw][,sys=N][,comp=N]";
+const char* kMavlinkUsage = "mavlink:LINK[,imu=N][,rate=HZ][,msg=highres|scaled|raw][,sys=N][,comp=N]";
 
 std::uint32_t ScaledImuOf(int imu) { return imu == 0 ? kScaledImu : imu == 1 ? kScaledImu2 : kScaledImu3; }
 
@@ -51,7 +51,7 @@ std::string MavlinkSourceSpec::Describe() const {
 
 MavlinkSourceSpec ParseMavlinkSpec(const std::string& spec) {
   const std::string body = spec.substr(std::string_view("mavlink:").size());
-  if (body.empty()) throw Error(fmt::format("source '{}': expected {}", spec, kUsage));
+  if (body.empty()) throw Error(fmt::format("source '{}': expected {}", spec, kMavlinkUsage));
   std::vector<std::string> parts;
   size_t from = 0;
   for (;;) {
@@ -83,7 +83,7 @@ MavlinkSourceSpec ParseMavlinkSpec(const std::string& spec) {
     } else if (key == "comp") {
       s.component = static_cast<int>(ParseWhole(spec, key, value, 0, 255));
     } else {
-      throw Error(fmt::format("source '{}': unknown option '{}': expected {}", spec, parts[i], kUsage));
+      throw Error(fmt::format("source '{}': unknown option '{}': expected {}", spec, parts[i], kMavlinkUsage));
     }
   }
   if (s.message == kScaledImu) s.message = ScaledImuOf(s.imu);

@@ -11,7 +11,7 @@
 namespace accelcal {
 namespace {
 
-constexpr const char* kAxes[3] = {"X", "Y", "Z"};
+constexpr const char* kAxisLetters[3] = {"X", "Y", "Z"};
 
 std::string Vector(const VehicleAccelParams& p, const std::array<std::string, 3>& names, const char* unit) {
   std::array<std::string, 3> v;
@@ -64,8 +64,8 @@ AccelParamNames AccelParamNamesFor(FlightStack stack, int imu) {
   if (stack == FlightStack::kArduPilot) {
     const std::string prefix = imu == 0 ? "INS_ACC" : fmt::format("INS_ACC{}", imu + 1);
     for (int j = 0; j < 3; ++j) {
-      n.offset[static_cast<size_t>(j)] = fmt::format("{}OFFS_{}", prefix, kAxes[j]);
-      n.scale[static_cast<size_t>(j)] = fmt::format("{}SCAL_{}", prefix, kAxes[j]);
+      n.offset[static_cast<size_t>(j)] = fmt::format("{}OFFS_{}", prefix, kAxisLetters[j]);
+      n.scale[static_cast<size_t>(j)] = fmt::format("{}SCAL_{}", prefix, kAxisLetters[j]);
     }
     n.device_id = imu == 0 ? "INS_ACC_ID" : fmt::format("INS_ACC{}_ID", imu + 1);
     n.board_rotation = "AHRS_ORIENTATION";
@@ -74,9 +74,9 @@ AccelParamNames AccelParamNamesFor(FlightStack stack, int imu) {
   }
   if (stack == FlightStack::kPx4) {
     for (int j = 0; j < 3; ++j) {
-      n.offset[static_cast<size_t>(j)] = fmt::format("CAL_ACC{}_{}OFF", imu, kAxes[j]);
-      n.scale[static_cast<size_t>(j)] = fmt::format("CAL_ACC{}_{}SCALE", imu, kAxes[j]);
-      n.board_offset_deg[static_cast<size_t>(j)] = fmt::format("SENS_BOARD_{}_OFF", kAxes[j]);
+      n.offset[static_cast<size_t>(j)] = fmt::format("CAL_ACC{}_{}OFF", imu, kAxisLetters[j]);
+      n.scale[static_cast<size_t>(j)] = fmt::format("CAL_ACC{}_{}SCALE", imu, kAxisLetters[j]);
+      n.board_offset_deg[static_cast<size_t>(j)] = fmt::format("SENS_BOARD_{}_OFF", kAxisLetters[j]);
     }
     n.device_id = fmt::format("CAL_ACC{}_ID", imu);
     n.sensor_rotation = fmt::format("CAL_ACC{}_ROT", imu);

@@ -26,7 +26,7 @@ std::string TypeName(std::uint8_t type) {
 
 // What the vehicle holds, as the number it means, against what was sent (both through float32:
 // the parameters are 32-bit).
-bool Same(const mavlink::ParamValue& held, const ParamWrite& w, bool bytewise) {
+bool SameValue(const mavlink::ParamValue& held, const ParamWrite& w, bool bytewise) {
   const float sent = mavlink::ParamWireFloat(w.value, w.type, bytewise);
   mavlink::ParamValue as_sent = held;
   as_sent.value = sent;
@@ -136,7 +136,7 @@ WritebackOutcome ApplyWrites(mavlink::Connection& link, FlightStack stack, const
       problem = fmt::format("{}: no PARAM_VALUE echoed the PARAM_SET of {} = {:.9g} in {} tries of {:.1f} s "
                             "(it may or may not hold the new value)",
                             link.LinkName(), w.name, w.value, exchange.rounds, exchange.round_s);
-    else if (!Same(*echo, w, bytewise))
+    else if (!SameValue(*echo, w, bytewise))
       problem = fmt::format("{}: {} was set to {:.9g} but the vehicle echoed {}: it holds that, not the calibration",
                             link.LinkName(), w.name, w.value, Shown(*echo, bytewise));
     if (!problem.empty()) {
@@ -151,7 +151,7 @@ WritebackOutcome ApplyWrites(mavlink::Connection& link, FlightStack stack, const
     const auto it = back.values.find(w.name);
     if (it == back.values.end())
       out.reread_mismatches.push_back(fmt::format("{}: not answered", w.name));
-    else if (!Same(it->second, w, bytewise))
+    else if (!SameValue(it->second, w, bytewise))
       out.reread_mismatches.push_back(fmt::format("{} holds {}, not {:.9g}", w.name, Shown(it->second, bytewise), w.value));
   }
   return out;
