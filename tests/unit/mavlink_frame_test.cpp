@@ -21,6 +21,15 @@ std::vector<Frame> ParseBytes(const std::vector<std::uint8_t>& bytes, FrameParse
   return out;
 }
 
+// Appends the CRC of `frame` (start marker to payload) as message `id` has it.
+void AppendCrc(std::vector<std::uint8_t>* frame, std::uint32_t id) {
+  X25Crc crc;
+  crc.Add(frame->data() + 1, frame->size() - 1);
+  crc.Add(FindMessage(id)->crc_extra);
+  frame->push_back(static_cast<std::uint8_t>(crc.value() & 0xFF));
+  frame->push_back(static_cast<std::uint8_t>(crc.value() >> 8));
+}
+
 Payload HighresPayload(double ax, double ay, double az, std::uint8_t id) {
   Payload p(63, 0);
   const std::uint64_t t_us = 1234567;
@@ -85,11 +94,8 @@ TEST(MavlinkFrameTest, SignedFrameAcceptedSignatureSkipped) {
   std::vector<std::uint8_t> bytes = writer.Encode(kHeartbeat, EncodeHeartbeat({}));
   // Set the signed flag and recompute the CRC (it covers the header), then append 13 bytes.
   bytes[2] = 0x01;
-  X25Crc crc;
-  crc.Add(bytes.data() + 1, bytes.size() - 3);
-  crc.Add(FindMessage(kHeartbeat)->crc_extra);
-  bytes[bytes.size() - 2] = static_cast<std::uint8_t>(crc.value() & 0xFF);
-  bytes[bytes.size() - 1] = static_cast<std::uint8_t>(crc.value() >> 8);
+  bytes.resize(bytes.size() - 2);
+  AppendCrc(&bytes, kHeartbeat);
   for (int i = 0; i < 13; ++i) bytes.push_back(static_cast<std::uint8_t>(0xA0 + i));
   const auto next = writer.Encode(kHeartbeat, EncodeHeartbeat({}));
   bytes.insert(bytes.end(), next.begin(), next.end());
@@ -136,11 +142,7 @@ TEST(MavlinkFrameTest, TooLongPayloadIsAWrongLength) {
   // A HIGHRES_IMU of 70 bytes with a right CRC: more than the message holds.
   std::vector<std::uint8_t> frame = {0xFD, 70, 0, 0, 5, 1, 1, kHighresImu, 0, 0};
   for (int i = 0; i < 70; ++i) frame.push_back(0x55);
-  X25Crc crc;
-  crc.Add(frame.data() + 1, frame.size() - 1);
-  crc.Add(FindMessage(kHighresImu)->crc_extra);
-  frame.push_back(static_cast<std::uint8_t>(crc.value() & 0xFF));
-  frame.push_back(static_cast<std::uint8_t>(crc.value() >> 8));
+  AppendCrc(&frame, kHighresImu);
   FrameParser parser;
   long bad = 0;
   EXPECT_TRUE(ParseBytes(frame, &parser, &bad).empty());

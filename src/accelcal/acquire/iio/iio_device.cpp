@@ -12,6 +12,7 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include "accelcal/acquire/source/spec_options.h"
 #include "accelcal/base/error.h"
 #include "accelcal/base/text_scan.h"
 
@@ -115,35 +116,24 @@ std::string IioSourceSpec::Describe() const {
 
 IioSourceSpec ParseIioSpec(const std::string& spec) {
   IioSourceSpec s;
-  const std::string body = spec.substr(4);
-  std::vector<std::string> parts;
-  size_t from = 0;
-  for (;;) {
-    const size_t comma = body.find(',', from);
-    parts.push_back(body.substr(from, comma - from));
-    if (comma == std::string::npos) break;
-    from = comma + 1;
-  }
-  s.device = parts[0];
+  const SpecParts parts = SplitSpecOptions(spec.substr(4));
+  s.device = parts.head;
   if (s.device.empty()) throw Error(fmt::format("source '{}': expected {}", spec, kIioUsage));
-  for (size_t i = 1; i < parts.size(); ++i) {
-    const size_t eq = parts[i].find('=');
-    const std::string key = parts[i].substr(0, eq);
-    const std::string value = eq == std::string::npos ? "" : parts[i].substr(eq + 1);
-    const bool needs_value = key != "poll";
-    if (needs_value && value.empty())
-      throw Error(fmt::format("source '{}': {} needs a value ({}=...)", spec, key, key));
-    if (key == "root") s.root = value;
-    else if (key == "dev") s.dev_file = value;
-    else if (key == "x") s.channels[0] = value;
-    else if (key == "y") s.channels[1] = value;
-    else if (key == "z") s.channels[2] = value;
-    else if (key == "poll" && eq == std::string::npos) s.poll = true;
-    else if (key == "rate") {
+  for (const SpecOption& o : parts.options) {
+    const std::string& value = o.value;
+    if (o.key != "poll" && value.empty())
+      throw Error(fmt::format("source '{}': {} needs a value ({}=...)", spec, o.key, o.key));
+    if (o.key == "root") s.root = value;
+    else if (o.key == "dev") s.dev_file = value;
+    else if (o.key == "x") s.channels[0] = value;
+    else if (o.key == "y") s.channels[1] = value;
+    else if (o.key == "z") s.channels[2] = value;
+    else if (o.key == "poll" && !o.has_value) s.poll = true;
+    else if (o.key == "rate") {
       if (!detail::ParseDouble(value, &s.rate_hz) || !(s.rate_hz > 0.0) || s.rate_hz > 1e5)
         throw Error(fmt::format("source '{}': rate={} is not a rate in Hz (0 .. 100000)", spec, value));
     } else {
-      throw Error(fmt::format("source '{}': unknown option '{}': expected {}", spec, parts[i], kIioUsage));
+      throw Error(fmt::format("source '{}': unknown option '{}': expected {}", spec, o.text, kIioUsage));
     }
   }
   return s;

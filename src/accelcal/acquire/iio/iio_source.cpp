@@ -106,10 +106,7 @@ ReadResult IioSource::Read(double timeout_s, std::vector<Sample>* out) {
 
 bool IioSource::TryOpen(double deadline_s, ReadResult* result) {
   const double now_s = WallNowS();
-  if (now_s < backoff_.next_attempt_s()) {
-    SleepS(std::min(deadline_s, backoff_.next_attempt_s()) - now_s);
-    return false;
-  }
+  if (!backoff_.Due(now_s, deadline_s)) return false;
   std::string error;
   try {
     device_ = FindIioDevice(spec_);  // it may have come back under another number

@@ -14,7 +14,6 @@
 namespace accelcal::mavlink {
 namespace {
 
-using source_detail::SleepS;
 using source_detail::WallNowS;
 
 constexpr size_t kLinkChunkBytes = 64 * 1024;
@@ -68,10 +67,7 @@ void Connection::Pump(double timeout_s, const std::function<bool()>& stop,
 
 bool Connection::TryOpen(double deadline_s) {
   const double now_s = WallNowS();
-  if (now_s < backoff_.next_attempt_s()) {
-    SleepS(std::min(deadline_s, backoff_.next_attempt_s()) - now_s);
-    return false;
-  }
+  if (!backoff_.Due(now_s, deadline_s)) return false;
   std::string error;
   switch (transport_->Open(std::max(0.0, deadline_s - now_s), &error)) {
     case Transport::OpenStep::kOpen:

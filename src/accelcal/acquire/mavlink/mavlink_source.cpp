@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include "accelcal/acquire/source/spec_options.h"
 #include "accelcal/acquire/source/wall_clock.h"
 #include "accelcal/base/error.h"
 #include "accelcal/base/gravity.h"
@@ -52,20 +53,12 @@ std::string MavlinkSourceSpec::Describe() const {
 MavlinkSourceSpec ParseMavlinkSpec(const std::string& spec) {
   const std::string body = spec.substr(std::string_view("mavlink:").size());
   if (body.empty()) throw Error(fmt::format("source '{}': expected {}", spec, kMavlinkUsage));
-  std::vector<std::string> parts;
-  size_t from = 0;
-  for (;;) {
-    const size_t comma = body.find(',', from);
-    parts.push_back(body.substr(from, comma - from));
-    if (comma == std::string::npos) break;
-    from = comma + 1;
-  }
+  const SpecParts parts = SplitSpecOptions(body);
   MavlinkSourceSpec s;
-  s.link = ParseLinkSpec(parts[0], spec);
-  for (size_t i = 1; i < parts.size(); ++i) {
-    const size_t eq = parts[i].find('=');
-    const std::string key = parts[i].substr(0, eq);
-    const std::string value = eq == std::string::npos ? "" : parts[i].substr(eq + 1);
+  s.link = ParseLinkSpec(parts.head, spec);
+  for (const SpecOption& o : parts.options) {
+    const std::string& key = o.key;
+    const std::string& value = o.value;
     if (key == "imu") {
       s.imu = static_cast<int>(ParseWhole(spec, key, value, 0, 2));
     } else if (key == "rate") {
@@ -83,7 +76,7 @@ MavlinkSourceSpec ParseMavlinkSpec(const std::string& spec) {
     } else if (key == "comp") {
       s.component = static_cast<int>(ParseWhole(spec, key, value, 0, 255));
     } else {
-      throw Error(fmt::format("source '{}': unknown option '{}': expected {}", spec, parts[i], kMavlinkUsage));
+      throw Error(fmt::format("source '{}': unknown option '{}': expected {}", spec, o.text, kMavlinkUsage));
     }
   }
   if (s.message == kScaledImu) s.message = ScaledImuOf(s.imu);
