@@ -41,7 +41,7 @@ grep -q "interrupted" "$work/err" || { cat "$work/err"; fail "interrupt not repo
 # A bad spec: exit 1, one line on stderr.
 expect 1 "$accelcal" record --source foo -o "$work/x.txt"
 [ "$(wc -l <"$work/err")" -eq 1 ] || fail "more than one line on stderr"
-grep -q "accelcal: error: unknown source 'foo': expected sim, file:PATH, serial:DEVICE@BAUD, tcp:HOST:PORT, mavlink:LINK, iio:DEVICE or -" \
+grep -q "accelcal: error: unknown source 'foo': expected sim, file:PATH, serial:DEVICE@BAUD, tcp:HOST:PORT, mavlink:LINK, iio:NAME or -" \
   "$work/err" || { cat "$work/err"; fail "bad spec message"; }
 expect 1 "$accelcal" record --source serial:/dev/ttyUSB0@12345 -o "$work/x.txt"
 grep -q "unsupported baud rate 12345; supported: 300, 1200" "$work/err" || fail "baud message"

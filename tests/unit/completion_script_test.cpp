@@ -66,7 +66,7 @@ TEST(CompletionScript, TablesWalkTheCommandLine) {
   EXPECT_TRUE(Has(script, "    'value:run:-q') REPLY='flag' ;;\n")) << script;
   EXPECT_TRUE(Has(script, "    'commands:lab') REPLY='add' ;;\n")) << script;
   EXPECT_TRUE(Has(script, "    'value:lab add:--name') REPLY='file' ;;\n")) << script;
-  EXPECT_TRUE(Has(script, "    'sources') REPLY='sim file:PATH serial:DEVICE@BAUD tcp:HOST:PORT -' ;;\n")) << script;
+  EXPECT_TRUE(Has(script, "    'sources') REPLY='sim file:PATH serial:DEVICE@BAUD tcp:HOST:PORT mavlink:LINK iio:NAME -' ;;\n")) << script;
   EXPECT_TRUE(Has(script, "\ncomplete -F _accelcal demo\n")) << script;
   EXPECT_FALSE(Has(script, "help-man")) << script;
 }

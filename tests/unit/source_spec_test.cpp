@@ -41,7 +41,7 @@ TEST(SourceSpecTest, ParsesEveryKind) {
 
 TEST(SourceSpecTest, BadSpecsSayWhatWasExpected) {
   EXPECT_EQ(ErrorOf("foo"),
-            "unknown source 'foo': expected sim, file:PATH, serial:DEVICE@BAUD, tcp:HOST:PORT, mavlink:LINK, iio:DEVICE or -");
+            "unknown source 'foo': expected sim, file:PATH, serial:DEVICE@BAUD, tcp:HOST:PORT, mavlink:LINK, iio:NAME or -");
   EXPECT_TRUE(Contains(ErrorOf("serial:/dev/ttyUSB0"), "expected serial:DEVICE@BAUD"));
   EXPECT_TRUE(Contains(ErrorOf("serial:/dev/ttyUSB0@fast"), "'fast' is not a positive"));
   EXPECT_TRUE(Contains(ErrorOf("tcp:host"), "expected tcp:HOST:PORT"));

@@ -178,11 +178,15 @@ void SetupExportCalCommand(CLI::App& app) {
       "  accelcal export-cal session.db --to mavlink:serial:/dev/ttyACM0@115200 --apply");
   // No CLI11 existence check: a missing file is a failed job (exit 1) with the reader's message.
   sub->add_option("calibration", opts->input, "Calibration file (JSON) or session file (.db)")->required();
-  sub->add_option("--to", opts->target, "Target format, or mavlink:LINK[,imu=N] (a vehicle)")
+  sub->add_option("--to", opts->target, "Target format")
       ->required()
-      ->check(CLI::IsMember({"c-header", "ardupilot", "px4", "kalibr", "csv"}) |
-              CLI::Validator([](std::string& v) { return v.rfind("mavlink:", 0) == 0 ? std::string() : std::string("not mavlink:"); },
-                             "mavlink:LINK"));
+      ->check([] {
+        // The file formats by name (their message when none matches), or a vehicle's link.
+        CLI::Validator formats = CLI::IsMember({"c-header", "ardupilot", "px4", "kalibr", "csv"});
+        return CLI::Validator(
+            [formats](std::string& v) mutable { return v.rfind("mavlink:", 0) == 0 ? std::string() : formats(v); },
+            formats.get_description());
+      }());
   sub->add_flag("--apply", opts->apply,
                 "mavlink:LINK: send the PARAM_SETs, wait for each echo and read every value back "
                 "(without it: a dry run that prints them)");

@@ -18,7 +18,7 @@ namespace accelcal {
 namespace {
 
 constexpr const char* kExpected =
-    "expected sim, file:PATH, serial:DEVICE@BAUD, tcp:HOST:PORT, mavlink:LINK, iio:DEVICE or -";
+    "expected sim, file:PATH, serial:DEVICE@BAUD, tcp:HOST:PORT, mavlink:LINK, iio:NAME or -";
 
 bool StartsWith(const std::string& text, std::string_view prefix) {
   return text.compare(0, prefix.size(), prefix) == 0;
