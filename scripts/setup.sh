@@ -11,16 +11,17 @@ packages=(
   g++ cmake make pkg-config tmux jq lowdown
   libeigen3-dev libnlopt-cxx-dev libncurses-dev libsqlite3-dev libtomlplusplus-dev
   nlohmann-json3-dev libcli11-dev libfmt-dev libgtest-dev libbenchmark-dev
+  libzstd-dev liblz4-dev libbz2-dev
 )
 # The .deb: CPack asks dpkg-shlibdeps (dpkg-dev), which asks file(1), for its Depends.
 package_packages=(dpkg-dev file)
 # Only the tests need these: headless Chromium renders the HTML report and prints it to PDF,
 # poppler-utils reads the PDF's pages back (tests/e2e/report_html.sh); man-db's man reads the
 # manual pages (tests/e2e/man_pages.sh, package_deb.sh); libiio's tools read the fake IIO tree
-# beside accelcal (tests/e2e/iio_devices.sh). The MAVLink test vehicle runs on the machine's own
-# Node.js and npm (not Debian's: they come with the machine), which install node-mavlink into the
-# build directory when the tests first need it (tests/peers/).
-test_packages=(chromium poppler-utils man-db libiio-utils)
+# beside accelcal (tests/e2e/iio_devices.sh). Node.js and its npm run the peers written elsewhere
+# that the tests install into the build directory when they first need them: the bag writers and
+# readers (tests/e2e/bags_*.sh) and the MAVLink test vehicle on node-mavlink (tests/peers/).
+test_packages=(chromium poppler-utils man-db libiio-utils nodejs)
 case "${1:-}" in
   --no-test) ;;
   --package) packages+=("${package_packages[@]}") ;;
