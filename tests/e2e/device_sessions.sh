@@ -5,6 +5,8 @@
 #   2. MAVLink: a test vehicle on node-mavlink (tests/peers/mavlink_vehicle.cjs) that streams
 #      HIGHRES_IMU after its own calibration (offsets, a scale, the board rotated ROLL_180_YAW_90),
 #      which the wizard reads and takes back out; killed with kill -9 mid-session and resumed;
+#      then on the clumsy bench (a knock) behind a vehicle that signs, drops 5 % of its frames
+#      and reboots mid-session;
 #   3. IIO: a fake device tree and FIFO (tests/peers/fake_iio.py, buffer0/ layout, timestamps);
 #      killed and resumed too.
 # Each calibration agrees with the TCP one within its uncertainty (the MAVLink one converted
@@ -75,6 +77,21 @@ for msg, name in (("0", "HEARTBEAT"), ("20", "PARAM_REQUEST_READ"), ("23", "PARA
 assert abs(s["params"]["INS_ACCOFFS_X"] - float(sys.argv[2])) < 1e-6 * max(1, abs(float(sys.argv[2]))), s["params"]
 assert abs(s["params"]["INS_ACCSCAL_Y"] - float(sys.argv[3])) < 1e-6, s["params"]
 PY
+
+# 2b. MAVLink on the clumsy bench (a knock during the +x+y+z capture) behind a vehicle that
+# signs its frames, drops 5 % of them and reboots mid-session: the knock is caught, the reboot
+# lived through, and the calibration is still the TCP one.
+bench_scenario=$source_dir/scenarios/clumsy_bump.toml
+start_bench $speed node "$peers/mavlink_vehicle.cjs" --tcp 0 --sign --drop 0.05 --reboot-at 7
+bench_scenario=
+bench_wizard 'BENCH-7\ntester\n' "mavlink:tcp:127.0.0.1:$peer_port" "$work/clumsy.db" "$work/autopilot.toml"
+stop_bench
+flat "$work/peer.err" "vehicle: back after the reboot" || { cat "$work/peer.err"; fail "the vehicle did not reboot"; }
+said "problem: no samples:"  # the reboot, seen mid-session
+said "Verdict:"
+said "the bench was knocked"
+calibration "$work/clumsy.db" && mv "$work/cal.json" "$work/clumsy.json"
+same "$work/tcp.json" "$work/clumsy.json" 4 --scale 34.8 --zero 2048
 
 # 3. IIO, killed and resumed.
 mkdir -p "$work/iio"

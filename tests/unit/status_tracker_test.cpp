@@ -77,6 +77,29 @@ TEST(StatusTrackerTest, LostLinkIsDeadWithItsReasonUntilItIsUpAgain) {
   EXPECT_EQ(tracker.status().link, LinkState::kUp);
 }
 
+TEST(StatusTrackerTest, ANewReasonForTheSilenceIsSaidAndBecomesTheDeadLinksReason) {
+  StatusTracker tracker(3.0, 2.0, 100.0);
+  ReadResult r;
+  tracker.OnLinkUp(100.0, &r);
+  tracker.Tick(102.5, &r, "heartbeats arrive, but no HIGHRES_IMU");
+  EXPECT_EQ(tracker.status().link_error, "no sample for 2.5 s: heartbeats arrive, but no HIGHRES_IMU");
+  ReadResult later;
+  tracker.OnSilenceReason("no heartbeat for 3.1 s: the vehicle is gone", 103.5, &later);
+  EXPECT_TRUE(later.notice);
+  EXPECT_EQ(tracker.status().last_notice, "no heartbeat for 3.1 s: the vehicle is gone");
+  EXPECT_EQ(tracker.status().link_error, "no sample for 3.5 s: no heartbeat for 3.1 s: the vehicle is gone");
+}
+
+TEST(StatusTrackerTest, ANewReasonForTheSilenceKeepsAConnectionError) {
+  StatusTracker tracker(3.0, 2.0, 0.0);
+  ReadResult r;
+  tracker.OnLinkUp(0.0, &r);
+  tracker.OnLinkLost("tcp:127.0.0.1:5760: connection reset by peer", &r);
+  tracker.OnSilenceReason("no heartbeat for 3.1 s: the vehicle is gone", 4.0, &r);
+  EXPECT_TRUE(r.notice);
+  EXPECT_EQ(tracker.status().link_error, "tcp:127.0.0.1:5760: connection reset by peer");
+}
+
 TEST(StatusTrackerTest, EndedIsFinal) {
   StatusTracker tracker(3.0, 0.5, 0.0);
   ReadResult r;

@@ -4,7 +4,8 @@
 # its controls; a peer turns the lines into what the link carries (TCP text, a MAVLink vehicle,
 # an IIO device). The wizard reads the link and places the sensor through --bench-control.
 #
-#   start_bench SPEED PEER...   starts `record | PEER...` in its own process group; sets
+#   start_bench SPEED PEER...   starts `record | PEER...` in its own process group (the bench
+#                               of scenario $bench_scenario when set, else the default); sets
 #                               $bench_port (the controls), $peer_port (the peer's first line
 #                               "port N", when it prints one) and $bench_group; the peer's
 #                               stderr in $work/peer.err, record's in $work/bench.err
@@ -17,9 +18,9 @@
 start_bench() {
   local speed=$1; shift
   rm -f "$work/peer.port" "$work/bench.err"
-  setsid bash -c '"$0" record --source sim --speed "$1" --seed 7 --bench-listen 127.0.0.1:0 -o - \
-      2>"$2/bench.err" | "${@:3}" >"$2/peer.port" 2>"$2/peer.err"' \
-    "$accelcal" "$speed" "$work" "$@" &
+  setsid bash -c '"$0" record --source sim --speed "$1" --seed 7 ${3:+--scenario "$3"} \
+      --bench-listen 127.0.0.1:0 -o - 2>"$2/bench.err" | "${@:4}" >"$2/peer.port" 2>"$2/peer.err"' \
+    "$accelcal" "$speed" "$work" "${bench_scenario:-}" "$@" &
   bench_group=$!
   for _ in $(seq 100); do
     grep -q "bench controls at port" "$work/bench.err" 2>/dev/null && [ -s "$work/peer.port" ] && break

@@ -46,6 +46,10 @@ double Connection::HeartbeatAgeS() const {
   return vehicle_.heartbeats == 0 ? INFINITY : WallNowS() - vehicle_.last_heartbeat_wall_s;
 }
 
+bool Connection::VehicleGone() const {
+  return vehicle_.known && HeartbeatAgeS() > options_.heartbeat_timeout_s;
+}
+
 void Connection::Pump(double timeout_s, const std::function<bool()>& stop,
                       const std::function<void(const Frame&, bool)>& on_frame) {
   const double deadline_s = WallNowS() + std::max(0.0, timeout_s);

@@ -83,6 +83,8 @@ class Connection {
   const VehicleIdentity& vehicle() const { return vehicle_; }
   // s since the vehicle's last heartbeat (wall clock); +inf before the first.
   double HeartbeatAgeS() const;
+  // The vehicle was heard and its heartbeats have stopped for longer than heartbeat_timeout_s.
+  bool VehicleGone() const;
   const FrameCounters& counters() const { return parser_.counters(); }
   long lost_frames() const { return lost_frames_; }
   const std::string& last_send_error() const { return last_send_error_; }

@@ -118,6 +118,12 @@ ReadResult MavlinkSource::Read(double timeout_s, std::vector<Sample>* out) {
   }
   tracker_.SetLostFrames(connection_.lost_frames());
   tracker_.Tick(WallNowS(), &result, Silence());
+  // The heartbeats stopping is news even when the samples stopped first and the link is already
+  // dead for want of them ("heartbeats arrive, but no HIGHRES_IMU" was its reason then): said
+  // once per disappearance, and the dead link's reason becomes it.
+  const bool gone = connection_.VehicleGone();
+  if (gone && !vehicle_gone_said_ && !result.went_dead) tracker_.OnSilenceReason(Silence(), WallNowS(), &result);
+  vehicle_gone_said_ = gone;
   current_ = nullptr;
   return result;
 }
@@ -298,7 +304,7 @@ std::string MavlinkSource::Silence() const {
   const VehicleIdentity& v = connection_.vehicle();
   const double age_s = connection_.HeartbeatAgeS();
   if (!v.known) return fmt::format("no vehicle's heartbeat heard on {}", connection_.LinkName());
-  if (age_s > 3.0)
+  if (connection_.VehicleGone())
     return fmt::format("no heartbeat from {} for {:.1f} s: the vehicle is gone (powered off, "
                        "rebooting, or the link lost)", v.Describe(), age_s);
   return fmt::format("heartbeats from {} arrive, but no {} of IMU {}", v.Describe(),

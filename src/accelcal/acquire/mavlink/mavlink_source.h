@@ -129,6 +129,7 @@ class MavlinkSource final : public SampleSource, private mavlink::ConnectionObse
   double last_sample_wall_s_ = kNaN;
   long ties_spread_ = 0;
   long reboots_ = 0;
+  bool vehicle_gone_said_ = false;  // its heartbeats' stop was said (until they come again)
 };
 
 }  // namespace accelcal
