@@ -1,10 +1,9 @@
-// The Allan deviation engine against Stable32's published values (../shared/data/allan-reference,
+// The Allan deviation engine against Stable32's published values (tests/data/allan-reference,
 // see its README) and against closed forms and its own batch reference.
 #include "accelcal/analysis/allan_deviation.h"
 
 #include <algorithm>
 #include <cmath>
-#include <filesystem>
 #include <fstream>
 #include <initializer_list>
 #include <map>
@@ -22,7 +21,7 @@
 namespace accelcal {
 namespace {
 
-const std::string kDir = std::string(ACCELCAL_SHARED_DATA_DIR) + "/allan-reference/";
+const std::string kDir = std::string(ACCELCAL_SOURCE_DIR) + "/tests/data/allan-reference/";
 
 // One row of a Stable32 table: AF Tau # Alpha MinSigma Sigma MaxSigma.
 struct S32Row {
@@ -71,8 +70,6 @@ std::vector<double> PhaseDatFrequency() {
   for (size_t i = 1; i < x.size(); ++i) y.push_back(x[i] - x[i - 1]);
   return y;
 }
-
-bool HaveData() { return std::filesystem::exists(kDir + "oadev_octave.txt"); }
 
 double Rel(double a, double b) { return std::fabs(a - b) / std::fabs(b); }
 
@@ -158,7 +155,6 @@ const Exceptions kAllTauExceptions = {
 // The all-tau table (273 factors 1 .. 4929): sigma and count at every factor, alpha at all 167
 // lag-1 points and at 93 of the 106 B1 points.
 TEST(AllanStable32, OcxoOverlappingAllTau) {
-  if (!HaveData()) GTEST_SKIP() << "no " << kDir << " (shared reference data absent)";
   const std::vector<S32Row> rows = ReadStable32("stable32_oadev_alltau.txt");
   ASSERT_EQ(rows.size(), 273u);
   ExpectMatches(Batch(OcxoFractional(), rows, AllanEstimator::kOverlapping), rows, 19983,
@@ -168,7 +164,6 @@ TEST(AllanStable32, OcxoOverlappingAllTau) {
 // The same through the streaming accumulator (every factor here is below full_overlap_max_m,
 // so exact): its grid has other factors, compare those it shares with the table.
 TEST(AllanStable32, OcxoOverlappingAllTauStreamed) {
-  if (!HaveData()) GTEST_SKIP() << "no " << kDir << " (shared reference data absent)";
   const std::vector<S32Row> rows = ReadStable32("stable32_oadev_alltau.txt");
   AllanOptions options;
   options.tau0_s = 1.0;
@@ -199,7 +194,6 @@ TEST(AllanStable32, OcxoOverlappingAllTauStreamed) {
 // differs by 1.2e-4, as Stable32's iterative chi-square inverse does at small edf: see
 // PhaseDatNonOverlapping).
 TEST(AllanStable32, OcxoOverlappingOctave) {
-  if (!HaveData()) GTEST_SKIP() << "no " << kDir << " (shared reference data absent)";
   const std::vector<S32Row> rows = ReadStable32("oadev_octave.txt");
   const std::vector<double> y = OcxoFractional();
   const AllanCurve curve = Batch(y, rows, AllanEstimator::kOverlapping);
@@ -221,7 +215,6 @@ TEST(AllanStable32, OcxoOverlappingOctave) {
 }
 
 TEST(AllanStable32, OcxoNonOverlappingOctave) {
-  if (!HaveData()) GTEST_SKIP() << "no " << kDir << " (shared reference data absent)";
   const std::vector<S32Row> rows = ReadStable32("adev_octave.txt");
   // At 1024 and 2048 (19 and 9 averages) the B1 ratio gives -1 where Stable32 gives -2 (bounds
   // then checked with its alpha); at 2048 (8 terms) the sigma differs by 1.1e-4.
@@ -235,7 +228,6 @@ TEST(AllanStable32, OcxoNonOverlappingOctave) {
 // bound differs by 1.2e-4: Stable32's iterative chi-square inverse agrees with the exact one to
 // about 4 digits (A. Wallin's comparison, see allan_confidence.h).
 TEST(AllanStable32, PhaseDatNonOverlapping) {
-  if (!HaveData()) GTEST_SKIP() << "no " << kDir << " (shared reference data absent)";
   const std::vector<double> y = PhaseDatFrequency();
   ASSERT_EQ(y.size(), 1000u);
   for (const char* name : {"phase_dat_adev.txt", "phase_dat_adev_octave.txt"}) {
@@ -248,7 +240,6 @@ TEST(AllanStable32, PhaseDatNonOverlapping) {
 // With the exact chi-square quantile the bounds differ from Stable32's only where its
 // approximation is used (edf > 100); at or below 100 they agree to the table.
 TEST(AllanStable32, ExactChiSquareAgreesUpTo100Edf) {
-  if (!HaveData()) GTEST_SKIP() << "no " << kDir << " (shared reference data absent)";
   const std::vector<S32Row> rows = ReadStable32("adev_octave.txt");
   const AllanCurve curve =
       AllanAtFactors(OcxoFractional(), 1.0, Factors(rows), AllanEstimator::kNonOverlapping);

@@ -3,7 +3,6 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdio>
-#include <filesystem>
 #include <random>
 #include <string>
 
@@ -213,8 +212,7 @@ TEST(StaticDetector, OptionsAreValidated) {
 class StaticDetectorImuTk : public ::testing::Test {
  protected:
   void SetUp() override {
-    const std::string path = std::string(ACCELCAL_SHARED_DATA_DIR) + "/imu_tk/xsens_acc.mat";
-    if (!std::filesystem::exists(path)) GTEST_SKIP() << "shared data absent: " << path;
+    const std::string path = std::string(ACCELCAL_SOURCE_DIR) + "/tests/data/imu_tk/xsens_acc.mat";
     recording_ = ReadRecordingFile(path);
   }
   std::vector<Sample> recording_;
