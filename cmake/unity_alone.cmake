@@ -14,21 +14,21 @@ set(_accelcal_unity_alone
   src/accelcal/calibration/diagnosis/residual_structure.cpp
   src/accelcal/calibration/diagnosis/sensor_effects.cpp
   src/accelcal/io/export/calibration_csv.cpp
-  tests/unit/magnitude_fit_limits_test.cpp
-  tests/unit/orientation_check_test.cpp
-  tests/unit/session_store_test.cpp
-  tests/unit/turntable_stability_test.cpp
-  tests/unit/wizard_record_test.cpp
-  tests/unit/spike_reason_test.cpp
-  tests/unit/capture_set_writer_test.cpp
+  tests/unit/calibration/magnitude_fit_limits_test.cpp
+  tests/unit/acquire/orientation_check_test.cpp
+  tests/unit/session/session_store_test.cpp
+  tests/unit/acquire/turntable_stability_test.cpp
+  tests/unit/app/wizard_record_test.cpp
+  tests/unit/acquire/spike_reason_test.cpp
+  tests/unit/io/capture_set_writer_test.cpp
   src/accelcal/app/wizard/resume_summary.cpp
-  tests/unit/leveling_test.cpp
-  tests/unit/wizard_engine_test.cpp
-  tests/unit/wizard_level_offset_test.cpp
-  tests/unit/wizard_redo_test.cpp
-  tests/unit/wizard_resume_summary_test.cpp
-  tests/unit/certificate_test.cpp
-  tests/unit/wizard_checks_test.cpp
+  tests/unit/app/leveling_test.cpp
+  tests/unit/app/wizard_engine_test.cpp
+  tests/unit/app/wizard_level_offset_test.cpp
+  tests/unit/app/wizard_redo_test.cpp
+  tests/unit/app/wizard_resume_summary_test.cpp
+  tests/unit/app/certificate_test.cpp
+  tests/unit/app/wizard_checks_test.cpp
   tests/physics/apply_check.cpp
   bench/capture_engine_bench.cpp
 )
