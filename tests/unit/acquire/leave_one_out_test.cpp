@@ -18,7 +18,7 @@
 #include "accelcal/calibration/diagnosis/effect.h"
 #include "accelcal/calibration/diagnosis/extended_model.h"
 
-namespace accelcal {
+namespace accelcal::leave_one_out_test {
 namespace {
 
 std::vector<FitCapture> Captures(const sim::Scenario& scenario) {
@@ -177,4 +177,4 @@ TEST(LeaveOneOut, WarmStartSkipsTheGlobalStageAndReachesTheColdMinimum) {
 }
 
 }  // namespace
-}  // namespace accelcal
+}  // namespace accelcal::leave_one_out_test

@@ -8,7 +8,7 @@
 #include "accelcal/acquire/sim/scenario.h"
 #include "test_support.h"
 
-namespace accelcal {
+namespace accelcal::orientation_check_test {
 namespace {
 
 using testing::Contains;
@@ -95,4 +95,4 @@ TEST(OrientationCheck, HelpersAndOptions) {
 }
 
 }  // namespace
-}  // namespace accelcal
+}  // namespace accelcal::orientation_check_test

@@ -17,7 +17,7 @@
 #include "capture_engine_support.h"
 #include "test_support.h"
 
-namespace accelcal {
+namespace accelcal::spike_reason_test {
 namespace {
 
 const SensorModel kModel = sim::DefaultScenario().sensor.model;
@@ -125,4 +125,4 @@ TEST(SpikeReason, NamesThePeakOfTheBumpAndItsSize) {
 }
 
 }  // namespace
-}  // namespace accelcal
+}  // namespace accelcal::spike_reason_test

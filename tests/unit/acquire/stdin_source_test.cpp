@@ -11,7 +11,7 @@
 #include "source_test_support.h"
 #include "test_support.h"
 
-namespace accelcal {
+namespace accelcal::stdin_source_test {
 namespace {
 
 using testing::Consecutive;
@@ -143,4 +143,4 @@ TEST_F(StdinSourceTest, ReadNeverBlocksPastItsTimeout) {
 }
 
 }  // namespace
-}  // namespace accelcal
+}  // namespace accelcal::stdin_source_test

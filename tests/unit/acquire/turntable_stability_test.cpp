@@ -8,7 +8,7 @@
 #include "accelcal/acquire/sim/virtual_bench.h"
 #include "test_support.h"
 
-namespace accelcal {
+namespace accelcal::turntable_stability_test {
 namespace {
 
 using testing::Contains;
@@ -199,4 +199,4 @@ TEST(TurntableStability, SetupAndOptionsAreValidated) {
 }
 
 }  // namespace
-}  // namespace accelcal
+}  // namespace accelcal::turntable_stability_test

@@ -22,7 +22,7 @@
 #include "accelcal/report/uncertainty_text.h"
 #include "accelcal/session/session_journal.h"
 
-namespace accelcal {
+namespace accelcal::certificate_test {
 namespace {
 
 bool Contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
@@ -238,4 +238,4 @@ TEST(SvgPlot, CoincidentPointsAreSpreadSoEachShows) {
 }
 
 }  // namespace
-}  // namespace accelcal
+}  // namespace accelcal::certificate_test

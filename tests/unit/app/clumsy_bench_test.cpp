@@ -12,7 +12,7 @@
 #include "accelcal/io/scenario_file.h"
 #include "test_support.h"
 
-namespace accelcal {
+namespace accelcal::clumsy_bench_test {
 namespace {
 
 using testing::Contains;
@@ -214,4 +214,4 @@ TEST(ClumsyBench, TheTurntableIsLeveledByAShareOfItsTilt) {
 }
 
 }  // namespace
-}  // namespace accelcal
+}  // namespace accelcal::clumsy_bench_test

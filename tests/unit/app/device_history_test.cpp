@@ -13,7 +13,7 @@
 #include "export_test_support.h"
 #include "test_support.h"
 
-namespace accelcal {
+namespace accelcal::device_history_test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -126,4 +126,4 @@ TEST_F(DeviceHistoryTest, ListSessionsFiltersByDeviceAndProcedure) {
 }
 
 }  // namespace
-}  // namespace accelcal
+}  // namespace accelcal::device_history_test

@@ -7,7 +7,7 @@
 
 #include "test_support.h"
 
-namespace accelcal {
+namespace accelcal::gravity_input_test {
 namespace {
 
 using testing::Contains;
@@ -77,4 +77,4 @@ TEST(GravityInput, WhatIsRecordedReadsBackTheSame) {
 }
 
 }  // namespace
-}  // namespace accelcal
+}  // namespace accelcal::gravity_input_test

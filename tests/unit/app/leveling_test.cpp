@@ -6,7 +6,7 @@
 
 #include <gtest/gtest.h>
 
-namespace accelcal {
+namespace accelcal::leveling_test {
 namespace {
 
 constexpr double kG = 9.80665;
@@ -54,4 +54,4 @@ TEST(Leveling, AdviceSaysWhatToDoUntilWithinTolerance) {
 }
 
 }  // namespace
-}  // namespace accelcal
+}  // namespace accelcal::leveling_test

@@ -9,7 +9,7 @@
 
 #include "test_support.h"
 
-namespace accelcal {
+namespace accelcal::noise_floor_guard_test {
 namespace {
 
 using testing::Contains;
@@ -88,4 +88,4 @@ TEST(NoiseFloorGuard, AStillCaptureLowersATooHighFloorAndTheShakingOnesFailAgain
 }
 
 }  // namespace
-}  // namespace accelcal
+}  // namespace accelcal::noise_floor_guard_test

@@ -10,7 +10,7 @@
 #include "accelcal/io/calibration_file.h"
 #include "test_support.h"
 
-namespace accelcal {
+namespace accelcal::pipeline_disagreement_test {
 namespace {
 
 using testing::Contains;
@@ -113,4 +113,4 @@ TEST(PipelineDisagreement, CleanSetsLoseNothing) {
 }
 
 }  // namespace
-}  // namespace accelcal
+}  // namespace accelcal::pipeline_disagreement_test

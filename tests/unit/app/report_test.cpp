@@ -27,7 +27,7 @@
 #include "accelcal/session/procedure.h"
 #include "test_support.h"
 
-namespace accelcal {
+namespace accelcal::report_test {
 namespace {
 
 using nlohmann::json;
@@ -640,4 +640,4 @@ TEST(ProcedureLimits, ParsedValidatedAndOptional) {
 }
 
 }  // namespace
-}  // namespace accelcal
+}  // namespace accelcal::report_test

@@ -12,7 +12,7 @@
 #include "capture_engine_support.h"
 #include "test_support.h"
 
-namespace accelcal {
+namespace accelcal::silent_link_test {
 namespace {
 
 using testing::Contains;
@@ -136,4 +136,4 @@ TEST(SilentLink, ARecordWithNoSampleAtAllEnds) {
 }
 
 }  // namespace
-}  // namespace accelcal
+}  // namespace accelcal::silent_link_test

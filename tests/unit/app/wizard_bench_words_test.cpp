@@ -15,7 +15,7 @@
 #include "accelcal/io/scenario_file.h"
 #include "accelcal/session/session_journal.h"
 
-namespace accelcal {
+namespace accelcal::wizard_bench_words_test {
 namespace {
 
 Procedure ShortSeed() {
@@ -105,4 +105,4 @@ TEST(WizardBenchWordsTest, TheDiagnosisSpeaksPlainWordsWithTheStatisticsOneKeyAw
 }
 
 }  // namespace
-}  // namespace accelcal
+}  // namespace accelcal::wizard_bench_words_test

@@ -11,7 +11,7 @@
 
 #include "wizard_test_support.h"
 
-namespace accelcal {
+namespace accelcal::wizard_checks_test {
 namespace {
 
 using namespace testing;
@@ -235,4 +235,4 @@ TEST(WizardChecks, ATableTiltedByItsFeetIsLeveledAsTheFeetAreTurned) {
 }
 
 }  // namespace
-}  // namespace accelcal
+}  // namespace accelcal::wizard_checks_test

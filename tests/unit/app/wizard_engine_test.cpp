@@ -18,7 +18,7 @@
 #include "accelcal/session/session_journal.h"
 #include "accelcal/app/wizard/wizard_engine.h"
 
-namespace accelcal {
+namespace accelcal::wizard_engine_test {
 namespace {
 
 Procedure SeedProcedure() {
@@ -420,4 +420,4 @@ TEST(WizardEngineTest, ResumeContinuesAtTheFirstMissingStepWithoutDuplicates) {
 }
 
 }  // namespace
-}  // namespace accelcal
+}  // namespace accelcal::wizard_engine_test

@@ -17,7 +17,7 @@
 #include "accelcal/io/procedure_file.h"
 #include "accelcal/session/session_journal.h"
 
-namespace accelcal {
+namespace accelcal::wizard_level_offset_test {
 namespace {
 
 // The seed's leveling and one pose after it.
@@ -131,4 +131,4 @@ TEST(WizardLevelOffsetTest, OnATiltedTableTheLiveTiltAgreesWithTheReversal) {
 }
 
 }  // namespace
-}  // namespace accelcal
+}  // namespace accelcal::wizard_level_offset_test

@@ -14,7 +14,7 @@
 #include "accelcal/session/session_journal.h"
 #include "accelcal/app/wizard/wizard_engine.h"
 
-namespace accelcal {
+namespace accelcal::wizard_record_test {
 namespace {
 
 constexpr double kRateHz = 100.0;  // the default scenario's
@@ -231,4 +231,4 @@ TEST(WizardRecordTest, BackKeepsAFinishedRecordAndReturnsToASkippedOne) {
 }
 
 }  // namespace
-}  // namespace accelcal
+}  // namespace accelcal::wizard_record_test

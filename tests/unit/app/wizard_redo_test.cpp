@@ -21,7 +21,7 @@
 #include "accelcal/session/session_store.h"
 #include "session_test_support.h"
 
-namespace accelcal {
+namespace accelcal::wizard_redo_test {
 namespace {
 
 Procedure ShortStaticProcedure(int poses) {
@@ -184,4 +184,4 @@ TEST_F(WizardRedoStoreTest, TheFitAndTheReportLeaveTheSupersededCaptureOutAndARe
 }
 
 }  // namespace
-}  // namespace accelcal
+}  // namespace accelcal::wizard_redo_test

@@ -14,7 +14,7 @@
 #include "accelcal/io/procedure_file.h"
 #include "accelcal/session/session_journal.h"
 
-namespace accelcal {
+namespace accelcal::wizard_resume_summary_test {
 namespace {
 
 Procedure SeedProcedure() {
@@ -87,4 +87,4 @@ TEST(WizardResumeSummaryTest, ATurntableTitleNamesItsRadius) {
 }
 
 }  // namespace
-}  // namespace accelcal
+}  // namespace accelcal::wizard_resume_summary_test

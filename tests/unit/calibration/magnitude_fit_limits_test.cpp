@@ -13,7 +13,7 @@
 
 #include "accelcal/calibration/fit/calibration_fit.h"
 
-namespace accelcal {
+namespace accelcal::magnitude_fit_limits_test {
 namespace {
 
 constexpr double kG = 9.80665;
@@ -116,4 +116,4 @@ TEST(MagnitudeFitLimits, ALowerTriangularMisalignmentBecomesMagnitudeEquivalentA
 }
 
 }  // namespace
-}  // namespace accelcal
+}  // namespace accelcal::magnitude_fit_limits_test

@@ -10,7 +10,7 @@
 #include "accelcal/base/error.h"
 #include "accelcal/io/csv_fields.h"
 
-namespace accelcal {
+namespace accelcal::capture_set_writer_test {
 namespace {
 
 Sample At(double t_s, double x, double y, double z, double temp_c = kNaN) {
@@ -173,4 +173,4 @@ TEST(RecordingWriter, WritesEachValueAsItsShortestForm) {
 }
 
 }  // namespace
-}  // namespace accelcal
+}  // namespace accelcal::capture_set_writer_test

@@ -7,7 +7,7 @@
 #include "accelcal/io/procedure_file.h"
 #include "accelcal/session/procedure.h"
 
-namespace accelcal {
+namespace accelcal::procedure_test {
 namespace {
 
 std::string Shipped(const std::string& name) {
@@ -111,4 +111,4 @@ TEST(ProcedureTest, MissingFileIsAnError) {
 }
 
 }  // namespace
-}  // namespace accelcal
+}  // namespace accelcal::procedure_test

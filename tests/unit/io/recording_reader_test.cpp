@@ -9,7 +9,7 @@
 
 #include "accelcal/base/error.h"
 
-namespace accelcal {
+namespace accelcal::recording_reader_test {
 namespace {
 
 // Parses `text` expecting an InputError; returns it.
@@ -144,4 +144,4 @@ TEST(RecordingReader, ImuTkFileLoadsAllSamples) {
 }
 
 }  // namespace
-}  // namespace accelcal
+}  // namespace accelcal::recording_reader_test

@@ -9,7 +9,7 @@
 #include "accelcal/base/error.h"
 #include "accelcal/io/scenario_file.h"
 
-namespace accelcal::sim {
+namespace accelcal::sim::scenario_test {
 namespace {
 
 // A small valid scenario; tests append to it or swap one line.
@@ -317,4 +317,4 @@ TEST(SensorAxis, RoundTripsThroughStrings) {
 }
 
 }  // namespace
-}  // namespace accelcal::sim
+}  // namespace accelcal::sim::scenario_test

@@ -19,7 +19,7 @@
 #include "session_test_support.h"
 #include "test_support.h"
 
-namespace accelcal {
+namespace accelcal::session_store_test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -398,4 +398,4 @@ TEST_F(SessionStoreTest, KillNineAtRandomInstantsLosesNothingCommitted) {
 }
 
 }  // namespace
-}  // namespace accelcal
+}  // namespace accelcal::session_store_test

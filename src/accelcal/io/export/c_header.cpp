@@ -9,7 +9,7 @@
 namespace accelcal {
 namespace {
 
-constexpr const char* kAxes[3] = {"x", "y", "z"};
+constexpr const char* kAxisSuffixes[3] = {"x", "y", "z"};
 
 // "{a, b, c}" with each value written so that it reads back exactly as a double.
 std::string Triple(double a, double b, double c) {
@@ -20,7 +20,7 @@ std::string Triple(const Eigen::Vector3d& v) { return Triple(v.x(), v.y(), v.z()
 
 Eigen::Vector3d EffectTriple(const Calibration& cal, const std::string& name, const std::string& prefix) {
   Eigen::Vector3d v;
-  for (int j = 0; j < 3; ++j) v(j) = EffectParameterValue(cal, name, fmt::format("{}_{}", prefix, kAxes[j]));
+  for (int j = 0; j < 3; ++j) v(j) = EffectParameterValue(cal, name, fmt::format("{}_{}", prefix, kAxisSuffixes[j]));
   return v;
 }
 
