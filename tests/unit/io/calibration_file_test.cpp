@@ -8,6 +8,7 @@
 
 #include "accelcal/base/error.h"
 #include "accelcal/io/detail/json_forms.h"
+#include "accelcal/io/session_result_file.h"
 
 namespace accelcal {
 namespace {
