@@ -44,7 +44,8 @@ RecordAnalysis AnalyzeJournalRecord(const SessionJournal& journal, const std::st
 
 // A record named by the one who asks (`accelcal allan`), analysed whatever it is: a wizard
 // session's record when `path` is a session file (app/calibration_input.h's test; its record
-// step `step_id`, empty: the first), else a recording ("-": standard input) read as `format`.
+// step `step_id`, empty: the first), else a recording ("-": standard input; a ROS bag, though
+// a .db3 is an SQLite file too) read as `format`.
 // Throws as AnalyzeRecordingFile, and accelcal::Error naming the session when it holds no
 // record, or none at `step_id` (the message lists its records).
 struct RecordInputAnalysis {
