@@ -6,7 +6,7 @@
 #include "cli/completion_script.h"
 #include "cli/shipped_files.h"
 
-namespace accelcal::cli {
+namespace accelcal::cli::completion_script_test {
 namespace {
 
 bool Has(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
@@ -72,4 +72,4 @@ TEST(CompletionScript, TablesWalkTheCommandLine) {
 }
 
 }  // namespace
-}  // namespace accelcal::cli
+}  // namespace accelcal::cli::completion_script_test

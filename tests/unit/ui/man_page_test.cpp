@@ -4,7 +4,7 @@
 
 #include "cli/man_page.h"
 
-namespace accelcal::cli {
+namespace accelcal::cli::man_page_test {
 namespace {
 
 bool Has(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
@@ -93,4 +93,4 @@ TEST(ManPage, SummaryIsTheFirstSentence) {
 }
 
 }  // namespace
-}  // namespace accelcal::cli
+}  // namespace accelcal::cli::man_page_test

@@ -10,7 +10,7 @@
 
 #include "cli/shipped_files.h"
 
-namespace accelcal::cli {
+namespace accelcal::cli::shipped_files_test {
 namespace {
 namespace fs = std::filesystem;
 
@@ -62,4 +62,4 @@ TEST_F(ShippedFiles, ATransformResolvesAnOptionsValue) {
 }
 
 }  // namespace
-}  // namespace accelcal::cli
+}  // namespace accelcal::cli::shipped_files_test

@@ -5,7 +5,7 @@
 #include "cli/cli_checks.h"
 #include "cli/usage_errors.h"
 
-namespace accelcal::cli {
+namespace accelcal::cli::usage_errors_test {
 namespace {
 
 struct DemoLine {
@@ -104,4 +104,4 @@ TEST(UsageErrors, AGoodCommandLineHasNoMessage) {
 }
 
 }  // namespace
-}  // namespace accelcal::cli
+}  // namespace accelcal::cli::usage_errors_test
