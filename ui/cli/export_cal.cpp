@@ -2,23 +2,22 @@
 // header for firmware, ArduPilot or PX4 parameters, Kalibr's imu.yaml, CSV. Says what the
 // target cannot hold (src/accelcal/export/).
 #include <cmath>
-#include <fstream>
 #include <iostream>
 #include <memory>
 #include <optional>
+#include <utility>
 
 #include <fmt/core.h>
 
+#include "accelcal/app/calibration_input.h"
 #include "accelcal/base/error.h"
 #include "accelcal/io/export/ardupilot_params.h"
 #include "accelcal/io/export/c_header.h"
 #include "accelcal/io/export/calibration_csv.h"
 #include "accelcal/io/export/kalibr_imu_yaml.h"
 #include "accelcal/io/export/px4_params.h"
-#include "accelcal/io/calibration_file.h"
 #include "accelcal/io/procedure_file.h"
 #include "accelcal/io/text_file.h"
-#include "accelcal/session/session_store.h"
 #include "accelcal/session/procedure.h"
 #include "cli/cli_checks.h"
 #include "cli/commands.h"
@@ -51,30 +50,18 @@ struct ExportCalCommandOptions {
   bool apply = false;  // mavlink:LINK: send the PARAM_SETs (else only say them)
 };
 
-bool IsSqliteFile(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  char magic[16] = {};
-  in.read(magic, sizeof magic);
-  return in && std::string(magic, 15) == "SQLite format 3";
-}
-
-// The calibration, and what is known of its origin.
+// The calibration (app/calibration_input.h: a file or a session), and what is known of its
+// origin: what the options say, else the session's device and creation date.
 Calibration ReadInput(const ExportCalCommandOptions& o, ExportContext* context) {
+  CalibrationInput in = ReadCalibrationInput(o.input);
   context->source = o.input;
   context->device = o.device;
   context->date_utc = o.date_utc;
-  if (IsReadOnceInput(o.input) || !IsSqliteFile(o.input)) return ReadCalibrationFile(o.input);
-  SessionOpenOptions read_only;
-  read_only.read_only = true;
-  const std::unique_ptr<SessionStore> store = SessionStore::Open(o.input, read_only);
-  const SessionInfo info = store->Info();
-  const std::optional<std::string> result = store->Result();
-  if (!result)
-    throw Error(fmt::format("session {} has no calibration yet: {} captures accepted; run the "
-                            "wizard to finish it", o.input, info.num_captures));
-  if (context->device.empty()) context->device = info.device;
-  if (context->date_utc.empty()) context->date_utc = info.created_utc;
-  return CalibrationFromJsonText(*result, o.input);
+  if (in.session) {
+    if (context->device.empty()) context->device = in.session->device;
+    if (context->date_utc.empty()) context->date_utc = in.session->created_utc;
+  }
+  return std::move(in.calibration);
 }
 
 Eigen::Vector3d PerAxis(const std::vector<double>& values, const char* option) {
