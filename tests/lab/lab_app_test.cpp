@@ -10,7 +10,7 @@
 #include "accelcal/app/lab_equipment_check.h"
 #include "accelcal/app/lab_publish.h"
 #include "accelcal/app/report_files.h"
-#include "accelcal/app/session_report.h"
+#include "accelcal/app/report_metadata.h"
 #include "accelcal/report/report_html.h"
 #include "accelcal/report/report_text.h"
 #include "lab_test_support.h"
@@ -85,7 +85,10 @@ TEST_F(LabApp, APublishedSessionHoldsTheLabsNumberAndItsCertificateBesideIt) {
   EXPECT_NE(stored[0].bytes.find("LAB-000001"), std::string::npos);
   EXPECT_EQ(stored[0].bytes.find("ACC-s1-"), std::string::npos) << "the session's own number is gone";
   // Rendered again from the session (as `accelcal report` does), the certificate is the same bytes.
-  const ReportModel again = BuildReportModel(ReportInputsOfSession(*store, kProcedure));
+  ReportRequest request;
+  request.input = path;
+  request.default_procedure_path = kProcedure;
+  const ReportModel again = BuildReportModel(ReportInputsFor(request));
   EXPECT_EQ(again.certificate.number, "LAB-000001");
   EXPECT_EQ(RenderReportHtml(again), stored[0].bytes);
   EXPECT_EQ(RenderReportText(again), stored[1].bytes);

@@ -4,6 +4,7 @@
 
 #include <fmt/core.h>
 
+#include "accelcal/base/utc_time.h"
 #include "accelcal/app/lab_equipment_check.h"
 #include "accelcal/base/duration_text.h"
 #include "accelcal/base/error.h"

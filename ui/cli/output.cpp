@@ -18,12 +18,6 @@ void WriteOutputText(const std::string& path, const std::string& text) {
   if (!std::cout) throw Error("cannot write to standard output");
 }
 
-std::string ShortUtc(const std::string& iso) {
-  std::string d = iso.substr(0, 19);
-  if (d.size() > 10 && d[10] == 'T') d[10] = ' ';
-  return d;
-}
-
 std::string ShippedProcedurePath(const std::string& file_name) {
   return (ShippedDir(kShippedProcedures) / file_name).string();
 }

@@ -10,8 +10,6 @@ namespace accelcal::cli {
 // standard output when `path` is empty. Throws accelcal::Error naming the file.
 void WriteOutputText(const std::string& path, const std::string& text);
 
-// "2025-03-01T14:05:09.123Z" -> "2025-03-01 14:05:09": a stored UTC time as a listing shows it.
-std::string ShortUtc(const std::string& iso);
 
 // A procedure shipped with the program ("seed_calibration.toml", "noise.toml"): installed in
 // share/accelcal/procedures, or the source tree's for a program run from its build (shipped_files.h).

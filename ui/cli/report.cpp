@@ -1,25 +1,17 @@
 // `accelcal report`: the calibration report of a session or of a calibration file, as text,
-// HTML or JSON; or the session's calibration file itself.
-#include <fstream>
+// HTML or JSON; or the session's calibration file itself. What goes into the report (the input
+// read, the session's meta, the procedure's limits) is app/report_metadata.h's.
 #include <iostream>
 #include <memory>
-#include <sstream>
 
 #include <fmt/core.h>
 
-#include "accelcal/base/error.h"
-#include "accelcal/app/session_report.h"
-#include "accelcal/io/allan_file.h"
+#include "accelcal/app/report_metadata.h"
 #include "accelcal/io/calibration_file.h"
-#include "accelcal/io/noise_file.h"
-#include "accelcal/io/text_file.h"
-#include "accelcal/io/procedure_file.h"
-#include "accelcal/report/report_html.h"
 #include "accelcal/io/report_json.h"
+#include "accelcal/report/report_html.h"
 #include "accelcal/report/report_model.h"
 #include "accelcal/report/report_text.h"
-#include "accelcal/session/session_paths.h"
-#include "accelcal/session/session_store.h"
 #include "cli/commands.h"
 #include "cli/output.h"
 #include "cli/shipped_files.h"
@@ -36,40 +28,20 @@ struct ReportCommandOptions {
   std::string procedure_path;    // limits from here; empty: the default procedure when it matches
 };
 
-// A calibration file is JSON (its first non-blank byte is '{'); a session is SQLite.
-bool LooksLikeJson(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  char c = 0;
-  while (in.get(c))
-    if (c != ' ' && c != '\n' && c != '\r' && c != '\t') return c == '{';
-  return false;
-}
-
-ReportInputs FromSession(const std::string& input) {
-  SessionOpenOptions read_only;
-  read_only.read_only = true;
-  const std::unique_ptr<SessionStore> store = SessionStore::Open(ResolveSessionPath(input), read_only);
-  return ReportInputsOfSession(*store, ShippedProcedurePath("seed_calibration.toml"));
-}
-
 void RunReport(const ReportCommandOptions& o) {
-  ReportInputs in;
-  if (IsReadOnceInput(o.input) || LooksLikeJson(o.input)) {
-    const std::string text = ReadTextFile(o.input);
-    in.calibration = CalibrationFromJsonText(text, o.input);
-    ReadAnalysesFromResultText(text, o.input, &in);
-  } else {
-    in = FromSession(o.input);
-  }
   if (o.format == "calibration") {
-    WriteOutputText(o.output_path, CalibrationToJsonText(in.calibration) + "\n");
+    const Calibration cal = ReportInputsOf(o.input).calibration;
+    WriteOutputText(o.output_path, CalibrationToJsonText(cal) + "\n");
     if (!o.output_path.empty()) std::cout << fmt::format("calibration written to {}\n", o.output_path);
     return;
   }
-  if (!o.procedure_path.empty()) ApplyProcedureToReport(LoadProcedure(o.procedure_path), &in);
-  if (!o.allan_path.empty()) in.allan = ReadAllanFile(o.allan_path);
-  if (!o.noise_path.empty()) in.noise = ReadNoiseFile(o.noise_path);
-  const ReportModel model = BuildReportModel(in);
+  ReportRequest request;
+  request.input = o.input;
+  request.procedure_path = o.procedure_path;
+  request.default_procedure_path = ShippedProcedurePath("seed_calibration.toml");
+  request.allan_path = o.allan_path;
+  request.noise_path = o.noise_path;
+  const ReportModel model = BuildReportModel(ReportInputsFor(request));
   std::string text;
   if (o.format == "html") text = RenderReportHtml(model);
   else if (o.format == "json") text = ReportJsonText(model);

@@ -8,6 +8,7 @@
 
 #include <fmt/core.h>
 
+#include "accelcal/base/utc_time.h"
 #include "accelcal/base/error.h"
 #include "accelcal/session/session_catalog.h"
 #include "accelcal/session/session_paths.h"

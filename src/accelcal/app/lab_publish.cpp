@@ -5,7 +5,7 @@
 #include <fmt/ranges.h>
 
 #include "accelcal/app/report_files.h"
-#include "accelcal/app/session_report.h"
+#include "accelcal/app/report_metadata.h"
 #include "accelcal/base/version.h"
 #include "accelcal/io/atomic_write.h"
 #include "accelcal/report/report_html.h"
@@ -104,7 +104,10 @@ SessionPublishOutcome PublishSession(LabStore& lab, SessionStore& store,
         return NotReady(out,
                         fmt::format("already published to another lab's register, as certificate {} ({})",
                                     mark.certificate_number, mark.lab));
-    ReportInputs in = ReportInputsOfSession(store, default_procedure_path);
+    ReportRequest request;  // the report as `accelcal report SESSION` makes it
+    request.input = store.path();
+    request.default_procedure_path = default_procedure_path;
+    ReportInputs in = ReportInputsFor(request);
     in.meta.certificate_number.clear();  // the lab's number goes on by the renderer
     const ReportModel model = BuildReportModel(in);
     const LabPublishResult published =

@@ -37,7 +37,7 @@ struct SessionPublishOutcome {
 
 // Publishes the session `store` holds, opened read-write (the numbers are written back). Never
 // throws for the session's own problems: they are the outcome's. `default_procedure_path` gives
-// the certificate's limits and equipment as `accelcal report` does (app/session_report.h).
+// the certificate's limits and equipment as `accelcal report` does (app/report_metadata.h).
 SessionPublishOutcome PublishSession(LabStore& lab, SessionStore& store,
                                      const std::string& default_procedure_path);
 
