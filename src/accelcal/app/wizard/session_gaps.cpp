@@ -5,8 +5,6 @@
 namespace accelcal {
 namespace {
 
-bool IsCaptureKind(StepKind kind) { return kind == StepKind::kStatic || kind == StepKind::kTurntable; }
-
 // Why a capture step has no usable capture: its captures' left-out reasons.
 std::string LeftOutWhy(const ProcedureStep& step, const SessionModel& model) {
   std::string why;
@@ -29,7 +27,7 @@ SessionGaps CollectSessionGaps(const Procedure& procedure, const SessionModel& m
       gaps.steps.push_back({s.id, s.title, "skipped", s.required});
       continue;
     }
-    if (!IsCaptureKind(s.kind) || model.CaptureOf(s.id) != nullptr) continue;
+    if (!KeepsCapture(s.kind) || model.CaptureOf(s.id) != nullptr) continue;
     const std::string left_out = LeftOutWhy(s, model);
     if (!left_out.empty()) gaps.steps.push_back({s.id, s.title, left_out, s.required});
   }
