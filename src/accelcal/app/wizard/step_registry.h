@@ -1,8 +1,9 @@
 // The wizard's controller of each step kind (step_controller.h), one registration each: how to
-// make it for a step, the step's time estimate and its title in a summary. What a kind is (its
-// name, what it acquires, its fields in the procedure file) is the step-kind table's
-// (session/step_kind.h). The built-in kinds are listed in step_registry.cpp, one line each;
-// RegisterWizardStepKind adds a kind at run time (a test's example kind).
+// make it for a step, the step's time estimate, its title in a summary and the help of its
+// questions. What a kind is (its name, what it acquires, its fields in the procedure file) is
+// the step-kind table's (session/step_kind.h). The built-in kinds are listed in
+// step_registry.cpp, one line each; RegisterWizardStepKind adds a kind at run time (a test's
+// example kind).
 #pragma once
 
 #include <memory>
@@ -42,7 +43,8 @@ const StepControllerKind& ControllerKindOf(StepKind kind);
 std::string StepInputHelp(std::string_view key);
 
 // Adds a kind: its row in the step-kind table (RegisterStepKind) and its controller (`controller`'s
-// kind is set to the row's). Registering a name again changes nothing and returns its kind.
+// kind is set to the row's). A name already in the table keeps its row (and its controller when
+// it has one); its kind is returned.
 StepKind RegisterWizardStepKind(const StepKindInfo& info, StepControllerKind controller);
 
 }  // namespace accelcal
