@@ -4,6 +4,7 @@
 
 #include "accelcal/base/error.h"
 #include "accelcal/io/calibration_file.h"
+#include "accelcal/io/session_result_file.h"
 #include "accelcal/session/session_inputs.h"
 
 namespace accelcal {
