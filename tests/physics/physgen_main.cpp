@@ -326,7 +326,7 @@ Eigen::Vector3d MeanRaw(const physgen::CaptureData& c) {
   return m / static_cast<double>(c.samples.size());
 }
 
-// a^p = T K^-1 (raw - b), written again here from the README's equation.
+// a^p = T K^-1 (raw - b), written again here from docs/model.md's equation.
 Eigen::Vector3d Calibrate(const Sensor& s, const Eigen::Vector3d& raw) {
   return s.Misalignment() * s.scale_counts_per_mps2.cwiseInverse().asDiagonal() * (raw - s.bias_counts);
 }

@@ -1,7 +1,7 @@
 // An independent bench of capture sets, written from the physics, to check accelcal honestly.
 //
 // It shares NO code with the project: only the C++ standard library and Eigen. Everything
-// below is written from the equations (README "The model", the lab chapter's notation), not
+// below is written from the equations (docs/model.md, "The model", the lab chapter's notation), not
 // from the project's simulator or effect code, so a mistake in either shows as a disagreement.
 //
 // The sensor (the project's notation and signs):
@@ -14,7 +14,7 @@
 // For a true specific force f in the platform frame, a^a = T^-1 f and, with every effect of
 // Effects (each zero by default), per axis j and per sample at time t and temperature T_c:
 //
-//   u_j   = a^a_j                                 (m/s^2: the README table's u, "u = a^a")
+//   u_j   = a^a_j                                 (m/s^2: docs/model.md table's u, "u = a^a")
 //   raw_j = b_j + drift_j (t - t_ref) + tcb_j (T_c - T_ref) + [t >= t_jump] jump_j
 //         + [turntable] vre_j
 //         + (1 + tcs_j (T_c - T_ref)) (k_j u_j (1 + asym_j sgn(u_j)) + q_j u_j^2 + c3_j u_j^3
@@ -86,7 +86,7 @@ struct Sensor {
 };
 
 struct Effects {
-  // Inside the project's library (names and units as its README table).
+  // Inside the project's library (names and units as its table in docs/model.md).
   Eigen::Vector3d quadratic = Eigen::Vector3d::Zero();    // q_j, counts/(m/s^2)^2
   Eigen::Vector3d temp_bias = Eigen::Vector3d::Zero();    // tc_bias_j, counts/degC
   Eigen::Vector3d temp_scale = Eigen::Vector3d::Zero();   // tc_scale_j, 1/degC
@@ -177,7 +177,7 @@ Eigen::Vector3d NoiseFreeReading(const CaptureSetData& set, const CaptureData& c
 CaptureSetData Generate(const Sensor& sensor, const Effects& effects, const Bench& bench,
                         const std::vector<CaptureSpec>& plan, std::mt19937_64& rng);
 
-// The project's capture-set CSV (README "Capture-set file (CSV)").
+// The project's capture-set CSV (docs/formats.md, "Capture-set file (CSV)").
 void WriteCsv(const CaptureSetData& set, std::ostream& out);
 
 // The truth: the nine parameters, the references, the injected effects (only the non-zero ones,

@@ -23,7 +23,7 @@ struct ReportCommandOptions {
   std::string input;             // session path or name, or a calibration file (JSON)
   std::string format = "text";   // text | html | json | calibration
   std::string output_path;       // empty: stdout
-  std::string allan_path;        // allan.json (README "Reports"); empty: the session's, if any
+  std::string allan_path;        // allan.json (docs/certificate.md, "Reports"); empty: the session's, if any
   std::string noise_path;        // noise.json; empty: the session's, if any
   std::string procedure_path;    // limits from here; empty: the default procedure when it matches
 };

@@ -1,5 +1,5 @@
 // A calibration procedure as data: the steps a wizard session walks through, read from TOML at
-// run time (procedures/*.toml, by io/procedure_file.h; the format is in README.md, "Procedures").
+// run time (procedures/*.toml, by io/procedure_file.h; the format is in docs/guide.md, "Procedures").
 //
 // Units: deg for tolerances shown to the operator, s for durations, m and rpm for the turntable,
 // g for the accelerometer's range, counts and counts per m/s^2 for the nominal model.

@@ -478,7 +478,7 @@ class BiasDrift final : public DifferentiableEffect<BiasDrift> {
   std::string_view RegressorName() const override { return "time"; }
   double Regressor(const FitCapture& c) const override { return c.mean_t_s; }
   int CorrectionStage() const override { return 0; }
-  bool CorrectsReadings() const override { return false; }  // a session artifact, see README
+  bool CorrectsReadings() const override { return false; }  // a session artifact, see docs/model.md
   std::string_view PlainName() const override { return "a drifting zero-g level"; }
   std::optional<BenchStatement> InBenchTerms(std::span<const double> drift, std::span<const double>,
                                              std::string_view, double) const override {
