@@ -185,7 +185,7 @@ void WriteCsv(const CaptureSetData& set, std::ostream& out);
 void WriteTruthJson(const CaptureSetData& set, const std::map<std::string, std::string>& info,
                     std::ostream& out);
 
-// The lab chapter's plan (procedures/seed_calibration.toml): 6 faces, 3 tilted poses with
+// The lab chapter's plan (procedures/full_calibration.toml): 6 faces, 3 tilted poses with
 // independent sign patterns, the turntable at 0.05/0.10/0.15 m and 120 rpm with each axis radial.
 std::vector<CaptureSpec> SeedPlan(double static_s, double turntable_s);
 // A longer plan: 26 static directions (faces, edges, corners) and each signed axis radial at

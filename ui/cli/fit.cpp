@@ -174,7 +174,7 @@ void SetupFitCommand(CLI::App& app) {
       ->capture_default_str();
   opts->format.Bind(*sub, "the recording (--recording)");
   sub->add_flag("--no-diagnose", opts->no_diagnose,
-                "Fit the seed's nine-parameter model only: do not look for missing effects");
+                "Fit the nine-parameter model only: do not look for missing effects");
   sub->add_flag("-q,--quiet", opts->quiet, "Print nothing but errors");
   sub->callback([opts, captures, recording] {
     if (captures->count() == 0 && recording->count() == 0)

@@ -38,7 +38,7 @@ void RunReport(const ReportCommandOptions& o) {
   ReportRequest request;
   request.input = o.input;
   request.procedure_path = o.procedure_path;
-  request.default_procedure_path = ShippedProcedurePath("seed_calibration.toml");
+  request.default_procedure_path = ShippedProcedurePath("full_calibration.toml");
   request.allan_path = o.allan_path;
   request.noise_path = o.noise_path;
   const ReportModel model = BuildReportModel(ReportInputsFor(request));
@@ -77,7 +77,7 @@ void SetupReportCommand(CLI::App& app) {
   sub->add_option("--allan", opts->allan_path, "Allan-deviation analysis (JSON) to include");
   sub->add_option("--noise", opts->noise_path, "Noise analysis (JSON) to include");
   sub->add_option("--procedure", opts->procedure_path,
-                  "Procedure whose [limits] decide pass/fail (default: the seed procedure, when "
+                  "Procedure whose [limits] decide pass/fail (default: the full calibration, when "
                   "the session ran it)")
       ->transform(ShippedFile(kShippedProcedures));
   sub->callback([opts] { RunReport(*opts); });

@@ -348,7 +348,7 @@ class TemperatureBias final : public TemperatureEffect<TemperatureBias> {
  public:
   std::string_view Name() const override { return "temperature_bias"; }
   std::string_view Story() const override {
-    return "the zero-g level moves with temperature (the seed names it as a variable effect)";
+    return "the zero-g level moves with temperature (the lab chapter names it as a variable effect)";
   }
   int NumParameters() const override { return 3; }
   std::string ParameterName(int i) const override { return PerAxis("tc_bias", i); }
@@ -438,7 +438,7 @@ class BiasDrift final : public DifferentiableEffect<BiasDrift> {
  public:
   std::string_view Name() const override { return "bias_drift"; }
   std::string_view Story() const override {
-    return "the zero-g level drifts steadily during the session (the seed's random drift, over "
+    return "the zero-g level drifts steadily during the session (the lab chapter's random drift, over "
            "the session's span)";
   }
   int NumParameters() const override { return 3; }
