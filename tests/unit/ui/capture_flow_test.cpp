@@ -312,6 +312,9 @@ TEST(CaptureFlow, LineModeSaysTheWordsTheDetailTheTimeTheConfirmationAndTheVerdi
   EXPECT_TRUE(Contains(text, "): still settling after you let go: wait\n")) << tail;
   EXPECT_TRUE(Contains(text, "s left of this capture; gives up in ")) << tail;
   EXPECT_TRUE(Contains(text, "(estimate)")) << tail;
+  // Issue 35: its last time line is the last step's, and says the session ends.
+  const std::string last_time = text.substr(text.rfind("time: "));
+  EXPECT_EQ(last_time.substr(0, last_time.find('\n')), "time: " + LastStepTimeText()) << tail;
   EXPECT_TRUE(Contains(text, "\n  +z up done: 3.0 s, |a| ~")) << tail;
   EXPECT_TRUE(Contains(text, "  Verdict: PASS\n")) << tail;
   // The final summary says the verdict once: its prompt does not repeat it.
