@@ -225,8 +225,11 @@ TEST(CaptureFlow, TheLastStepSaysTheSessionEndsNotThatTimeIsLeft) {
   int ending = 0;
   for (const WizardView& v : views) ending += v.time_text == LastStepTimeText();
   EXPECT_GT(ending, 0);
-  for (const WizardView& v : views)
-    if (v.time_text == LastStepTimeText()) EXPECT_EQ(v.step_title, last_timed->step_title);
+  for (const WizardView& v : views) {
+    if (v.time_text == LastStepTimeText()) {
+      EXPECT_EQ(v.step_title, last_timed->step_title);
+    }
+  }
 }
 
 TEST(CaptureFlow, AnAcceptedCaptureIsConfirmedWithItsFiguresUntilTheNextKey) {
