@@ -81,11 +81,12 @@ std::string Refusal(const std::string& text) {
 }
 
 TEST(ProcedureTest, FormerTitlesAreAnArrayOfStrings) {
-  const std::string sensor = "[sensor]\nnominal_scale_counts_per_mps2 = 34.8\nnominal_bias_counts = 2048\n";
+  const std::string sensor = "[sensor]\nnominal_scale_counts_per_mps2 = 34.8\nnominal_bias_counts = 2048\n"
+                             "[[step]]\nid = \"a\"\nkind = \"static\"\nup = [0, 0, 1]\n";
   const Procedure p = ParseProcedure("title = \"new\"\nformer_titles = [\"old\", \"older\"]\n" + sensor, "p.toml");
   EXPECT_EQ(p.former_titles, (std::vector<std::string>{"old", "older"}));
   EXPECT_TRUE(p.IsTitled("older"));
-  EXPECT_TRUE(ParseProcedure(kHead, "p.toml").former_titles.empty());
+  EXPECT_TRUE(ParseProcedure("title = \"t\"\n" + sensor, "p.toml").former_titles.empty());
   EXPECT_NE(Refusal("title = \"t\"\nformer_titles = \"old\"\n" + sensor).find("2: "), std::string::npos);
   EXPECT_NE(Refusal("title = \"t\"\nformer_titles = [1]\n" + sensor).find("must be an array of strings"),
             std::string::npos);
