@@ -4,6 +4,7 @@
 
 #include "accelcal/base/error.h"
 #include "accelcal/calibration/calibration_budget.h"
+#include "accelcal/calibration/excess_scatter.h"
 
 namespace accelcal {
 
@@ -50,6 +51,7 @@ CalibrationOutcome CalibrateCaptures(CalibrationRequest request) {
   DisagreementOptions disagreement = request.disagreement;
   if (!request.diagnose) disagreement.refuse = false;
   ResolveDisagreeingCaptures(out.captures, fit, diagnosis, disagreement, &out.diagnosis);
+  ApplyExcessScatter(out.captures, diagnosis.consistency_p, &out.diagnosis);
   return out;
 }
 
