@@ -6,7 +6,7 @@
 #include <Eigen/Cholesky>
 #include <fmt/core.h>
 
-#include "accelcal/base/student_t.h"
+#include "accelcal/base/chi_square.h"
 #include "accelcal/calibration/fit/fit_capture.h"
 
 namespace accelcal {
@@ -198,9 +198,11 @@ SettlingFinding HandleSettling(std::vector<Capture>& captures, const SettlingOpt
   finding.tau_s = best_tau;
   finding.lag_share = best.share;
   finding.t_statistic = best.t;
-  const double alpha = options.significance / (3.0 * kTauTrials);
-  finding.critical_t = StudentTCoverageFactor(1.0 - alpha, finding.captures - 1.0);
-  finding.detected = best.t.cwiseAbs().maxCoeff() > finding.critical_t;
+  // The three axes together: sum t_j^2, chi-square with 3 dof for many captures; each t has
+  // n - 1 dof (the scatter about the line is estimated), whose t^2 has mean (n - 1) / (n - 3).
+  const double n = finding.captures;
+  finding.critical_score = ChiSquareQuantile(1.0 - options.significance / kTauTrials, 3.0) * (n - 1.0) / (n - 3.0);
+  finding.detected = best_score > finding.critical_score;
   if (!finding.detected) return finding;
 
   for (size_t i = 0; i < series.size(); ++i) {
