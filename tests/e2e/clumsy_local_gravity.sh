@@ -4,7 +4,7 @@
 # diagnosis called the misfit a speed error, and the report said PASS with the scales 0.27 %
 # off. Now the welcome asks; taken as "standard", the diagnosis says a gravity error looks the
 # same and the report cannot PASS; given the measured value, the calibration is right.
-# Usage: bash clumsy_local_gravity.sh ACCELCAL SOURCE_DIR SHARED_DATA_DIR
+# Usage: bash clumsy_local_gravity.sh ACCELCAL SOURCE_DIR DATA_DIR
 set -euo pipefail
 accelcal=$1
 source_dir=$2

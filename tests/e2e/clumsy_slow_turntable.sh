@@ -2,7 +2,7 @@
 # The clumsy bench (scenarios/clumsy_slow_turntable.toml): the turntable turns 1 % slower than
 # stated. With the local gravity known, the diagnosis finds the speed scale and the calibration
 # is right; on the standard value it names the gravity ambiguity and the report cannot PASS.
-# Usage: bash clumsy_slow_turntable.sh ACCELCAL SOURCE_DIR SHARED_DATA_DIR
+# Usage: bash clumsy_slow_turntable.sh ACCELCAL SOURCE_DIR DATA_DIR
 set -euo pipefail
 accelcal=$1
 source_dir=$2

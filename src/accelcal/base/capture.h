@@ -32,12 +32,18 @@ std::string_view SensorAxisToString(SensorAxis axis);
 std::optional<SensorAxis> StringToSensorAxis(std::string_view text);
 // Unit vector of `axis` in sensor (platform) coordinates.
 Eigen::Vector3d SensorAxisVector(SensorAxis axis);
+// The name of a face ("+z") when `up` is within 1e-6 of one; else "(x, y, z)".
+std::string DescribeUp(const Eigen::Vector3d& up);
 
 struct Sample {
   double t_s = 0.0;
   Eigen::Vector3d raw_counts = Eigen::Vector3d::Zero();
   double temp_c = kNaN;  // NaN when the source has no temperature
 };
+
+// A sample whose time and counts are all finite (a NaN temperature is allowed): the checks that
+// judge samples skip the others.
+inline bool IsFinite(const Sample& s) { return std::isfinite(s.t_s) && s.raw_counts.allFinite(); }
 
 // Running statistics of a capture (Welford's algorithm: one pass, numerically stable).
 struct CaptureStats {

@@ -23,6 +23,7 @@
 #include "accelcal/calibration/calibration.h"
 #include "accelcal/report/certificate.h"
 #include "accelcal/session/procedure.h"
+#include "accelcal/session/session_gaps.h"
 #include "accelcal/session/session_journal.h"
 
 namespace accelcal {
@@ -108,22 +109,6 @@ struct LimitCheck {
   double limit = kNaN;
   bool at_least = false; // true: value >= limit passes; false: value <= limit passes
   bool pass = false;
-};
-
-// What a wizard session lacks that its procedure asked for (a calibration file alone knows
-// nothing of it). The report lists every entry; a required one keeps the verdict from PASS.
-struct SessionGaps {
-  struct Step {
-    std::string id;       // the procedure's step id
-    std::string title;    // as shown to the operator
-    std::string why;      // "skipped", "its capture was left out: not still: ..."
-    bool required = true;
-  };
-  std::vector<Step> steps;                  // in procedure order
-  std::vector<std::string> identification;  // required and empty: "device serial", "operator"
-  // The diagnosis found a turntable speed or radius scale while gravity was the standard value
-  // (adopted or declined: the base model then carries the same error): its note, else empty.
-  std::string gravity_ambiguity;
 };
 
 // PASS: every limit met and nothing required missing. FAIL: a limit not met. INCOMPLETE: the

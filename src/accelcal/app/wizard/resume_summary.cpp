@@ -2,13 +2,14 @@
 
 #include <fmt/core.h>
 
+#include "accelcal/app/wizard/step_registry.h"
 #include "accelcal/base/duration_text.h"
 
 namespace accelcal {
 namespace {
 
 // "done (capture 7)", "done (capture 7; capture 3 taken again, superseded)", "left out, ...".
-std::string CaptureState(const ProcedureStep& step, const SessionModel& model) {
+std::string CaptureStepState(const ProcedureStep& step, const SessionModel& model) {
   const JournalCapture* current = model.CaptureOf(step.id);
   std::string superseded;
   bool left_out = false;
@@ -24,9 +25,8 @@ std::string CaptureState(const ProcedureStep& step, const SessionModel& model) {
 }  // namespace
 
 std::string StepDisplayTitle(const ProcedureStep& step) {
-  if (step.kind == StepKind::kTurntable && step.title == step.pose_name)
-    return fmt::format("Turntable {} at {:g} mm", step.pose_name, step.radius_m * 1000.0);
-  return step.title;
+  const StepControllerKind& kind = ControllerKindOf(step.kind);
+  return kind.display_title != nullptr ? kind.display_title(step) : step.title;
 }
 
 std::vector<std::string> ResumeSummaryLines(const Procedure& procedure, const SessionModel& model,
@@ -37,7 +37,7 @@ std::vector<std::string> ResumeSummaryLines(const Procedure& procedure, const Se
   for (const ProcedureStep& s : procedure.steps) {
     const std::string title = StepDisplayTitle(s);
     // A capture first: a step skipped and then captured after b is done.
-    if (const std::string state = CaptureState(s, model); !state.empty()) {
+    if (const std::string state = CaptureStepState(s, model); !state.empty()) {
       lines.push_back(fmt::format("  {}: {}", title, state));
       continue;
     }
