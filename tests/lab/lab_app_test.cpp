@@ -23,7 +23,7 @@ using testing::kManager;
 using testing::ScopedEnv;
 using Kind = SessionPublishOutcome::Kind;
 
-const std::string kProcedure = std::string(ACCELCAL_SOURCE_DIR) + "/procedures/seed_calibration.toml";
+const std::string kProcedure = std::string(ACCELCAL_SOURCE_DIR) + "/procedures/full_calibration.toml";
 
 std::string ReadFile(const std::string& path) {
   std::ifstream in(path, std::ios::binary);

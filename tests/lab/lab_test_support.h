@@ -144,7 +144,7 @@ inline LabPublication MakePublication(const std::string& uuid, const std::string
   LabPublication p;
   p.session_uuid = uuid;
   p.session_name = "s-" + uuid.substr(0, 8);
-  p.procedure = "Seed calibration";
+  p.procedure = "Full calibration";
   p.source = "sim";
   p.operator_name = "op";
   p.place = "bench room";

@@ -50,7 +50,7 @@ void RunPublish(const PublishOptions& o) {
   }
   long failed = 0, published = 0, held = 0, waiting = 0;
   for (const SessionPublishOutcome& outcome :
-       PublishSessionFiles(*lab, paths, ShippedProcedurePath("seed_calibration.toml"))) {
+       PublishSessionFiles(*lab, paths, ShippedProcedurePath("full_calibration.toml"))) {
     std::cout << DescribeOutcome(outcome) << "\n";
     published += outcome.kind == Kind::kPublished;
     held += outcome.kind == Kind::kAlreadyPublished;
