@@ -28,8 +28,19 @@ as_admin "CREATE ROLE bench_a LOGIN IN ROLE accelcal_bench" \
   "CREATE ROLE bench_b LOGIN IN ROLE accelcal_bench PASSWORD 'b-secret-7'" \
   "CREATE ROLE mgr LOGIN IN ROLE accelcal_manager"
 
-# Bench B's settings: a service file naming the lab (and an unreachable one, for its time
-# offline) and its own password file (libpq requires 0600).
+# A lab address that takes a connection and never answers (a wrong host behind a proxy or a
+# firewall that swallows it): a socket that listens and never accepts. Its output to a file, so
+# that a failure before it is stopped leaves ctest nothing to wait for.
+python3 -c 'import socket, time
+s = socket.socket(); s.bind(("127.0.0.1", 0)); s.listen(16)
+print(s.getsockname()[1], flush=True); time.sleep(300)' >"$work/silent.port" 2>&1 &
+silent_pid=$!
+for _ in $(seq 50); do [ -s "$work/silent.port" ] && break; sleep 0.1; done
+silent_port=$(cat "$work/silent.port")
+[ -n "$silent_port" ] || fail "the silent listener did not start"
+
+# Bench B's settings: a service file naming the lab (an unreachable one, for its time offline,
+# and the silent one, with a long timeout) and its own password file (libpq requires 0600).
 cat >"$work/services.conf" <<CONF
 [lab]
 host=127.0.0.1
@@ -43,6 +54,12 @@ port=1
 dbname=lab
 user=bench_b
 connect_timeout=5
+[lab-silent]
+host=127.0.0.1
+port=$silent_port
+dbname=lab
+user=bench_b
+connect_timeout=120
 CONF
 printf '127.0.0.1:%s:lab:bench_b:b-secret-7\n' "$PG_TCP_PORT" >"$work/pgpass"
 chmod 600 "$work/pgpass"
@@ -74,13 +91,24 @@ for spec in "a SIM-0001 -700days" "a SIM-0002 -300days" "a SIM-0001 -200days" "a
   n=$((n + 1))
   "$make_session" "$work/$1/accelcal/sessions/s$n-$2.db" --device "$2" --date "$(day "$3")"
 done
-# One session from the wizard itself, on bench B while it is offline (device WIZ-0001, the rest
-# the defaults): the welcome says the equipment could not be checked, the end that the session
-# waits; the wizard itself ends well.
-{ echo WIZ-0001; yes '' || true; } | B_SERVICE=lab-offline bench_b "$accelcal" wizard --source sim --speed 0 --plain \
+# One session from the wizard itself, on bench B while its lab's address does not answer (the
+# silent service, whose own timeout is 120 s; device WIZ-0001, the rest the defaults): the
+# terminal says what it waits for, the welcome that the lab cannot be reached and the session
+# goes on, kept on the bench, the end that the session waits; the wizard waits its own 3 s
+# twice, not the service's 120, and ends well.
+start=$SECONDS
+{ echo WIZ-0001; yes '' || true; } | B_SERVICE=lab-silent bench_b "$accelcal" wizard --source sim --speed 0 --plain \
   --session "$work/b/accelcal/sessions/wizard.db" >"$work/wizard.log" 2>&1 || { tail "$work/wizard.log"; fail "wizard"; }
-grep -q "the equipment's calibration dates could not be checked: cannot reach the lab store" "$work/wizard.log" \
+wizard_s=$((SECONDS - start))
+kill "$silent_pid" 2>/dev/null || true
+(( wizard_s < 100 )) || fail "the wizard took $wizard_s s with a lab that does not answer"
+head -1 "$work/wizard.log" | grep -q "^Checking the bench's equipment with the lab's register (waiting at most 3 s" \
+  || fail "the wait is not said first: $(head -3 "$work/wizard.log")"
+grep -q "The lab's register cannot be reached, so the equipment's calibration dates are not checked" "$work/wizard.log" \
   || fail "the offline welcome: $(head -20 "$work/wizard.log")"
+grep -q "The session goes on here and is kept on this bench" "$work/wizard.log" || fail "the offline welcome's words"
+grep -q "127.0.0.1:$silent_port as bench_b.*timeout expired" "$work/wizard.log" || fail "libpq's reason not said"
+grep -q "^Sending the session to the lab's register (waiting at most 3 s" "$work/wizard.log" || fail "the end's wait not said"
 grep -q "^The lab's register: wizard: not published: cannot reach the lab store.*it waits for \`accelcal lab publish\`" \
   "$work/wizard.log" || fail "the offline wizard's end: $(tail -5 "$work/wizard.log")"
 

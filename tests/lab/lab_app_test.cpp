@@ -1,9 +1,17 @@
 // Publishing real sessions (made by accelcal_make_session, the tests' session generator): the
 // number written back into the session and onto the certificate beside it, the backlog, a lost
-// write-back repaired by the next publish; the equipment check the wizard's welcome makes.
+// write-back repaired by the next publish; the equipment check the wizard's welcome makes, and how
+// long the wizard waits for a lab out of reach.
+#include <chrono>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <sstream>
+
+#include <arpa/inet.h>
+#include <netinet/in.h>
+#include <sys/socket.h>
+#include <unistd.h>
 
 #include <sqlite3.h>
 
@@ -228,19 +236,90 @@ TEST_F(LabApp, TheWelcomeChecksOnlyWhenTheBenchIsPointedAtALab) {
   {
     // No lab: nothing is checked, nothing waits.
     ScopedEnv host("PGHOST", ""), db("PGDATABASE", "");
-    EXPECT_TRUE(WelcomeEquipmentWarnings(items).empty());
+    const WelcomeLabCheck none = WelcomeEquipmentWarnings(items);
+    EXPECT_TRUE(none.warnings.empty());
+    EXPECT_EQ(none.unreachable, "");
   }
   {
-    // A lab that cannot be reached: one warning, never an error.
+    // A lab that cannot be reached (a closed port): said, never an error, no warning of items.
     ScopedEnv host("PGHOST", "127.0.0.1"), port("PGPORT", "1");
-    const std::vector<std::string> w = WelcomeEquipmentWarnings(items);
-    ASSERT_EQ(w.size(), 1u);
-    EXPECT_NE(w[0].find("could not be checked"), std::string::npos) << w[0];
+    const WelcomeLabCheck check = WelcomeEquipmentWarnings(items);
+    EXPECT_TRUE(check.warnings.empty());
+    EXPECT_NE(check.unreachable.find("cannot reach the lab store"), std::string::npos) << check.unreachable;
   }
   ScopedEnv user("PGUSER", "bench_1");
-  const std::vector<std::string> w = WelcomeEquipmentWarnings(items);
-  ASSERT_EQ(w.size(), 1u);
-  EXPECT_NE(w[0].find("TT-01: not in the lab's equipment register"), std::string::npos) << w[0];
+  const WelcomeLabCheck check = WelcomeEquipmentWarnings(items);
+  EXPECT_EQ(check.unreachable, "");
+  ASSERT_EQ(check.warnings.size(), 1u);
+  EXPECT_NE(check.warnings[0].find("TT-01: not in the lab's equipment register"), std::string::npos)
+      << check.warnings[0];
+}
+
+// The wizard's check (WizardOptions::check_equipment): once the lab could not be reached, the
+// session does not wait for it again (the welcome's equipment answer checks again): the lab is
+// back here, and still not tried.
+TEST_F(LabApp, TheWelcomeDoesNotWaitTwiceForALabOutOfReach) {
+  std::vector<EquipmentItem> items(1);
+  items[0].identification = "TT-01";
+  ScopedEnv user("PGUSER", "bench_1");
+  const auto check = WelcomeEquipmentCheck();
+  {
+    ScopedEnv host("PGHOST", "127.0.0.1"), port("PGPORT", "1");
+    EXPECT_NE(check(items).unreachable, "");
+  }
+  const WelcomeLabCheck again = check(items);
+  EXPECT_NE(again.unreachable.find("cannot reach the lab store"), std::string::npos) << again.unreachable;
+  EXPECT_TRUE(again.warnings.empty());
+  // A new session's check reaches it.
+  EXPECT_EQ(WelcomeEquipmentCheck()(items).unreachable, "");
+}
+
+// A lab's address where something takes the connection and never answers (a wrong host behind a
+// firewall or a proxy that swallows it; here a socket that listens and never accepts): the
+// wizard waits kLabQuickConnectTimeoutS for it, whatever the settings say (here 60 s), then
+// goes on; `accelcal lab` commands keep the settings' timeout (here 2 s, to keep the test short).
+TEST_F(LabApp, ALabThatNeverAnswersHoldsTheWizardOnlyItsShortTimeout) {
+  const int silent = ::socket(AF_INET, SOCK_STREAM, 0);
+  ASSERT_GE(silent, 0);
+  sockaddr_in address{};
+  address.sin_family = AF_INET;
+  address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+  ASSERT_EQ(::bind(silent, reinterpret_cast<sockaddr*>(&address), sizeof address), 0);
+  ASSERT_EQ(::listen(silent, 16), 0);
+  socklen_t length = sizeof address;
+  ASSERT_EQ(::getsockname(silent, reinterpret_cast<sockaddr*>(&address), &length), 0);
+  ScopedEnv host("PGHOST", "127.0.0.1"), port("PGPORT", std::to_string(ntohs(address.sin_port)));
+  const auto seconds_of = [](auto&& work) {
+    const auto start = std::chrono::steady_clock::now();
+    work();
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  };
+  {
+    ScopedEnv timeout("PGCONNECT_TIMEOUT", "60");
+    std::vector<EquipmentItem> items(1);
+    items[0].identification = "TT-01";
+    WelcomeLabCheck check;
+    const double welcome_s = seconds_of([&] { check = WelcomeEquipmentWarnings(items); });
+    EXPECT_NE(check.unreachable.find("timeout expired"), std::string::npos) << check.unreachable;
+    EXPECT_GE(welcome_s, kLabQuickConnectTimeoutS - 1.0);
+    EXPECT_LT(welcome_s, 20.0) << "the welcome waited as the settings say, not its own short timeout";
+
+    const std::string session = MakeSession("s1", "SIM-0001");
+    auto store = Writer(session);
+    std::optional<SessionPublishOutcome> end;
+    const double end_s = seconds_of([&] { end = PublishIfLabConfigured(*store, kProcedure); });
+    ASSERT_TRUE(end.has_value());
+    EXPECT_TRUE(end->lab_unreachable) << end->message;
+    EXPECT_LT(end_s, 20.0);
+  }
+  ScopedEnv timeout("PGCONNECT_TIMEOUT", "2");
+  try {
+    LabStore::Connect();
+    ADD_FAILURE() << "connected to a socket that never answers";
+  } catch (const LabError& e) {
+    EXPECT_TRUE(e.unreachable()) << e.what();
+  }
+  ::close(silent);
 }
 
 }  // namespace

@@ -2,8 +2,10 @@
 #include "cli/wizard.h"
 
 #include <cstdlib>
+#include <functional>
 #include <iostream>
 #include <memory>
+#include <vector>
 
 #include <unistd.h>
 
@@ -43,11 +45,30 @@ std::string DefaultOperator(bool sim) {
 // The wizard's end on a bench pointed at a lab (docs/lab.md): the finished session published to
 // the lab's register, its number written back; a lab out of reach leaves it in the backlog.
 void PublishAtTheEnd(const std::string& session, const std::string& procedure_path) {
+  if (!LabConfigured()) return;
+  std::cout << fmt::format("Sending the session to the lab's register (waiting at most {} s for it)...",
+                           kLabQuickConnectTimeoutS)
+            << std::endl;
   SessionOpenOptions existing;
   existing.create_if_missing = false;
   const std::unique_ptr<SessionStore> store = SessionStore::Open(session, existing);
   if (const std::optional<SessionPublishOutcome> outcome = PublishIfLabConfigured(*store, procedure_path))
     std::cout << "The lab's register: " << DescribeOutcome(*outcome) << "\n";
+}
+
+// WelcomeEquipmentCheck, saying on the terminal what the wizard waits for before the first
+// check: it runs while the engine is built, before the welcome is on the screen (the TUI's too),
+// and a lab that does not answer holds it up to kLabQuickConnectTimeoutS.
+std::function<WelcomeLabCheck(const std::vector<EquipmentItem>&)> AnnouncedEquipmentCheck() {
+  return [check = WelcomeEquipmentCheck(), first = true](const std::vector<EquipmentItem>& items) mutable {
+    if (first && LabConfigured())
+      std::cout << fmt::format("Checking the bench's equipment with the lab's register (waiting at most {} s "
+                               "for it)...",
+                               kLabQuickConnectTimeoutS)
+                << std::endl;
+    first = false;
+    return check(items);
+  };
 }
 
 }  // namespace
@@ -81,7 +102,7 @@ int RunWizard(const WizardCommandOptions& options) {
   wizard.default_place = options.place;
   wizard.gravity = options.gravity;
   wizard.report_beside = session;
-  if (!options.no_lab) wizard.check_equipment = WelcomeEquipmentWarnings;
+  if (!options.no_lab) wizard.check_equipment = AnnouncedEquipmentCheck();
   WizardEngine engine(procedure, *source, *journal, wizard);
 
   const bool terminal = ::isatty(STDIN_FILENO) == 1 && ::isatty(STDOUT_FILENO) == 1;

@@ -1,5 +1,7 @@
 #include "accelcal/app/lab_equipment_check.h"
 
+#include <memory>
+
 #include <fmt/core.h>
 
 namespace accelcal {
@@ -42,16 +44,29 @@ EquipmentCheck CheckEquipment(const LabStore& lab, const std::vector<std::string
   return check;
 }
 
-std::vector<std::string> WelcomeEquipmentWarnings(const std::vector<EquipmentItem>& equipment) {
-  if (!LabConfigured()) return {};
+WelcomeLabCheck WelcomeEquipmentWarnings(const std::vector<EquipmentItem>& equipment) {
+  WelcomeLabCheck out;
+  if (!LabConfigured()) return out;
   std::vector<std::string> ids;
   for (const EquipmentItem& item : equipment) ids.push_back(item.identification);
   try {
-    const std::unique_ptr<LabStore> lab = LabStore::Connect();
-    return CheckEquipment(*lab, ids).warnings;
+    const std::unique_ptr<LabStore> lab = LabStore::ConnectQuickly();
+    out.warnings = CheckEquipment(*lab, ids).warnings;
   } catch (const LabError& e) {
-    return {fmt::format("the equipment's calibration dates could not be checked: {}", e.what())};
+    if (e.unreachable()) out.unreachable = e.what();
+    else out.warnings.push_back(fmt::format("the equipment's calibration dates could not be checked: {}", e.what()));
   }
+  return out;
+}
+
+std::function<WelcomeLabCheck(const std::vector<EquipmentItem>&)> WelcomeEquipmentCheck() {
+  auto unreachable = std::make_shared<std::string>();
+  return [unreachable](const std::vector<EquipmentItem>& equipment) {
+    if (!unreachable->empty()) return WelcomeLabCheck{{}, *unreachable};
+    WelcomeLabCheck check = WelcomeEquipmentWarnings(equipment);
+    *unreachable = check.unreachable;
+    return check;
+  };
 }
 
 }  // namespace accelcal

@@ -4,8 +4,11 @@
 // expired equipment is not traceable).
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
+
+#include "accelcal/app/wizard/wizard_options.h"
 
 #include "accelcal/lab/lab_store.h"
 #include "accelcal/session/equipment.h"
@@ -27,8 +30,13 @@ EquipmentCheck CheckEquipment(const LabStore& lab, const std::vector<std::string
 
 // The wizard's welcome: the identified items of `equipment` (the procedure's, as the welcome
 // edited them) checked against the lab when this bench is pointed at one (LabConfigured());
-// nothing when it is not. A lab that cannot be reached is one warning, never an error: the
-// bench keeps working.
-std::vector<std::string> WelcomeEquipmentWarnings(const std::vector<EquipmentItem>& equipment);
+// nothing when it is not. The lab is given kLabQuickConnectTimeoutS to answer; one that cannot
+// be reached is the outcome's `unreachable`, never an error: the bench keeps working.
+WelcomeLabCheck WelcomeEquipmentWarnings(const std::vector<EquipmentItem>& equipment);
+
+// WizardOptions::check_equipment: WelcomeEquipmentWarnings, except that once the lab could not
+// be reached it is not tried again in this session (the welcome's equipment answer would wait
+// for it once more): the same `unreachable` comes back at once.
+std::function<WelcomeLabCheck(const std::vector<EquipmentItem>&)> WelcomeEquipmentCheck();
 
 }  // namespace accelcal

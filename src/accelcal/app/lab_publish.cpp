@@ -163,7 +163,7 @@ std::optional<SessionPublishOutcome> PublishIfLabConfigured(SessionStore& store,
                                                             const std::string& default_procedure_path) {
   if (!LabConfigured()) return std::nullopt;
   try {
-    const std::unique_ptr<LabStore> lab = LabStore::Connect();
+    const std::unique_ptr<LabStore> lab = LabStore::ConnectQuickly();
     return PublishSession(*lab, store, default_procedure_path);
   } catch (const LabError& e) {
     SessionPublishOutcome waiting;

@@ -51,7 +51,7 @@ std::vector<SessionPublishOutcome> PublishSessionFiles(LabStore& lab, const std:
 std::vector<std::string> UnpublishedSessions(const std::string& dir);
 
 // The wizard's end: publishes the session just finished when this bench is pointed at a lab
-// (LabConfigured()); nullopt when it is not. A store that cannot be reached is an outcome
+// (LabConfigured()), given kLabQuickConnectTimeoutS to answer; nullopt when it is not. A store that cannot be reached is an outcome
 // (kFailed, lab_unreachable), never an exception: the session waits in the backlog.
 std::optional<SessionPublishOutcome> PublishIfLabConfigured(SessionStore& store,
                                                             const std::string& default_procedure_path);

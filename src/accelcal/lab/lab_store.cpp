@@ -57,8 +57,12 @@ LabStore::LabStore(std::unique_ptr<detail::PgConnection> db) : db_(std::move(db)
 
 LabStore::~LabStore() = default;
 
-std::unique_ptr<LabStore> LabStore::Connect(bool administer) {
-  std::unique_ptr<LabStore> store(new LabStore(std::make_unique<detail::PgConnection>()));
+std::unique_ptr<LabStore> LabStore::Connect(bool administer) { return Connect(administer, 0); }
+
+std::unique_ptr<LabStore> LabStore::ConnectQuickly() { return Connect(false, kLabQuickConnectTimeoutS); }
+
+std::unique_ptr<LabStore> LabStore::Connect(bool administer, int connect_timeout_s) {
+  std::unique_ptr<LabStore> store(new LabStore(std::make_unique<detail::PgConnection>(connect_timeout_s)));
   if (!administer) {
     const LabSchemaState state = store->SchemaState();
     if (!state.usable) throw LabError(state.problem, "");

@@ -34,6 +34,9 @@ class PgConnection;
 // `accelcal lab ...` commands connect regardless (libpq's defaults: the local server).
 bool LabConfigured();
 
+// The longest the wizard waits for the lab's server, s (libpq's connect_timeout; its minimum is 2).
+inline constexpr int kLabQuickConnectTimeoutS = 3;
+
 enum class LabCertificateStatus { kIssued, kApproved, kWithdrawn };
 std::string LabCertificateStatusText(LabCertificateStatus status);  // "issued", ...
 
@@ -59,6 +62,11 @@ class LabStore {
   // Connects. Throws LabError: unreachable (unreachable()), or, unless `administer` (migrate,
   // status), a schema this accelcal cannot use (none yet, older, or newer in a way that breaks it).
   static std::unique_ptr<LabStore> Connect(bool administer = false);
+  // Connect() for a technician who is waiting (the wizard's welcome and end): at most
+  // kLabQuickConnectTimeoutS s for the server, whatever libpq's settings say (PGCONNECT_TIMEOUT
+  // only when shorter), per address of its host; a server that does not answer in time is a
+  // LabError unreachable().
+  static std::unique_ptr<LabStore> ConnectQuickly();
   ~LabStore();
   LabStore(const LabStore&) = delete;
   LabStore& operator=(const LabStore&) = delete;
@@ -109,6 +117,7 @@ class LabStore {
 
  private:
   explicit LabStore(std::unique_ptr<detail::PgConnection> db);
+  static std::unique_ptr<LabStore> Connect(bool administer, int connect_timeout_s);
   void ReadLabId();  // empty while the store has no register (or this role may not read it)
   std::unique_ptr<detail::PgConnection> db_;
   std::string role_;

@@ -11,6 +11,12 @@
 
 namespace accelcal {
 
+// What the lab's register said of the bench's equipment (WizardOptions::check_equipment).
+struct WelcomeLabCheck {
+  std::vector<std::string> warnings;  // one line each: expired, running out, unknown to the lab
+  std::string unreachable;            // non-empty: the lab could not be reached, and why (one line)
+};
+
 struct WizardOptions {
   std::string session_name = "session";  // shown in the view and in the calibration's source
   std::string default_operator;          // offered at the welcome (may be empty)
@@ -30,10 +36,11 @@ struct WizardOptions {
   std::string report_beside = {};
   // The lab or bench offered at the welcome (may be empty): the report's "place".
   std::string default_place = {};
-  // The lab's check of the bench's equipment (app/lab_equipment_check.h: WelcomeEquipmentWarnings):
+  // The lab's check of the bench's equipment (app/lab_equipment_check.h: WelcomeEquipmentCheck):
   // its warnings (expired, running out, unknown to the lab) are shown at the welcome, for the
-  // procedure's items and again for the items the equipment answer names. Empty: no check.
-  std::function<std::vector<std::string>(const std::vector<EquipmentItem>&)> check_equipment = {};
+  // procedure's items and again for the items the equipment answer names; a lab out of reach
+  // is said there too (the session goes on, kept on the bench). Empty: no check.
+  std::function<WelcomeLabCheck(const std::vector<EquipmentItem>&)> check_equipment = {};
 
   // Empty when the options are usable; else why not.
   std::string Validate() const {

@@ -86,16 +86,34 @@ std::string StatementKind(const std::string& sql) {
   return "a statement";
 }
 
+// The connect_timeout to pass libpq (empty: none, libpq reads the settings'). Without a cap, a
+// bounded wait when no timeout is set anywhere we can see; with one, the cap, or the user's
+// PGCONNECT_TIMEOUT when it is shorter (a service file's is not visible here: the cap wins).
+std::string ConnectTimeoutValue(int cap_s) {
+  const char* env = std::getenv("PGCONNECT_TIMEOUT");
+  if (cap_s <= 0) {
+    if (env != nullptr || std::getenv("PGSERVICE") != nullptr) return "";
+    return std::to_string(PgConnection::kDefaultConnectTimeoutS);
+  }
+  if (env != nullptr) {
+    char* end = nullptr;
+    const long user_s = std::strtol(env, &end, 10);
+    if (end != env && *end == '\0' && user_s > 0 && user_s < cap_s) return std::to_string(user_s);
+  }
+  return std::to_string(cap_s);
+}
+
 }  // namespace
 
-PgConnection::PgConnection() {
+PgConnection::PgConnection(int connect_timeout_s) {
   // Only what libpq reads itself, plus defaults that never override the user's: the application
-  // name (fallback_), and a bounded connect when no timeout is set anywhere we can see.
+  // name (fallback_), and a bounded connect (ConnectTimeoutValue).
   std::vector<const char*> keys = {"fallback_application_name"};
   std::vector<const char*> values = {"accelcal"};
-  if (std::getenv("PGCONNECT_TIMEOUT") == nullptr && std::getenv("PGSERVICE") == nullptr) {
+  const std::string timeout = ConnectTimeoutValue(connect_timeout_s);
+  if (!timeout.empty()) {
     keys.push_back("connect_timeout");
-    values.push_back("10");
+    values.push_back(timeout.c_str());
   }
   keys.push_back(nullptr);
   values.push_back(nullptr);

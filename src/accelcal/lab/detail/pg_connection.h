@@ -53,10 +53,13 @@ class PgResult {
 
 class PgConnection {
  public:
-  // Connects with libpq's settings (see above), application name "accelcal", at most 10 s to
-  // connect when neither PGCONNECT_TIMEOUT nor a service says otherwise, the session's time
-  // zone UTC. Throws LabError (SQLSTATE 08001) with libpq's reason and where it tried.
-  PgConnection();
+  // Connects with libpq's settings (see above), application name "accelcal", the session's time
+  // zone UTC. The wait for the server (libpq's connect_timeout, for each address of the host):
+  // `connect_timeout_s` > 0 caps it whatever the settings say (PGCONNECT_TIMEOUT wins only when
+  // shorter); 0 takes the settings', else kDefaultConnectTimeoutS. Throws LabError (SQLSTATE
+  // 08001) with libpq's reason and where it tried.
+  static constexpr int kDefaultConnectTimeoutS = 10;
+  explicit PgConnection(int connect_timeout_s = 0);
   ~PgConnection();
   PgConnection(const PgConnection&) = delete;
   PgConnection& operator=(const PgConnection&) = delete;

@@ -1,6 +1,7 @@
 #include "accelcal/app/wizard/steps/welcome_step.h"
 
 #include <algorithm>
+#include <utility>
 
 #include <fmt/core.h>
 #include <fmt/format.h>
@@ -60,8 +61,21 @@ void WelcomeStep::ReadEquipment(const WelcomeAnswers& answers) {
 
 // The items as the session holds them (the procedure's, or as the equipment answer edited them).
 void WelcomeStep::CheckEquipmentWithLab() {
-  if (session_.options.check_equipment)
-    equipment_warnings_ = session_.options.check_equipment(session_.steps.equipment());
+  if (!session_.options.check_equipment) return;
+  WelcomeLabCheck check = session_.options.check_equipment(session_.steps.equipment());
+  equipment_warnings_ = std::move(check.warnings);
+  lab_unreachable_ = std::move(check.unreachable);
+}
+
+// The lab out of reach, in the bench's words: what is not done, that the session goes on, and
+// what becomes of it (the wizard's end tries the lab again; else the session waits on this bench
+// for `accelcal lab publish`, app/lab_publish.h). libpq's reason last, for whoever fixes it.
+void WelcomeStep::AddLabUnreachable(WizardView& v) const {
+  v.lines.push_back("The lab's register cannot be reached, so the equipment's calibration dates are not checked.");
+  v.lines.push_back(
+      "The session goes on here and is kept on this bench: at its end it is sent to the lab if the "
+      "lab can be reached then, else it waits for `accelcal lab publish`.");
+  v.lines.push_back("  (" + lab_unreachable_ + ")");
 }
 
 std::string WelcomeStep::Check(const std::string& key, const std::string& value) {
@@ -126,6 +140,7 @@ void WelcomeStep::SetView(WizardView& v) const {
   if (!input_note_.empty()) v.prompt += " " + input_note_;
   v.input = InputRequest{question.key, question.label, question.default_value, input_error_};
   v.keys = {{"Enter", "accept"}, {"b", "back"}, {"q", "save and quit"}};
+  if (!lab_unreachable_.empty()) AddLabUnreachable(v);
   if (equipment_warnings_.empty()) return;
   v.lines.push_back("The lab's equipment register warns (the equipment question can name other items):");
   for (const std::string& warning : equipment_warnings_) v.lines.push_back("  " + warning);

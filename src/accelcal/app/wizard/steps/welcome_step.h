@@ -46,12 +46,14 @@ class WelcomeStep final : public StepController {
   void ReadEquipment(const WelcomeAnswers& answers);
   // The session's equipment through the options' check_equipment (the lab's register).
   void CheckEquipmentWithLab();
+  void AddLabUnreachable(WizardView& v) const;
 
   WizardSession& session_;
   int question_ = 0;
   std::string input_error_;  // why the last answer was refused
   std::string input_note_;   // said above the question (b at the first one)
   std::vector<std::string> equipment_warnings_;  // the lab's, listed on the welcome's questions
+  std::string lab_unreachable_;                  // non-empty: the lab could not be reached (why)
 };
 
 // What to type at a question of the welcome (its input key), for the help on ?; empty for a key
