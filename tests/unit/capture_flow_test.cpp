@@ -120,13 +120,7 @@ TEST(TimeEstimate, TheSessionIsTheRemainingStepsAndTheirHandling) {
 
 // ---- the engine on the clumsy bench ---------------------------------------------------------
 
-// The seed procedure with 3 s captures (the checks are the same; the test time is not).
-Procedure ShortProcedure() {
-  Procedure p = testing::SeedProcedure();
-  for (ProcedureStep& s : p.steps)
-    if (s.kind == StepKind::kStatic || s.kind == StepKind::kTurntable) s.duration_s = 3.0;
-  return p;
-}
+Procedure ShortProcedure() { return testing::ShortSeedProcedure(); }
 
 sim::Scenario Clumsy(const std::string& name) {
   return sim::LoadScenario(std::string(ACCELCAL_SOURCE_DIR) + "/scenarios/" + name);
@@ -245,7 +239,7 @@ TEST(CaptureFlow, TheFinalScreenSaysTheVerdictTheNumbersAndTheFiles) {
 
 TEST(CaptureFlow, AFailedLimitIsNamedOnTheFinalScreen) {
   Procedure p = ShortProcedure();
-  p.limits.max_bias_sigma_counts = 1e-6;  // no bench meets it
+  p.limits.max_bias_U_counts = 1e-6;  // no bench meets it
   testing::WizardRig rig(p, Clumsy("clumsy_bump.toml"));
   const WizardView v = WholeSession(rig.engine).back();
   EXPECT_EQ(v.verdict, "FAIL");

@@ -76,6 +76,7 @@ void SetEquipment(const Procedure& p, ReportInputs* in) {
   const EquipmentAnswer edited = ApplyEquipmentAnswer(in->equipment_answer, p.equipment);
   in->equipment = edited.ok() ? edited.items : p.equipment;
   in->nominal_bias_counts = p.nominal.bias_counts;
+  in->nominal_scale_counts_per_mps2 = p.nominal.scale_counts_per_mps2;
 }
 
 void AddLimits(const ReportCommandOptions& o, ReportInputs* in) {

@@ -19,6 +19,7 @@ struct WizardCommandOptions {
   bool plain = false;               // line mode even on a terminal
   std::string place;                // offered at the welcome (the lab, the bench)
   GravitySpec gravity;
+  std::string gravity_flag;         // the gravity flag as given ("--latitude 0"); empty: none
 };
 
 // Runs the wizard to its end or until the operator leaves; returns the exit status.

@@ -2,6 +2,7 @@
 
 #include <fmt/core.h>
 
+#include "accelcal/app/refit_session.h"
 #include "accelcal/base/error.h"
 #include "accelcal/io/calibration_file.h"
 
@@ -23,6 +24,7 @@ ReportInputs ReportInputsFromJournal(const SessionJournal& journal, const std::s
     if (const auto answer = welcome->second.find("equipment"); answer != welcome->second.end())
       in.equipment_answer = answer->second;
   ReadAnalysesFromResultText(*result, source_name, &in);
+  in.meta.history = SessionHistory(journal, journal.ResultCount() - 1);
   return in;
 }
 

@@ -6,6 +6,7 @@
 
 #include "accelcal/app/analyze_recording.h"
 #include "accelcal/app/wizard/diagnosis_words.h"
+#include "accelcal/app/wizard/session_gaps.h"
 #include "accelcal/analysis/noise_analysis.h"
 #include "accelcal/app/noise_records.h"
 #include "accelcal/base/error.h"
@@ -156,6 +157,14 @@ StepOutcome CalibrationSteps::Diagnosis() {
   return out;
 }
 
+SessionGaps CalibrationSteps::GapsOf(const CalibrationOutcome& o, const Calibration& cal,
+                                     const SessionGaps& session_gaps) const {
+  SessionGaps gaps = session_gaps;
+  AddLeftOutByTheFit(procedure_, model_, cal, &gaps);
+  gaps.gravity_ambiguity = GravityAmbiguityNote(gravity_, o.diagnosis.adopted_names());
+  return gaps;
+}
+
 ReportInputs CalibrationSteps::Inputs(const Calibration& cal, const ReportMeta& meta,
                                       const SessionGaps& gaps) const {
   ReportInputs in;
@@ -167,6 +176,7 @@ ReportInputs CalibrationSteps::Inputs(const Calibration& cal, const ReportMeta& 
   in.limits = procedure_.limits;
   in.equipment = equipment_;
   in.nominal_bias_counts = procedure_.nominal.bias_counts;
+  in.nominal_scale_counts_per_mps2 = procedure_.nominal.scale_counts_per_mps2;
   in.gaps = gaps;
   return in;
 }
@@ -183,8 +193,7 @@ StepOutcome CalibrationSteps::Report(bool adopt_effects, const ReportMeta& meta,
     return out;
   }
   const Calibration cal = o.MakeCalibration(adopt);
-  SessionGaps gaps = session_gaps;
-  gaps.gravity_ambiguity = GravityAmbiguityNote(gravity_, o.diagnosis.adopted_names());
+  const SessionGaps gaps = GapsOf(o, cal, session_gaps);
   model_.RecordResult(SessionResultJsonText(cal, gaps));
   out.lines = SplitLines(FormatFitReport(cal, summary));
   const std::vector<std::string> gravity = WrapWords("Gravity: " + gravity_.Describe(), 78);
@@ -194,6 +203,10 @@ StepOutcome CalibrationSteps::Report(bool adopt_effects, const ReportMeta& meta,
   const ReportInputs in = Inputs(cal, meta, gaps);
   const ReportModel verdict = BuildReportModel(in);
   out.lines.push_back(fmt::format("Verdict: {}", VerdictToString(verdict.verdict)));
+  for (const LimitCheck& c : verdict.checks)
+    if (!c.pass)
+      for (const std::string& line : WrapWords("  not met: " + (c.why.empty() ? c.what : c.why), 78))
+        out.lines.push_back(line);
   for (const SessionGaps::Step& s : gaps.steps)
     for (const std::string& line : WrapWords(fmt::format("  missing: {} ({}{}): {}", s.title, s.id,
                                                          s.required ? ", required" : "", s.why), 78))
@@ -210,6 +223,7 @@ StepOutcome CalibrationSteps::Report(bool adopt_effects, const ReportMeta& meta,
     }
   }
   final_summary_ = BuildFinalSummary(verdict, paths);
+  out.details = final_summary_->details;
   return out;
 }
 
@@ -217,9 +231,8 @@ void CalibrationSteps::Recap(bool adopt_effects, const ReportMeta& meta, const S
   const CalibrationOutcome& o = Run();
   const bool adopt = adopt_effects && !o.diagnosis.adopted.empty();
   if (!o.Fit(adopt).IsUsable()) return;  // the report step said so; nothing to recap
-  SessionGaps gaps = session_gaps;
-  gaps.gravity_ambiguity = GravityAmbiguityNote(gravity_, o.diagnosis.adopted_names());
-  const ReportModel verdict = BuildReportModel(Inputs(o.MakeCalibration(adopt), meta, gaps));
+  const Calibration cal = o.MakeCalibration(adopt);
+  const ReportModel verdict = BuildReportModel(Inputs(cal, meta, GapsOf(o, cal, session_gaps)));
   final_summary_ = BuildFinalSummary(verdict, outputs_ != nullptr ? outputs_->ReportPaths()
                                                                  : std::vector<std::string>{});
 }

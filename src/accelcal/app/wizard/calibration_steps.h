@@ -69,6 +69,9 @@ class CalibrationSteps {
 
  private:
   const CalibrationOutcome& Run();
+  // The session's gaps for the calibration `cal` of `o`: `session_gaps` with the captures the
+  // fit left out and the gravity ambiguity of what the diagnosis found (adopted or not).
+  SessionGaps GapsOf(const CalibrationOutcome& o, const Calibration& cal, const SessionGaps& session_gaps) const;
   // What the report of `cal` is made from: the session's captures, inputs, limits, equipment.
   ReportInputs Inputs(const Calibration& cal, const ReportMeta& meta, const SessionGaps& gaps) const;
 

@@ -47,4 +47,23 @@ SessionGaps CollectSessionGaps(const Procedure& procedure, const SessionModel& m
   return gaps;
 }
 
+void AddLeftOutByTheFit(const Procedure& procedure, const SessionModel& model, const Calibration& cal,
+                        SessionGaps* gaps) {
+  for (const ProcedureStep& s : procedure.steps) {
+    const JournalCapture* c = IsCaptureKind(s.kind) ? model.CaptureOf(s.id) : nullptr;
+    if (c == nullptr) continue;
+    for (const CalibrationCapture& used : cal.captures) {
+      if (used.id != c->capture.id || used.used) continue;
+      const bool turntable = s.kind == StepKind::kTurntable;
+      const std::string title =
+          turntable ? fmt::format("{} at {:g} mm, {:g} rpm", s.title, c->capture.radius_m * 1000.0, c->capture.rpm)
+                    : s.title;
+      gaps->steps.push_back({s.id, title,
+                             fmt::format("its capture {} was left out by the fit: {}", used.id,
+                                         used.reason.empty() ? std::string("not stated") : used.reason),
+                             s.required});
+    }
+  }
+}
+
 }  // namespace accelcal

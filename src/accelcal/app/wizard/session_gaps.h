@@ -1,7 +1,8 @@
 // What a wizard session lacks that its procedure asked for, gathered for the report (report's
 // SessionGaps): the steps skipped, the steps whose capture was left out after it was accepted
-// (judged again against a lowered noise floor, and not captured again), and the identification
-// the procedure requires but the welcome left empty.
+// (judged again against a lowered noise floor, and not captured again, or left out by the fit:
+// a turntable run that disagrees with the other captures), and the identification the
+// procedure requires but the welcome left empty.
 #pragma once
 
 #include "accelcal/app/wizard/session_model.h"
@@ -14,5 +15,11 @@ namespace accelcal {
 inline constexpr const char* kWelcomeStepId = "welcome";
 
 SessionGaps CollectSessionGaps(const Procedure& procedure, const SessionModel& model);
+
+// The capture steps whose current capture the calibration `cal` leaves out (its screening, a
+// run that disagrees with the others: calibration_pipeline.h), added to `gaps`, each named by
+// what tells it apart from its like (a turntable run by its radius and speed, as entered).
+void AddLeftOutByTheFit(const Procedure& procedure, const SessionModel& model, const Calibration& cal,
+                        SessionGaps* gaps);
 
 }  // namespace accelcal

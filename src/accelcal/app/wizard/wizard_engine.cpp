@@ -13,6 +13,7 @@
 #include "accelcal/base/utc_time.h"
 #include "accelcal/acquire/source/bench_control.h"
 #include "accelcal/app/wizard/resume_summary.h"
+#include "accelcal/app/wizard/session_settings.h"
 #include "accelcal/app/wizard/session_gaps.h"
 
 namespace accelcal {
@@ -67,17 +68,18 @@ void WizardEngine::ReadJournal() {
     if (c.capture.kind == CaptureKind::kStatic && model_.LeftOutReason(c).empty() && !c.superseded())
       captured_.push_back({c.capture.id, c.capture.label, MeasuredUp(c.capture)});
   }
-  ReadGravity();
-  ReadEquipment();
-  RestoreNoiseFloor();
-  // A diagnosis decided in an earlier run: adopted effects go into the report.
-  for (const ProcedureStep& s : procedure_.steps)
-    if (s.kind == StepKind::kDiagnosis)
-      if (auto d = done.find(s.id); d != done.end()) adopt_effects_ = d->second.rfind("adopted", 0) == 0;
+  // What the session recorded that its calibration depends on (session_settings.h): the
+  // welcome's gravity and equipment, a lowered noise floor, a diagnosis decided in an earlier run.
+  const SessionSettings settings = ReadSessionSettings(procedure_, model_);
+  if (settings.gravity) gravity_ = *settings.gravity;
+  steps_.set_equipment(settings.equipment);
+  lowered_floor_ = settings.lowered_floor;
+  adopt_effects_ = settings.adopt_effects;
   resumed_ = !captures.empty() || !done.empty() || !model_.inputs().empty();
   if (!resumed_) return;
   resume_lines_.push_back(fmt::format("Resuming session {}: {} captures and {} steps already recorded.",
                                options_.session_name, captures.size(), done.size()));
+  resume_lines_.insert(resume_lines_.end(), options_.notes.begin(), options_.notes.end());
   // In the procedure's order, with the steps' titles (resume_summary.h).
   for (std::string& line : ResumeSummaryLines(procedure_, model_, kWelcomeStepId))
     resume_lines_.push_back(std::move(line));

@@ -88,6 +88,12 @@ struct WizardOptions {
   std::string report_beside = {};
   // The lab or bench offered at the welcome (may be empty): the report's "place".
   std::string default_place = {};
+  // The equipment answer offered at the welcome (equipment_input.h); empty: "keep" (the
+  // procedure's). The virtual bench offers its lab's (virtual_lab.h).
+  std::string default_equipment = {};
+  // Said on the first screen of a session resumed (or already finished): the command line's
+  // flags this run does not use, with what to do instead (app/refit_session.h).
+  std::vector<std::string> notes = {};
 
   std::string Validate() const;
 };
@@ -162,9 +168,6 @@ class WizardEngine final : public WizardDriver {
   // Noise floor (wizard_engine_capture.cpp).
   void OnQuietMeasured();
   void RecheckNoiseFloor(const Capture& latest);
-  void RestoreNoiseFloor();
-  // The gravity of the session: the welcome's answer (recorded), else the options'.
-  void ReadGravity();
   std::string CheckWelcomeAnswer(const std::string& key, const std::string& value);
   void Quit();
   void HandleWelcome(const Intent& intent);

@@ -2,49 +2,29 @@
 // leveling's two readings) and records, and what the operator's keys do while they run.
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 
 #include <fmt/core.h>
 #include <fmt/format.h>
 
 #include "accelcal/acquire/source/bench_control.h"
+#include "accelcal/acquire/source/discard_backlog.h"
 #include "accelcal/app/wizard/capture_messages.h"
 #include "accelcal/app/wizard/leveling.h"
 #include "accelcal/app/wizard/pose_setting.h"
+#include "accelcal/app/wizard/session_settings.h"
 #include "accelcal/app/wizard/wizard_engine.h"
 
 namespace accelcal {
 namespace {
-
-constexpr const char* kNoiseFloorStep = "noise_floor";
 
 bool NeedsSensor(StepKind kind) {
   return kind == StepKind::kStatic || kind == StepKind::kRecord || kind == StepKind::kTurntable ||
          kind == StepKind::kLevel;
 }
 
-std::string TriadText(const Eigen::Vector3d& v) {
-  return fmt::format("{:.6g} {:.6g} {:.6g}", v.x(), v.y(), v.z());
-}
-
-bool ParseTriad(const std::string& text, Eigen::Vector3d* v) {
-  std::istringstream in(text);
-  return static_cast<bool>(in >> (*v)[0] >> (*v)[1] >> (*v)[2]) && v->allFinite();
-}
-
 }  // namespace
 
 // ---- the noise floor ------------------------------------------------------------------------
-
-// A floor lowered in an earlier run stays: the captures were judged again with it.
-void WizardEngine::RestoreNoiseFloor() {
-  const auto inputs = model_.inputs().find(kNoiseFloorStep);
-  if (inputs == model_.inputs().end()) return;
-  const auto lowered = inputs->second.find("lowered_std_counts");
-  Eigen::Vector3d std_counts;
-  if (lowered != inputs->second.end() && ParseTriad(lowered->second, &std_counts))
-    lowered_floor_ = NoiseFloor{std_counts, "lowered in an earlier run"};
-}
 
 void WizardEngine::EnterPlace() {
   acq_.Stop();
@@ -72,7 +52,7 @@ void WizardEngine::OnQuietMeasured() {
   }
   problem_.clear();
   hint_.clear();
-  model_.RecordInput(kNoiseFloorStep, "std_counts", TriadText(floor_guard_.floor()->std_counts));
+  model_.RecordInput(kNoiseFloorStepId, "std_counts", TriadText(floor_guard_.floor()->std_counts));
   floor_lines_ = {"Noise floor: " + floor_guard_.Describe()};
   phase_ = Phase::kPlace;
 }
@@ -87,8 +67,8 @@ void WizardEngine::RecheckNoiseFloor(const Capture& latest) {
       used.push_back(&c.capture);
   const NoiseFloorRecheck r = floor_guard_.Recheck(latest, used);
   if (!r.lowered) return;
-  model_.RecordInput(kNoiseFloorStep, "lowered_std_counts", TriadText(r.after.std_counts));
-  model_.RecordInput(kNoiseFloorStep, "lowered", r.note);
+  model_.RecordInput(kNoiseFloorStepId, "lowered_std_counts", TriadText(r.after.std_counts));
+  model_.RecordInput(kNoiseFloorStepId, "lowered", r.note);
   lowered_floor_ = r.after;
   floor_lines_ = {"Noise floor: " + floor_guard_.Describe(), r.note};
   std::vector<std::string> again;
@@ -172,6 +152,7 @@ void WizardEngine::StartCaptureEngine() {
 // The operator says the sensor is in place (on the sim, this places it). A record resumed
 // after an interruption assumes the sensor was left where it was: it is not placed again.
 void WizardEngine::BeginCapture() {
+  DiscardBacklog(source_);  // judged are the samples taken after the answer, not before
   if (step().kind == StepKind::kRecord) {
     if (!RecordResumable()) PlaceOnBench();
     StartRecord();
@@ -330,6 +311,7 @@ void WizardEngine::HandleCaptureIntent(const Intent& intent) {
   switch (phase_) {
     case Phase::kQuietReady:
       if (accept || intent.kind == IntentKind::kRetry) {
+        DiscardBacklog(source_);
         acq_.MeasureNoiseFloor(SteadyNowS(), step().timeout_s);
         phase_ = Phase::kQuiet;
       }

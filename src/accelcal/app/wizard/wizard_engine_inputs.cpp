@@ -6,6 +6,7 @@
 #include "accelcal/app/wizard/gravity_input.h"
 #include "accelcal/app/wizard/quantity_input.h"
 #include "accelcal/app/wizard/session_gaps.h"
+#include "accelcal/app/wizard/session_settings.h"
 #include "accelcal/app/wizard/wizard_engine.h"
 
 namespace accelcal {
@@ -15,12 +16,10 @@ WizardEngine::WelcomeField WizardEngine::Welcome(int field) const {
     case 0: return {"device", "Device serial number", options_.default_device};
     case 1: return {"operator", "Operator", options_.default_operator};
     case 2: return {"place", "Place (lab, bench)", options_.default_place};
-    case 4:
-      return {"equipment",
-              "Equipment: " + DescribeEquipment(procedure_.equipment) +
-                  ". Enter keeps it; or change items: ruler id RUL-07 u 0.4; turntable u 0.3 "
-                  "(u in mm, %, deg)",
-              "keep"};
+    case 4: {
+      const EquipmentQuestionText q = EquipmentQuestion(procedure_.equipment, options_.default_equipment);
+      return {"equipment", q.label, q.default_answer};
+    }
     default:
       return {"gravity",
               "Local gravity: measured m/s^2 (9.78030 +- 0.00002), place (lat -34.9 alt 43), or "
@@ -29,27 +28,9 @@ WizardEngine::WelcomeField WizardEngine::Welcome(int field) const {
   }
 }
 
-// The gravity the session recorded at its welcome; the options' when it has none (a session
-// begun before the question was asked).
-void WizardEngine::ReadGravity() {
-  const auto welcome = model_.inputs().find(kWelcomeStepId);
-  if (welcome == model_.inputs().end()) return;
-  const auto answer = welcome->second.find("gravity");
-  if (answer == welcome->second.end()) return;
-  const GravityAnswer g = ParseGravityAnswer(answer->second);
-  if (g.ok()) gravity_ = g.gravity;
-}
-
 // The equipment the session recorded at its welcome (the procedure's, edited); the procedure's
 // when it has none.
-void WizardEngine::ReadEquipment() {
-  const auto welcome = model_.inputs().find(kWelcomeStepId);
-  if (welcome == model_.inputs().end()) return;
-  const auto answer = welcome->second.find("equipment");
-  if (answer == welcome->second.end()) return;
-  const EquipmentAnswer edited = ApplyEquipmentAnswer(answer->second, procedure_.equipment);
-  if (edited.ok()) steps_.set_equipment(edited.items);
-}
+void WizardEngine::ReadEquipment() { steps_.set_equipment(ReadSessionSettings(procedure_, model_).equipment); }
 
 // Empty when `value` answers `key`; else why not.
 std::string WizardEngine::CheckWelcomeAnswer(const std::string& key, const std::string& value) {
@@ -90,6 +71,7 @@ void WizardEngine::HandleWelcome(const Intent& intent) {
   input_error_.clear();
   // The gravity as it reads back (a resume parses it again).
   if (std::string(field.key) == "gravity") value = GravityAnswerText(gravity_);
+  if (std::string(field.key) == "equipment") value = EquipmentAnswerOver(field.default_value, value);
   model_.RecordInput(kWelcomeStepId, field.key, value);
   if (std::string(field.key) == "equipment") ReadEquipment();
   if (welcome_field_ + 1 < WelcomeFields()) {

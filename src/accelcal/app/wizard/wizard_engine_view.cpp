@@ -273,6 +273,8 @@ void WizardEngine::SetDoneView(WizardView& v) const {
     // The verdict is the summary's first line; the prompt does not say it again.
     if (resumed_ && !progressed_) v.prompt = "Calibration complete (in an earlier run): nothing left to do.";
     v.lines = summary->lines;
+    // The flags this run did not use, and what would (a refit), before the summary.
+    if (resumed_ && !progressed_) v.lines.insert(v.lines.begin(), options_.notes.begin(), options_.notes.end());
   }
 }
 

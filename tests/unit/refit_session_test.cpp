@@ -1,0 +1,84 @@
+// `accelcal refit`'s use case (issue 27, item 5): a finished session fitted again with a
+// corrected gravity; the earlier result kept, the change recorded, a refused value refused
+// before anything is recorded; and the flags a resumed wizard does not use, named.
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "accelcal/app/refit_session.h"
+#include "accelcal/base/error.h"
+#include "accelcal/io/scenario_file.h"
+#include "test_support.h"
+#include "wizard_test_support.h"
+
+namespace accelcal {
+namespace {
+
+using testing::Contains;
+
+// A lab at the equator that took the standard gravity: the session ends FAIL.
+std::shared_ptr<SessionJournal> FinishedOnTheStandardGravity() {
+  std::shared_ptr<SessionJournal> journal(MakeMemoryJournal());
+  testing::WizardRig rig(testing::ShortSeedProcedure(),
+                         sim::LoadScenario(std::string(ACCELCAL_SOURCE_DIR) + "/scenarios/clumsy_local_gravity.toml"),
+                         journal);
+  testing::AcceptUntil(rig.engine, testing::Never);
+  EXPECT_EQ(rig.engine.View().verdict, "FAIL");
+  return journal;
+}
+
+RefitRequest Request() {
+  RefitRequest r;
+  r.session_name = "s.db";
+  r.source = "sim";
+  r.now_utc = "2026-11-27T10:00:00Z";
+  return r;
+}
+
+TEST(RefitSession, ACorrectedGravityIsFittedAgainAndTheEarlierResultKept) {
+  const std::shared_ptr<SessionJournal> journal = FinishedOnTheStandardGravity();
+  EXPECT_EQ(journal->ResultCount(), 1);
+  const std::string first = *journal->Result();
+  RefitRequest r = Request();
+  r.gravity = GravitySpec::Given(9.7803, 1e-5);
+  const RefitOutcome out = RefitSession(*journal, testing::ShortSeedProcedure(), r);
+  EXPECT_EQ(out.refit_step, "refit 1");
+  EXPECT_EQ(out.changes, std::vector<std::string>{"gravity: standard -> 9.7803 +- 1e-05"});
+  EXPECT_EQ(out.earlier_results, 1);
+  EXPECT_EQ(out.summary.verdict, Verdict::kPass);
+  EXPECT_EQ(journal->ResultCount(), 2);
+  EXPECT_NE(*journal->Result(), first);
+  const auto inputs = journal->Inputs();
+  EXPECT_EQ(inputs.at("welcome").at("gravity"), "9.7803 +- 1e-05");
+  EXPECT_EQ(inputs.at("refit 1").at("change 1"), "gravity: standard -> 9.7803 +- 1e-05");
+  EXPECT_EQ(journal->DoneSteps().at("refit 1"), "recorded");
+  const std::vector<std::string> history = SessionHistory(*journal, journal->ResultCount() - 1);
+  ASSERT_EQ(history.size(), 2u);
+  EXPECT_EQ(history[0], "refit 1 (2026-11-27T10:00:00Z): gravity: standard -> 9.7803 +- 1e-05");
+  EXPECT_EQ(history[1], "1 earlier calibration is kept in the session; this is the latest");
+  // A wizard run on the session with a gravity flag: named, not silently ignored.
+  const std::vector<std::string> notes = UnusedResumeFlags(*journal, "s.db", "--latitude 0", "");
+  ASSERT_EQ(notes.size(), 1u);
+  EXPECT_TRUE(Contains(notes[0], "--latitude 0 ignored: this session's gravity was recorded at its welcome "
+                                 "(9.7803 +- 1e-05); to calibrate it with another: accelcal refit s.db --latitude 0"))
+      << notes[0];
+  EXPECT_TRUE(UnusedResumeFlags(*MakeMemoryJournal(), "new.db", "--latitude 0", "Lab 2").empty());
+}
+
+TEST(RefitSession, ARefusedValueRecordsNothing) {
+  const std::shared_ptr<SessionJournal> journal = FinishedOnTheStandardGravity();
+  const auto inputs = journal->Inputs();
+  RefitRequest r = Request();
+  r.equipment_answer = "hammer id 3";
+  EXPECT_THROW(RefitSession(*journal, testing::ShortSeedProcedure(), r), Error);
+  r = Request();
+  r.device = "";  // the seed procedure requires the serial
+  EXPECT_THROW(RefitSession(*journal, testing::ShortSeedProcedure(), r), Error);
+  EXPECT_EQ(journal->ResultCount(), 1);
+  EXPECT_EQ(journal->Inputs(), inputs);
+  // Nothing to refit in a session without a calibration.
+  EXPECT_THROW(RefitSession(*MakeMemoryJournal(), testing::ShortSeedProcedure(), Request()), Error);
+}
+
+}  // namespace
+}  // namespace accelcal
