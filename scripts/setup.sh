@@ -1,19 +1,28 @@
 #!/usr/bin/env bash
 # Installs the Debian packages accelcal needs, only those missing. Debian/Ubuntu, as root or
 # with sudo. Safe to run again.
-#   setup.sh            what building, running and testing need
+#   setup.sh            what building, running, packaging and testing need
 #   setup.sh --no-test  only what building and running need
+#   setup.sh --package  what building, running and packaging (scripts/package.sh) need
 set -euo pipefail
 
+# lowdown writes the file formats' manual pages from their Markdown (cmake/man_pages.cmake).
 packages=(
-  g++ cmake make pkg-config tmux jq
+  g++ cmake make pkg-config tmux jq lowdown
   libeigen3-dev libnlopt-cxx-dev libncurses-dev libsqlite3-dev libtomlplusplus-dev
   nlohmann-json3-dev libcli11-dev libfmt-dev libgtest-dev libbenchmark-dev
 )
+# The .deb: CPack asks dpkg-shlibdeps (dpkg-dev), which asks file(1), for its Depends.
+package_packages=(dpkg-dev file)
 # Only the tests need these: headless Chromium renders the HTML report and prints it to PDF,
-# poppler-utils reads the PDF's pages back (tests/e2e/report_html.sh).
-test_packages=(chromium poppler-utils)
-[ "${1:-}" = "--no-test" ] || packages+=("${test_packages[@]}")
+# poppler-utils reads the PDF's pages back (tests/e2e/report_html.sh); man-db's man reads the
+# manual pages (tests/e2e/man_pages.sh, package_deb.sh).
+test_packages=(chromium poppler-utils man-db)
+case "${1:-}" in
+  --no-test) ;;
+  --package) packages+=("${package_packages[@]}") ;;
+  *) packages+=("${package_packages[@]}" "${test_packages[@]}") ;;
+esac
 
 missing=()
 for p in "${packages[@]}"; do

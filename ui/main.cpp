@@ -10,9 +10,22 @@
 #include "accelcal/base/version.h"
 #include "accelcal/base/error.h"
 #include "accelcal/base/safe_text.h"
+#include "cli/cli_checks.h"
 #include "cli/commands.h"
 #include "cli/usage_errors.h"
 #include "cli/wizard.h"
+#include "git_description.h"
+
+namespace {
+
+// "0.1.0 (git 68dabc6)": the release and, when built from a checkout, the commit.
+std::string VersionText() {
+  std::string version = accelcal::kAccelcalVersion;
+  if (*accelcal::kGitDescription != '\0') version += std::string(" (git ") + accelcal::kGitDescription + ")";
+  return version;
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{
@@ -21,11 +34,22 @@ int main(int argc, char** argv) {
       "With no subcommand: the guided wizard on the virtual bench, in a new session.\n\n"
       "Example:\n"
       "  accelcal wizard --source serial:/dev/ttyUSB0@115200 --session bench.db\n"
-      "  accelcal simulate scenarios/bench_default.toml -o captures.csv\n"
+      "  accelcal simulate bench_default -o captures.csv\n"
       "  accelcal fit captures.csv -o cal.json\n"
       "  accelcal apply cal.json < raw.txt > calibrated.txt",
       "accelcal"};
-  app.set_version_flag("--version", std::string("accelcal ") + accelcal::kAccelcalVersion);
+  app.footer(
+      "Each command's options: accelcal COMMAND --help, or man accelcal-COMMAND.\n"
+      "Files:\n"
+      "  The procedures and virtual-bench scenarios shipped with accelcal are in share/accelcal/\n"
+      "  beside the program (/usr/share/accelcal/procedures, .../scenarios); one is named by its\n"
+      "  file name alone (--procedure noise.toml, --scenario clumsy_bump). Sessions go to\n"
+      "  $XDG_DATA_HOME/accelcal/sessions (~/.local/share/accelcal/sessions).\n"
+      "Exit status:\n"
+      "  0 done (also --help and --version); 1 the job failed or its input was refused (a file\n"
+      "  missing or unreadable, a refused value, a source that is not there); 2 the command line\n"
+      "  is wrong.");
+  app.set_version_flag("--version", "accelcal " + VersionText());
   app.require_subcommand(0, 1);
   accelcal::cli::SetupFitCommand(app);
   accelcal::cli::SetupApplyCommand(app);
@@ -40,6 +64,8 @@ int main(int argc, char** argv) {
   accelcal::cli::SetupWizardCommand(app);
   accelcal::cli::SetupAllanCommand(app);
   accelcal::cli::SetupNoiseCommand(app);
+  accelcal::cli::SetupHelpCommands(app, "accelcal " + VersionText());  // last: it walks the others
+  accelcal::cli::RefuseNegativeWholeNumbers(app);
 
   try {
     app.parse(argc, argv);

@@ -34,6 +34,33 @@ grep -q "did you mean sessions?" err || { cat err; fail "no suggestion for the s
 expect 2 "$accelcal" wizard --frobnicate
 grep -q "did you mean" err && fail "a suggestion for a word near nothing: $(cat err)"
 
+# CLI11's own texts never reach the technician (issue 35): each refusal in our words, one line.
+: > cal.json
+expect_words() {  # expect_words WORDS CMD...: usage (2), stderr's first line exactly WORDS
+  local words=$1; shift
+  expect 2 "$@"
+  [ "$(head -1 "$work/err")" = "accelcal: error: $words" ] || { cat "$work/err"; fail "'$*': not '$words'"; }
+  if grep -Eq "At Most|At least|required but|is required|Could not convert|not expected|not in \{|excludes|requires|disallowed|Should be" "$work/err"; then
+    cat "$work/err"; fail "'$*': CLI11's raw text"
+  fi
+}
+expect_words "--speed is given twice (20 and 1): give it once" "$accelcal" wizard --speed 20 --speed 1
+expect_words "--speed needs a number after it" "$accelcal" wizard --speed
+expect_words "--seed: must be a whole number, 0 or more, not -3" "$accelcal" wizard --seed -3
+expect_words "--seed: 'x1' is not a whole number, 0 or more" "$accelcal" record --source sim -o r.txt --seed x1
+expect_words "accelcal simulate needs its scenario: Scenario file (TOML), or a shipped one's name" "$accelcal" simulate
+expect_words "accelcal export-cal needs --to: Target format (one of c-header, ardupilot, px4, kalibr or csv)" \
+  "$accelcal" export-cal cal.json
+expect_words "--to: 'xml' is not one of c-header, ardupilot, px4, kalibr or csv" "$accelcal" export-cal cal.json --to xml
+expect_words "--px4-device-id: 'abc' is not a whole number" "$accelcal" export-cal cal.json --to px4 --px4-device-id abc
+expect_words "accelcal wizard does not take 'foo'" "$accelcal" wizard foo
+expect_words "accelcal wizard has no option '--frobnicate'" "$accelcal" wizard --frobnicate
+expect_words "'bogus' is not a command of accelcal" "$accelcal" bogus
+expect_words "--gravity and --latitude cannot be given together" "$accelcal" wizard --gravity 9.8 --latitude 45
+expect_words "--altitude needs --latitude too" "$accelcal" wizard --altitude 10
+expect_words "--plain is a switch: it takes no value (or true/false)" "$accelcal" wizard --plain=maybe
+[ ! -e r.txt ] || fail "a recording for a refused command line"
+
 # A missing input file is bad input (1), whichever command names it, in one line.
 expect 1 "$accelcal" fit missing.csv
 grep -q "^accelcal: error: no such file: missing.csv$" err || { cat err; fail "fit missing.csv"; }

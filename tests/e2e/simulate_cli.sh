@@ -92,6 +92,11 @@ set -e
 # Help says what it does and gives an example.
 help=$("$accelcal" simulate --help)
 grep -q 'virtual-bench scenario' <<< "$help" || fail "help does not say what simulate does"
-grep -q 'accelcal simulate scenarios/bench_default.toml' <<< "$help" || fail "help has no example"
+grep -q 'accelcal simulate bench_default' <<< "$help" || fail "help has no example"
+# The example's form: a shipped scenario named by its name alone, from any directory.
+(cd "$work" && "$accelcal" simulate bench_default --seed 7 -o by_name.csv 2> /dev/null) ||
+  fail "simulate bench_default failed"
+"$accelcal" simulate "$source_dir/scenarios/bench_default.toml" --seed 7 -o "$work/by_path.csv" 2> /dev/null
+cmp -s "$work/by_name.csv" "$work/by_path.csv" || fail "bench_default is not the shipped scenario"
 
 echo "simulate_cli: ok"

@@ -1,5 +1,6 @@
 #include "cli/cli_checks.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <filesystem>
@@ -52,6 +53,40 @@ CLI::Validator InputFile() {
         return "";
       },
       "FILE", "InputFile");
+}
+
+std::vector<std::string> SplitAt(std::string_view text, char separator) {
+  std::vector<std::string> pieces;
+  size_t from = 0;
+  while (from <= text.size()) {
+    const size_t end = std::min(text.find(separator, from), text.size());
+    if (end > from) pieces.emplace_back(text.substr(from, end - from));
+    from = end + 1;
+  }
+  return pieces;
+}
+
+std::vector<std::string> OptionChoices(const CLI::Option& option) {
+  const std::string type = option.get_type_name();
+  const size_t open = type.find('{');
+  const size_t close = type.find('}', open);
+  if (open == std::string::npos || close == std::string::npos) return {};
+  return SplitAt(std::string_view(type).substr(open + 1, close - open - 1), ',');
+}
+
+void RefuseNegativeWholeNumbers(CLI::App& app) {
+  const CLI::Validator whole(
+      [](std::string& text) -> std::string {
+        return text.find('-') == std::string::npos
+                   ? ""
+                   : fmt::format("must be a whole number, 0 or more, not {}", text);
+      },
+      "", "WholeNumber");
+  for (CLI::Option* opt : app.get_options()) {
+    const std::string type = opt->get_type_name();
+    if (type.substr(0, type.find(':')) == "UINT") opt->check(whole);
+  }
+  for (CLI::App* sub : app.get_subcommands([](CLI::App*) { return true; })) RefuseNegativeWholeNumbers(*sub);
 }
 
 }  // namespace accelcal::cli

@@ -5,6 +5,8 @@
 #pragma once
 
 #include <string>
+#include <string_view>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 
@@ -18,5 +20,17 @@ CLI::Validator Positive();
 // lets any exception other than its ValidationError pass through its validators, so main
 // reports it as bad input.
 CLI::Validator InputFile();
+
+// The values an IsMember check of `option` allows, as --help shows them in its type
+// ("TEXT:{text,json}" -> text, json); empty without one.
+std::vector<std::string> OptionChoices(const CLI::Option& option);
+
+// `text` cut at each `separator`, empty pieces left out: "a,,b" -> a, b.
+std::vector<std::string> SplitAt(std::string_view text, char separator);
+
+// Every option of `app` and its subcommands that holds an unsigned number refuses a negative one
+// ("must be a whole number, 0 or more, not -3"): CLI11 reads "-3" into an unsigned as 2^64 - 3,
+// silently. Call once every command is set up.
+void RefuseNegativeWholeNumbers(CLI::App& app);
 
 }  // namespace accelcal::cli

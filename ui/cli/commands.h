@@ -6,6 +6,8 @@
 // and exits 1); bad usage is CLI11's (exit 2).
 #pragma once
 
+#include <string>
+
 #include <CLI/CLI.hpp>
 
 namespace accelcal::cli {
@@ -23,5 +25,8 @@ void SetupRefitCommand(CLI::App& app);
 void SetupWizardCommand(CLI::App& app);
 void SetupAllanCommand(CLI::App& app);
 void SetupNoiseCommand(CLI::App& app);
+// The hidden commands that write the manual pages and the completion from `app` (set up last,
+// after every other command; help_commands.cpp). `version` goes into the pages.
+void SetupHelpCommands(CLI::App& app, const std::string& version);
 
 }  // namespace accelcal::cli

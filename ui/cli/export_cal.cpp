@@ -23,6 +23,7 @@
 #include "cli/cli_checks.h"
 #include "cli/commands.h"
 #include "cli/output.h"
+#include "cli/shipped_files.h"
 
 namespace accelcal::cli {
 namespace {
@@ -180,6 +181,7 @@ void SetupExportCalCommand(CLI::App& app) {
       ->expected(1, 3);
   sub->add_option("--procedure", opts->procedure_path,
                   "ardupilot/px4: take the nominal scale and zero-g level from a procedure's [sensor]")
+      ->transform(ShippedFile(kShippedProcedures))
       ->check(InputFile());
   sub->add_option("--px4-device-id", opts->px4_device_id, "px4: CAL_ACC0_ID, the sensor's device id on the autopilot");
   sub->add_option("--allan", opts->allan_path, "kalibr: Allan analysis file (accelcal allan -o)")

@@ -21,6 +21,7 @@
 #include "cli/commands.h"
 #include "cli/output.h"
 #include "cli/sample_format_flags.h"
+#include "cli/shipped_files.h"
 
 namespace accelcal::cli {
 namespace {
@@ -123,7 +124,8 @@ void SetupNoiseCommand(CLI::App& app) {
   sub->add_option("--sessions-dir", opts->sessions_dir,
                   "Session directory (default: $XDG_DATA_HOME/accelcal/sessions)");
   sub->add_option("--procedure", opts->procedure_path,
-                  "The noise procedure whose sessions count (default: procedures/noise.toml)");
+                  "The noise procedure whose sessions count (default: procedures/noise.toml)")
+      ->transform(ShippedFile(kShippedProcedures));
   sub->add_option("--calibration", opts->calibration_path,
                   "Calibration file (JSON): results in m/s^2 instead of counts");
   opts->format.Bind(*sub, "the --record files");

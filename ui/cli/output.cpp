@@ -4,6 +4,7 @@
 
 #include "accelcal/base/error.h"
 #include "accelcal/io/atomic_write.h"
+#include "cli/shipped_files.h"
 
 namespace accelcal::cli {
 
@@ -18,7 +19,7 @@ void WriteOutputText(const std::string& path, const std::string& text) {
 }
 
 std::string ShippedProcedurePath(const std::string& file_name) {
-  return std::string(ACCELCAL_PROCEDURES_DIR) + "/" + file_name;
+  return (ShippedDir(kShippedProcedures) / file_name).string();
 }
 
 }  // namespace accelcal::cli

@@ -20,6 +20,7 @@
 #include "cli/cli_checks.h"
 #include "cli/commands.h"
 #include "cli/sample_format_flags.h"
+#include "cli/shipped_files.h"
 #include "accelcal/io/scenario_file.h"
 
 namespace accelcal::cli {
@@ -198,7 +199,8 @@ void SetupRecordCommand(CLI::App& app) {
                   "sim: simulated seconds per wall second (1 real time; 0 as fast as possible)")
       ->capture_default_str();
   sub->add_option("--scenario", opts->scenario_path,
-                  "sim: scenario file (TOML); default: the built-in bench_default");
+                  "sim: scenario file (TOML), or a shipped one's name; default: the built-in bench_default")
+      ->transform(ShippedFile(kShippedScenarios));
   sub->add_option("--seed", opts->source.seed, "sim: random seed, overriding the scenario's");
   sub->add_flag("--realtime", opts->source.realtime,
                 "file: replay paced by t instead of as fast as possible");

@@ -24,6 +24,7 @@
 #include "accelcal/session/session_store.h"
 #include "cli/commands.h"
 #include "cli/output.h"
+#include "cli/shipped_files.h"
 
 namespace accelcal::cli {
 namespace {
@@ -155,7 +156,8 @@ void SetupReportCommand(CLI::App& app) {
   sub->add_option("--noise", opts->noise_path, "Noise analysis (JSON) to include");
   sub->add_option("--procedure", opts->procedure_path,
                   "Procedure whose [limits] decide pass/fail (default: the seed procedure, when "
-                  "the session ran it)");
+                  "the session ran it)")
+      ->transform(ShippedFile(kShippedProcedures));
   sub->callback([opts] { RunReport(*opts); });
 }
 

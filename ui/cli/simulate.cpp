@@ -13,6 +13,7 @@
 #include "accelcal/acquire/sim/scenario.h"
 #include "accelcal/acquire/sim/virtual_bench.h"
 #include "cli/commands.h"
+#include "cli/shipped_files.h"
 #include "accelcal/io/scenario_file.h"
 
 namespace accelcal::cli {
@@ -90,14 +91,16 @@ void SetupSimulateCommand(CLI::App& app) {
   CLI::App* sub = app.add_subcommand(
       "simulate",
       "Run a virtual-bench scenario (a simulated accelerometer on a simulated bench: static\n"
-      "poses and turntable runs, see scenarios/*.toml) and write the capture set it records,\n"
+      "poses and turntable runs; the shipped ones in share/accelcal/scenarios) and write the capture set it records,\n"
       "as `accelcal fit` reads it, or one continuous hand-turned recording of its static poses.");
   sub->footer(
       "Examples:\n"
-      "  accelcal simulate scenarios/bench_default.toml -o captures.csv --truth truth.json\n"
-      "  accelcal simulate scenarios/bench_default.toml --seed 42 | head\n"
+      "  accelcal simulate bench_default -o captures.csv --truth truth.json\n"
+      "  accelcal simulate bench_default.toml --seed 42 | head\n"
       "  accelcal simulate static_only.toml --recording -o recording.txt");
-  sub->add_option("scenario", options->scenario_path, "Scenario file (TOML)")->required();
+  sub->add_option("scenario", options->scenario_path, "Scenario file (TOML), or a shipped one's name")
+      ->required()
+      ->transform(ShippedFile(kShippedScenarios));
   sub->add_option("-o,--output", options->output_path,
                   "Output file; '-' or absent: standard output");
   sub->add_flag("--recording", options->recording,

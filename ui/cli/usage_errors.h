@@ -24,6 +24,13 @@ std::string NearestName(std::string_view typed, const std::vector<std::string>& 
 // "fit"), for NearestName.
 std::vector<std::string> KnownNames(const CLI::App& app);
 
+// CLI11's message for `e` in our words: the option or argument as typed, what it takes and what
+// was wrong ("--speed is given twice (20 and 1): give it once", "--speed needs a number after
+// it", "accelcal simulate needs its scenario: ..."), for every parse error CLI11 raises at a
+// command line; a message already in our words (our validators') is kept.
+std::string PlainUsageMessage(const CLI::App& app, const CLI::ParseError& e,
+                              const std::vector<std::string>& args);
+
 // Prints `e` as above (help and version as CLI11 prints them) and returns the exit status: 0 for
 // help and version, kExitUsage otherwise.
 int ReportParseError(const CLI::App& app, const CLI::ParseError& e, const std::vector<std::string>& args);

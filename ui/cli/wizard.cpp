@@ -24,6 +24,7 @@
 #include "cli/terminal_answers.h"
 #include "cli/gravity_options.h"
 #include "cli/wizard_journal.h"
+#include "cli/shipped_files.h"
 #include "frontend.h"
 
 namespace accelcal::cli {
@@ -105,9 +106,13 @@ void SetupWizardCommand(CLI::App& app) {
       ->check(NonNegative());
   sub->add_option("--seed", options->seed, "sim: random seed, overriding the scenario's");
   sub->add_option("--scenario", options->scenario_path,
-                  "sim: virtual-bench scenario (TOML); default: the built-in default bench");
+                  "sim: virtual-bench scenario (TOML), or a shipped one's name (clumsy_bump); default: "
+                  "the built-in default bench")
+      ->transform(ShippedFile(kShippedScenarios));
   sub->add_option("--procedure", options->procedure_path,
-                  "Procedure file (TOML); default: procedures/seed_calibration.toml");
+                  "Procedure file (TOML), or a shipped one's name (noise.toml); default: the shipped "
+                  "seed_calibration.toml")
+      ->transform(ShippedFile(kShippedProcedures));
   sub->add_option("--place", options->place, "The lab or bench, offered at the welcome (for the report)");
   sub->add_option("--session", options->session_path,
                   "Session file: created when new, resumed when it exists (default: a new one)");
