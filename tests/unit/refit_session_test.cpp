@@ -27,7 +27,7 @@ std::shared_ptr<SessionJournal> FinishedOnTheStandardGravity() {
   return journal;
 }
 
-RefitRequest Request() {
+RefitRequest BaseRefitRequest() {
   RefitRequest r;
   r.session_name = "s.db";
   r.source = "sim";
@@ -39,7 +39,7 @@ TEST(RefitSession, ACorrectedGravityIsFittedAgainAndTheEarlierResultKept) {
   const std::shared_ptr<SessionJournal> journal = FinishedOnTheStandardGravity();
   EXPECT_EQ(journal->ResultCount(), 1);
   const std::string first = *journal->Result();
-  RefitRequest r = Request();
+  RefitRequest r = BaseRefitRequest();
   r.gravity = GravitySpec::Given(9.7803, 1e-5);
   const RefitOutcome out = RefitSession(*journal, testing::ShortSeedProcedure(), r);
   EXPECT_EQ(out.refit_step, "refit 1");
@@ -68,16 +68,16 @@ TEST(RefitSession, ACorrectedGravityIsFittedAgainAndTheEarlierResultKept) {
 TEST(RefitSession, ARefusedValueRecordsNothing) {
   const std::shared_ptr<SessionJournal> journal = FinishedOnTheStandardGravity();
   const auto inputs = journal->Inputs();
-  RefitRequest r = Request();
+  RefitRequest r = BaseRefitRequest();
   r.equipment_answer = "hammer id 3";
   EXPECT_THROW(RefitSession(*journal, testing::ShortSeedProcedure(), r), Error);
-  r = Request();
+  r = BaseRefitRequest();
   r.device = "";  // the seed procedure requires the serial
   EXPECT_THROW(RefitSession(*journal, testing::ShortSeedProcedure(), r), Error);
   EXPECT_EQ(journal->ResultCount(), 1);
   EXPECT_EQ(journal->Inputs(), inputs);
   // Nothing to refit in a session without a calibration.
-  EXPECT_THROW(RefitSession(*MakeMemoryJournal(), testing::ShortSeedProcedure(), Request()), Error);
+  EXPECT_THROW(RefitSession(*MakeMemoryJournal(), testing::ShortSeedProcedure(), BaseRefitRequest()), Error);
 }
 
 }  // namespace

@@ -109,7 +109,7 @@ TEST(Verdict, AGoodLabPassesAndEveryLimitAgreesWithTheBudget) {
 
 // A synthetic budget: type A 1, radius 3 (u 0.5 mm), speed 2 (u 0.2 %), all in the parameter's
 // unit; k = 2: U = 2 sqrt(14) = 7.48.
-ParameterBudget Synthetic() {
+ParameterBudget SyntheticBudget() {
   ParameterBudget p;
   p.index = kMisZY;
   p.name = "a_zy";
@@ -127,23 +127,23 @@ TEST(Verdict, TheRemedyBringsUUnderTheLimit) {
   // Limit 5: u_c must come to 2.5 (6.25 squared). Taken are the largest parts until the rest is
   // under half of that: without the radius 5 is left, without the speed too 1. Both scaled by
   // f: 1 + 13 f^2 = 6.25, f = 0.6355: the radius to 0.318 mm, the speed to 0.127 %.
-  const std::string why = UncertaintyRemedy(Synthetic(), 5.0, 1.0, "x");
+  const std::string why = UncertaintyRemedy(SyntheticBudget(), 5.0, 1.0, "x");
   EXPECT_TRUE(Contains(why, "U(a_zy) = 7.5 x > 5.0 x")) << why;
   EXPECT_TRUE(Contains(why, "the radius (u 0.50 mm) gives 6.0 x")) << why;
   EXPECT_TRUE(Contains(why, "the turntable speed (u 0.20 %) gives 4.0 x")) << why;
   EXPECT_TRUE(Contains(why, "measure the radius to 0.31 mm or better and check the turntable's speed to 0.12 % "
                             "or better")) << why;
   // Limit 7 (12.25): without the radius 5 is left, under half: the radius alone, f = 0.8975.
-  const std::string radius_only = UncertaintyRemedy(Synthetic(), 7.0, 1.0, "x");
+  const std::string radius_only = UncertaintyRemedy(SyntheticBudget(), 7.0, 1.0, "x");
   EXPECT_TRUE(Contains(radius_only, "measure the radius to 0.44 mm or better")) << radius_only;
   EXPECT_FALSE(Contains(radius_only, "check the turntable's speed")) << radius_only;
   // Limit 3 (u_c 1.5): both, each scaled by f = sqrt(2.25 - 1) / sqrt(13) = 0.31.
-  const std::string both = UncertaintyRemedy(Synthetic(), 3.0, 1.0, "x");
+  const std::string both = UncertaintyRemedy(SyntheticBudget(), 3.0, 1.0, "x");
   EXPECT_TRUE(Contains(both, "measure the radius to 0.15 mm or better and check the turntable's speed to "
                              "0.062 % or better")) << both;
   // Limit 2: the captures' own scatter (u 1, U 2) is already at it.
-  EXPECT_TRUE(Contains(UncertaintyRemedy(Synthetic(), 2.0, 1.0, "x"), "the captures' own scatter alone"));
-  EXPECT_EQ(UncertaintyRemedy(Synthetic(), 8.0, 1.0, "x"), "");
+  EXPECT_TRUE(Contains(UncertaintyRemedy(SyntheticBudget(), 2.0, 1.0, "x"), "the captures' own scatter alone"));
+  EXPECT_EQ(UncertaintyRemedy(SyntheticBudget(), 8.0, 1.0, "x"), "");
 }
 
 // The tolerance on a value: simple acceptance compares the value as found; a guard band

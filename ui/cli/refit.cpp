@@ -14,6 +14,7 @@
 #include "cli/commands.h"
 #include "cli/gravity_options.h"
 #include "cli/output.h"
+#include "cli/shipped_files.h"
 
 namespace accelcal::cli {
 namespace {
@@ -93,7 +94,9 @@ void SetupRefitCommand(CLI::App& app) {
   sub->add_option("--operator", opts->operator_name, "The operator");
   sub->add_option("--place", opts->place, "The lab or bench");
   sub->add_option("--procedure", opts->procedure_path,
-                  "The procedure file the session ran (default: the seed procedure, when it is the one)");
+                  "The procedure file the session ran, or a shipped one's name (default: the seed "
+                  "procedure, when it is the one)")
+      ->transform(ShippedFile(kShippedProcedures));
   sub->callback([opts, gravity] { RunRefit(*opts, *gravity); });
 }
 

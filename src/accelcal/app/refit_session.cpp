@@ -76,7 +76,7 @@ std::vector<Change> Changes(const Inputs& inputs, const Procedure& procedure, co
   return out;
 }
 
-std::string Describe(const Change& c) {
+std::string ChangeText(const Change& c) {
   return fmt::format("{}: {} -> {}", c.key, c.before.empty() ? "(none)" : c.before, c.after.empty() ? "(none)" : c.after);
 }
 
@@ -90,7 +90,7 @@ RefitOutcome RefitSession(SessionJournal& journal, const Procedure& procedure, c
   RefitOutcome out;
   out.earlier_results = journal.ResultCount();
   const std::vector<Change> changes = Changes(model.inputs(), procedure, request);
-  for (const Change& c : changes) out.changes.push_back(Describe(c));
+  for (const Change& c : changes) out.changes.push_back(ChangeText(c));
 
   // The session's settings with the corrections, checked before anything is recorded: a fit
   // that is not usable records nothing.

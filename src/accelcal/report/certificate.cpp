@@ -148,7 +148,7 @@ std::string DecisionRuleText(const std::optional<ProcedureLimits>& limits) {
   return out;
 }
 
-std::string Failed(const LimitCheck& c) {
+std::string NotMet(const LimitCheck& c) {
   if (c.on_uncertainty) return "cannot show conformity: " + (c.why.empty() ? c.what : c.why);
   if (!c.why.empty()) return c.why;
   return fmt::format("{} {:.4g}{} {} {:.4g}", c.what, c.value, c.unit.empty() ? "" : " " + c.unit,
@@ -163,7 +163,7 @@ std::string Conformity(const ReportModel& m) {
     case Verdict::kFail: {
       std::vector<std::string> failed;
       for (const LimitCheck& c : m.checks)
-        if (!c.pass) failed.push_back(Failed(c));
+        if (!c.pass) failed.push_back(NotMet(c));
       return fmt::format("Does not conform: {}.", fmt::join(failed, "; "));
     }
     case Verdict::kIncomplete:

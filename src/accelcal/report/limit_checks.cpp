@@ -12,7 +12,7 @@
 namespace accelcal {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+constexpr double kDegPerRad = 180.0 / 3.14159265358979323846;
 
 // `v` to two significant digits, without an exponent: "4700", "15", "0.073".
 std::string TwoDigits(double v) {
@@ -38,7 +38,7 @@ struct BenchUnit {
 BenchUnit BenchUnitOf(const std::string& quantity) {
   if (quantity == "radius") return {1e3, "mm"};
   if (quantity == "turntable speed") return {100.0, "%"};
-  if (quantity == "table tilt" || quantity == "prism squareness") return {180.0 / kPi, "deg"};
+  if (quantity == "table tilt" || quantity == "prism squareness") return {kDegPerRad, "deg"};
   return {1.0, "m/s^2"};
 }
 
