@@ -7,12 +7,15 @@
 #   2. a layer's detail/ headers are private: no other layer and nothing in ui/ includes them
 #      (tests may look inside);
 #   3. third-party headers stay in their layer: nlohmann-json and toml++ in io, SQLite in
-#      session, CLI11 and curses in ui/ only.
+#      session and bags (a ROS 2 bag is an SQLite file), the chunk codecs (zstd, lz4, bz2) in
+#      bags, CLI11 and curses in ui/ only.
+# bags (the bag readers, siblings of base's sample reader) ranks just above base: it includes
+# base only, and acquire (the file: source replays a bag), io and the layers above may include it.
 # Prints every violation as FILE:LINE: what; exit status 1 when there is one.
 set -euo pipefail
 cd "${1:-$(dirname "$0")/..}"
 
-layers=(base calibration acquire analysis session report io app)
+layers=(base bags calibration acquire analysis session report io app)
 declare -A rank
 for i in "${!layers[@]}"; do rank[${layers[$i]}]=$i; done
 
@@ -43,7 +46,9 @@ for layer in "${layers[@]}"; do
       nlohmann/*|toml++/*)
         [ "$layer" = io ] || report "$file:$line: $header outside io (JSON and TOML live at the file edge)" ;;
       sqlite3.h)
-        [ "$layer" = session ] || report "$file:$line: sqlite3.h outside session" ;;
+        [ "$layer" = session ] || [ "$layer" = bags ] || report "$file:$line: sqlite3.h outside session and bags" ;;
+      zstd.h|zstd_errors.h|lz4.h|lz4frame.h|lz4hc.h|bzlib.h)
+        [ "$layer" = bags ] || report "$file:$line: $header outside bags (the chunk codecs are the bag readers')" ;;
       CLI/*|curses.h|ncurses.h|ncurses/*|term.h)
         report "$file:$line: $header in the core (terminal and command-line code lives in ui/)" ;;
     esac
@@ -57,7 +62,7 @@ done
 while IFS=: read -r file line header; do
   case "$header" in
     accelcal/*/detail/*) report "$file:$line: ui includes $header, a private header of the core" ;;
-    nlohmann/*|toml++/*|sqlite3.h) report "$file:$line: ui includes $header (the core's io and session own it)" ;;
+    nlohmann/*|toml++/*|sqlite3.h|zstd.h|lz4*.h|bzlib.h) report "$file:$line: ui includes $header (the core's io, session and bags own it)" ;;
   esac
 done < <(includes ui)
 

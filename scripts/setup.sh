@@ -11,13 +11,15 @@ packages=(
   g++ cmake make pkg-config tmux jq lowdown
   libeigen3-dev libnlopt-cxx-dev libncurses-dev libsqlite3-dev libtomlplusplus-dev
   nlohmann-json3-dev libcli11-dev libfmt-dev libgtest-dev libbenchmark-dev
+  libzstd-dev liblz4-dev libbz2-dev
 )
 # The .deb: CPack asks dpkg-shlibdeps (dpkg-dev), which asks file(1), for its Depends.
 package_packages=(dpkg-dev file)
 # Only the tests need these: headless Chromium renders the HTML report and prints it to PDF,
 # poppler-utils reads the PDF's pages back (tests/e2e/report_html.sh); man-db's man reads the
-# manual pages (tests/e2e/man_pages.sh, package_deb.sh).
-test_packages=(chromium poppler-utils man-db)
+# manual pages (tests/e2e/man_pages.sh, package_deb.sh); Node.js and its npm run the bag writers
+# and readers written elsewhere that the bag tests install (tests/e2e/bags_*.sh).
+test_packages=(chromium poppler-utils man-db nodejs)
 case "${1:-}" in
   --no-test) ;;
   --package) packages+=("${package_packages[@]}") ;;

@@ -26,5 +26,7 @@ plant src/accelcal/app/calibration_pipeline.cpp '#include "accelcal/session/deta
 plant ui/cli/fit.cpp '#include "accelcal/io/detail/json_values.h"' 'a private header of the core'
 plant src/accelcal/report/report_model.cpp '#include <nlohmann/json.hpp>' 'outside io'
 plant src/accelcal/analysis/welch_psd.cpp '#include <ncurses.h>' 'in the core'
+plant src/accelcal/io/recording_stream.cpp '#include <zstd.h>' 'outside bags'
+plant src/accelcal/bags/bag_file.h '#include "accelcal/calibration/apply.h"' 'from the higher layer calibration'
 plant src/accelcal/session/procedure.cpp '#include "accelcal/nowhere.h"' 'in no layer'
 echo "layers_check: every planted violation refused"

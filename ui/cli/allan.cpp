@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include "accelcal/app/analyze_recording.h"
+#include "accelcal/bags/bag_open.h"
 #include "accelcal/base/error.h"
 #include "accelcal/io/export/kalibr_imu_yaml.h"
 #include "accelcal/io/allan_file.h"
@@ -89,7 +90,8 @@ void RunAllan(const AllanCommandOptions& o) {
   if (!o.kalibr_path.empty() && !cal)
     throw Error("--kalibr: Kalibr wants m/s^2; give the sensor's --calibration");
   RecordAnalysis analysis;
-  if (o.recording_path != "-" && !IsReadOnceInput(o.recording_path) && IsSessionFile(o.recording_path)) {
+  if (o.recording_path != "-" && !IsReadOnceInput(o.recording_path) &&
+      !bags::DetectBag(o.recording_path) && IsSessionFile(o.recording_path)) {
     analysis = AnalyzeSessionRecord(o, options, cal, &source);
   } else {
     ReadingSummary summary;
@@ -114,17 +116,19 @@ void SetupAllanCommand(CLI::App& app) {
   auto opts = std::make_shared<AllanCommandOptions>();
   CLI::App* sub = app.add_subcommand(
       "allan",
-      "Overlapping Allan deviation of a long static record (the drift procedure's, or any\n"
-      "recording 't ax ay az [temp_c]'), with 68.3 % confidence bounds, and the IEEE 952\n"
+      "Overlapping Allan deviation of a long static record (the drift procedure's, any\n"
+      "recording 't ax ay az [temp_c]', or a ROS bag's IMU topic: .bag, .mcap, .db3, a ROS 2\n"
+      "bag folder, in m/s^2), with 68.3 % confidence bounds, and the IEEE 952\n"
       "read-offs per axis: noise density (slope -1/2 at 1 s), bias instability (minimum /\n"
       "0.664), random walk (slope +1/2 at 3 s), and the drift of 1-minute means. In raw counts,\n"
       "or in m/s^2 with a calibration file. Streams the file: any length in bounded memory.\n\n"
       "Examples:\n"
       "  accelcal allan drift.txt\n"
       "  accelcal allan drift.txt --calibration cal.json -o allan.json\n"
-      "  accelcal allan drift-session.db -o allan.json      # a wizard session's record");
+      "  accelcal allan drift-session.db -o allan.json      # a wizard session's record\n"
+      "  accelcal allan imu.bag --topic /imu -o allan.json   # a ROS bag");
   sub->add_option("recording", opts->recording_path,
-                  "Recording file ('-': standard input), or a session file holding a record")
+                  "Recording file ('-': standard input), a ROS bag, or a session file holding a record")
       ->required();
   sub->add_option("--step", opts->step, "The session's record step (default: its first record)");
   sub->add_option("--calibration", opts->calibration_path,

@@ -55,6 +55,20 @@ CLI::Validator InputFile() {
       "FILE", "InputFile");
 }
 
+CLI::Validator InputFileOrBag() {
+  return CLI::Validator(
+      [](std::string& path) -> std::string {
+        std::error_code ec;
+        if (!std::filesystem::exists(path, ec)) throw Error(fmt::format("no such file: {}", path));
+        if (std::filesystem::is_directory(path, ec) &&
+            !std::filesystem::exists(std::filesystem::path(path) / "metadata.yaml", ec))
+          throw Error(fmt::format("{} is a directory, not a file (nor a ROS 2 bag folder: it "
+                                  "holds no metadata.yaml)", path));
+        return "";
+      },
+      "FILE|BAG", "InputFileOrBag");
+}
+
 std::vector<std::string> SplitAt(std::string_view text, char separator) {
   std::vector<std::string> pieces;
   size_t from = 0;

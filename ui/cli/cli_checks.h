@@ -20,6 +20,8 @@ CLI::Validator Positive();
 // lets any exception other than its ValidationError pass through its validators, so main
 // reports it as bad input.
 CLI::Validator InputFile();
+// As InputFile, or a ROS 2 bag folder (a directory holding metadata.yaml).
+CLI::Validator InputFileOrBag();
 
 // The values an IsMember check of `option` allows, as --help shows them in its type
 // ("TEXT:{text,json}" -> text, json); empty without one.

@@ -56,14 +56,17 @@ LoadedCaptures LoadRecording(const FitCommandOptions& o) {
   if (!recording.summary.converted_hint.empty())
     throw Error(fmt::format("{}: {}", o.recording_path, recording.summary.converted_hint));
   const StaticDetection detection = DetectStaticIntervals(recording.samples, o.detector);
+  // The unit as read: the format's, or a bag's m/s^2.
+  const ReadingUnit& unit = recording.summary.unit;
   LoadedCaptures out{CapturesFromIntervals(recording.samples, detection), o.recording_path,
                      std::nullopt, FormatIntervals(detection, o.detector),
-                     "read " + recording.summary.Describe() + "\n", format.unit};
-  if (!format.unit.is_counts())
+                     "read " + recording.summary.Describe() + "\n", unit};
+  if (!unit.is_counts())
     out.reading_text += fmt::format(
         "readings in {0}: the model's counts are {1} {0} here, so bias_counts is in those "
-        "counts and a scale of {2} counts per {0} means the logger's own conversion is exact\n",
-        format.unit.Name(), 1.0 / format.unit.counts_per_unit, format.unit.counts_per_unit);
+        "counts and a scale of {2} counts per {0} means the {3} own conversion is exact\n",
+        unit.Name(), 1.0 / unit.counts_per_unit, unit.counts_per_unit,
+        recording.summary.origin.empty() ? "logger's" : "IMU driver's");
   return out;
 }
 
@@ -137,14 +140,17 @@ void SetupFitCommand(CLI::App& app) {
       "Examples:\n"
       "  accelcal fit captures.csv -o cal.json\n"
       "  accelcal fit --recording imu.txt --gravity 9.81744 -o cal.json\n"
+      "  accelcal fit --recording imu.mcap --topic /imu/data -o cal.json\n"
       "  accelcal fit captures.csv --latitude -34.90 --altitude 43 -o cal.json");
   CLI::Option* captures = sub->add_option("captures", opts->captures_path,
                                           "Capture-set file (CSV, format in README.md)")
                               ->check(InputFile());
   CLI::Option* recording = sub->add_option("--recording", opts->recording_path,
                                            "Continuous recording 't ax ay az [temp_c]' of static poses "
-                                           "with a still start; static intervals are found automatically")
-                               ->check(InputFile());
+                                           "with a still start, or a ROS bag of them (.bag, .mcap, "
+                                           ".db3, a ROS 2 bag folder; --topic); static intervals "
+                                           "are found automatically")
+                               ->check(InputFileOrBag());
   captures->excludes(recording);
   sub->add_option("-o,--output", opts->output_path, "Write the calibration file (JSON) here");
   opts->gravity.Bind(*sub);

@@ -10,6 +10,7 @@
 
 #include "accelcal/analysis/noise_analysis.h"
 #include "accelcal/app/noise_records.h"
+#include "accelcal/bags/bag_open.h"
 #include "accelcal/base/error.h"
 #include "accelcal/io/calibration_file.h"
 #include "accelcal/io/noise_file.h"
@@ -41,6 +42,28 @@ struct NoiseCommandOptions {
 struct FileReadings {
   std::vector<std::unique_ptr<ReadingSummary>> summaries;
 };
+
+// A bag's readings are m/s^2 already (sensor_msgs/Imu): without a calibration they are analysed
+// as recorded, through a calibration of unit scale (a^p = the readings), and the output says so.
+// Text files with bags need one unit: counts and m/s^2 are not mixed.
+std::optional<Calibration> AsRecordedForBags(const NoiseCommandOptions& o) {
+  std::vector<std::string> bags, texts;
+  for (const std::string& path : o.record_paths)
+    (bags::DetectBag(path) ? bags : texts).push_back(path);
+  if (bags.empty()) return std::nullopt;
+  if (!texts.empty())
+    throw Error(fmt::format("--record: {} is a bag (m/s^2) and {} is not: give the --calibration "
+                            "of the sensor, or analyse them apart", bags.front(), texts.front()));
+  SampleFormat format = o.format.Resolve();
+  Calibration as_recorded;
+  as_recorded.reading_unit = ReadingUnit{ReadingUnit::Kind::kMps2, format.unit.is_counts()
+                                                                       ? ReadingUnit::kDefaultCountsPerUnit
+                                                                       : format.unit.counts_per_unit};
+  as_recorded.model.scale_counts_per_mps2 =
+      Eigen::Vector3d::Constant(as_recorded.reading_unit.counts_per_unit);
+  as_recorded.source = "none: the bag's linear_acceleration as recorded";
+  return as_recorded;
+}
 
 std::vector<analysis::NoiseRecordSource> Records(const NoiseCommandOptions& o,
                                                  const std::optional<Calibration>& calibration,
@@ -80,6 +103,7 @@ void RunNoise(const NoiseCommandOptions& o) {
     throw Error("give either a DEVICE serial or --record FILE..., not both");
   std::optional<Calibration> calibration;
   if (!o.calibration_path.empty()) calibration = ReadCalibrationFile(o.calibration_path);
+  else calibration = AsRecordedForBags(o);
   std::vector<std::string> notes;
   FileReadings readings;
   const std::vector<analysis::NoiseRecordSource> records =
@@ -119,8 +143,9 @@ void SetupNoiseCommand(CLI::App& app) {
       "  accelcal noise --record day1.txt day2.txt day3.txt --calibration cal.json");
   sub->add_option("device", opts->device, "Device serial (as recorded in its sessions)");
   sub->add_option("--record", opts->record_paths,
-                  "Recording files (t ax ay az [temp_c]) instead of sessions; undated")
-      ->check(InputFile());
+                  "Recording files (t ax ay az [temp_c]) or ROS bags (--topic; m/s^2 as recorded "
+                  "without --calibration) instead of sessions; undated")
+      ->check(InputFileOrBag());
   sub->add_option("--sessions-dir", opts->sessions_dir,
                   "Session directory (default: $XDG_DATA_HOME/accelcal/sessions)");
   sub->add_option("--procedure", opts->procedure_path,

@@ -13,6 +13,7 @@
 
 #include <fmt/core.h>
 
+#include "accelcal/bags/bag_open.h"
 #include "accelcal/base/error.h"
 #include "accelcal/io/capture_set_writer.h"
 #include "accelcal/io/text_file.h"
@@ -112,6 +113,14 @@ void RunRecord(const RecordCommandOptions& o) {
   if (!source_options.format.unit.is_counts())
     throw Error("--unit: record writes the readings as the source gives them; declare the unit "
                 "to the command that reads the recording (fit --recording, apply, allan)");
+  // A ROS bag's readings are m/s^2 (sensor_msgs/Imu): written as they are (one count per m/s^2,
+  // so the values are the bag's own), and the file says to read them with --unit m/s^2.
+  const SourceSpec spec = ParseSourceSpec(o.source_spec);
+  const bool from_bag = spec.kind == SourceKind::kFile && bags::DetectBag(spec.path).has_value();
+  if (from_bag) {
+    source_options.format.unit = ReadingUnit{ReadingUnit::Kind::kMps2, 1.0};
+    source_options.format.unit_declared = true;
+  }
   if (!o.scenario_path.empty()) source_options.scenario = sim::LoadScenario(o.scenario_path);
   std::unique_ptr<SampleSource> source = OpenSource(o.source_spec, source_options);
   SigintGuard sigint;
@@ -133,6 +142,9 @@ void RunRecord(const RecordCommandOptions& o) {
       const ReadResult r = source->Read(kReadTimeoutS, &chunk);
       ReportEvents(*source, r, o.quiet);
       if (!chunk.empty() && !writer) {
+        if (from_bag)
+          out << "# readings in m/s^2 (the bag's sensor_msgs/Imu linear_acceleration, as "
+                 "recorded): read this file with --unit m/s^2\n";
         writer.emplace(out, std::isfinite(chunk.front().temp_c));
         if (o.duration_s > 0.0) end_s = chunk.front().t_s + o.duration_s;
       }
@@ -181,7 +193,8 @@ void SetupRecordCommand(CLI::App& app) {
       "samples, malformed lines, gaps in t) goes to stderr once a second. Stops after --duration\n"
       "seconds of samples, at the end of a file or of standard input, or on Ctrl-C (what was\n"
       "received is written, exit status 0).\n\n"
-      "Sources (--source): sim (the virtual bench), file:PATH, serial:DEVICE@BAUD,\n"
+      "Sources (--source): sim (the virtual bench), file:PATH (a recording, or a ROS bag's IMU\n"
+      "topic: --topic; written in m/s^2 as the bag holds them), serial:DEVICE@BAUD,\n"
       "tcp:HOST:PORT, - (standard input). Line protocol in README.md, 'Sample sources'.");
   sub->footer(
       "Examples:\n"

@@ -33,6 +33,14 @@ void SampleFormatFlags::Bind(CLI::App& app, const std::string& what) {
       ->check(Positive());
   app.add_flag("--no-repair-time", no_repair_time,
                "Refuse repeated time stamps instead of spreading rounded ones within their step");
+  app.add_option("--topic", topic,
+                 "A ROS bag's IMU topic (sensor_msgs/Imu); default: its only one (several: "
+                 "they are listed)");
+  app.add_option("--bag-time", bag_time,
+                 "A ROS bag's t: header (each message's header stamp) or receive (the time the "
+                 "bag recorded it)")
+      ->check(CLI::IsMember({"header", "receive"}))
+      ->capture_default_str();
 }
 
 SampleFormat SampleFormatFlags::Resolve() const {
@@ -53,6 +61,8 @@ SampleFormat SampleFormatFlags::Resolve() const {
     f.unit.counts_per_unit = counts_per_unit;
   }
   f.repair_ties = !no_repair_time;
+  f.bag.topic = topic;
+  f.bag.receive_time = bag_time == "receive";
   if (std::string e = f.Validate(); !e.empty()) throw Error(e);
   return f;
 }

@@ -27,13 +27,15 @@ RecordAnalysis AnalyzeRecordingFile(const std::string& path, const RecordAnalysi
     read_as.unit_declared = true;
     applier = std::make_unique<CalibrationApplier>(*calibration);
   }
-  // Without a calibration: counts as they are, or a logger's converted readings back in m/s^2.
-  const bool converted = !applier && !read_as.unit.is_counts();
-  const double to_mps2 = converted ? (read_as.unit.kind == ReadingUnit::Kind::kG ? 9.80665 : 1.0) /
-                                         read_as.unit.counts_per_unit
+  RecordingStream stream(path, RecordingStream::kDefaultBlockBytes, read_as);
+  // Without a calibration: counts as they are, or a logger's converted readings (a bag's m/s^2)
+  // back in m/s^2.
+  const ReadingUnit& unit = stream.unit();
+  const bool converted = !applier && !unit.is_counts();
+  const double to_mps2 = converted ? (unit.kind == ReadingUnit::Kind::kG ? 9.80665 : 1.0) /
+                                         unit.counts_per_unit
                                    : 1.0;
   RecordAnalyzer analyzer(options, applier || converted ? "m/s^2" : "counts");
-  RecordingStream stream(path, RecordingStream::kDefaultBlockBytes, read_as);
   std::vector<Sample> block;
   long read = 0;
   while (stream.Next(&block)) {

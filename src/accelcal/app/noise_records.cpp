@@ -9,6 +9,7 @@
 
 #include <fmt/core.h>
 
+#include "accelcal/bags/bag_open.h"
 #include "accelcal/base/error.h"
 #include "accelcal/io/recording_reader.h"
 #include "accelcal/io/recording_stream.h"
@@ -95,7 +96,9 @@ NoiseRecordSet NoiseRecordsOfDevice(const std::string& sessions_dir, const std::
 NoiseRecordSource NoiseRecordFromFile(const std::string& path, const SampleFormat& format,
                                       ReadingSummary* summary) {
   struct stat info {};
-  if (path == "-" || ::stat(path.c_str(), &info) != 0 || !S_ISREG(info.st_mode)) {
+  const bool readable_again = path != "-" && (bags::DetectBag(path).has_value() ||
+                                              (::stat(path.c_str(), &info) == 0 && S_ISREG(info.st_mode)));
+  if (!readable_again) {
     // Not a regular file: it cannot be read again, so it is held.
     Recording recording = ReadRecording(path, format);
     if (summary != nullptr) *summary = recording.summary;

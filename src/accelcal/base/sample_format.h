@@ -63,6 +63,13 @@ struct SampleFormat {
   // A line longer than this, bytes: in a file an error (binary data, or not a recording), in a
   // live stream one malformed line skipped to the next newline. >= 64.
   long max_line_bytes = 4096;
+  // A bag (bags/bag_sample_stream.h) rather than a table: its IMU topic (empty: the only one it
+  // holds), and t from the bag's receive times instead of the messages' header stamps.
+  struct BagChoice {
+    std::string topic;
+    bool receive_time = false;
+  };
+  BagChoice bag;
 
   // Empty when valid; otherwise what is wrong.
   std::string Validate() const;

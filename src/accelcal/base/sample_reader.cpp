@@ -29,21 +29,23 @@ std::string RateText(double interval_s) {
 }  // namespace
 
 std::string ReadingSummary::Describe() const {
-  std::string out = fmt::format("{}: {} sample{}; columns {}", source_name, samples,
-                                samples == 1 ? "" : "s", columns);
+  std::string out = fmt::format("{}: {} sample{}; ", source_name, samples, samples == 1 ? "" : "s");
+  out += origin.empty() ? "columns " + columns : origin;
   if (!ignored.empty()) out += fmt::format(" (ignored: {})", JoinNames(ignored));
   if (skipped_rows > 0)
     out += fmt::format("; {} leading line{} skipped", skipped_rows, skipped_rows == 1 ? "" : "s");
   if (std::isfinite(rate_hz))
-    out += fmt::format("; t = row / {} Hz", detail::FormatNumber(rate_hz));
+    out += fmt::format("; t = {} / {} Hz", origin.empty() ? "row" : "message", detail::FormatNumber(rate_hz));
   else
-    out += "; t from its column, " + RateText(median_interval_s);
+    out += fmt::format("; {}, {}", time_source.empty() ? "t from its column" : time_source,
+                       RateText(median_interval_s));
   if (repaired_ties > 0)
     out += fmt::format("; {} repeated time stamp{} (printed to {} s) spread within their step",
                        repaired_ties, repaired_ties == 1 ? "" : "s",
                        fmt::format("{:.6g}", stamp_step_s));  // the step as printed, not its binary residue
   out += "; readings in " + unit.Describe();
   if (malformed > 0) out += fmt::format("; {} malformed line{} skipped", malformed, malformed == 1 ? "" : "s");
+  for (const std::string& note : notes) out += "; " + note;
   return out;
 }
 

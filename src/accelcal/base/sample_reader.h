@@ -61,6 +61,12 @@ struct ReadingSummary {
   long repaired_ties = 0;        // repeated stamps spread within their step
   double stamp_step_s = kNaN;    // the finest step of the stamps
   ReadingUnit unit;
+  // A bag's reading (bags/bag_sample_stream.h): what the samples are instead of a table's
+  // columns ("topic /imu (sensor_msgs/msg/Imu) of an MCAP file, zstd chunks"), where t comes
+  // from ("t from the header stamps"), and what was read around (a cut file); empty for a table.
+  std::string origin;
+  std::string time_source;
+  std::vector<std::string> notes;
 
   // One line: "rec.txt: 51175 samples; columns t ax ay az (the protocol's order); t from its
   // column, median interval 0.01 s (100 Hz); counts".

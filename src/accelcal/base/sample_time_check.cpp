@@ -13,10 +13,8 @@ void SampleTimeCheck::AddWithChecks(const Sample& sample, std::string_view line,
                                     std::vector<InputError>* errors) {
   Held h{sample, line_number, 0};
   if (has_previous_ && sample.t_s < last_seen_t_s_) {
-    errors->emplace_back(source_name_, line_number, ColumnAt(line, t_offset),
-                         fmt::format("t = {} s does not increase (line {} has t = {} s); t must "
-                                     "be strictly increasing", FormatNumber(sample.t_s),
-                                     last_seen_line_, FormatNumber(last_seen_t_s_)));
+    errors->push_back(OrderError(line_number, ColumnAt(line, t_offset), sample.t_s,
+                                 last_seen_line_, last_seen_t_s_));
     return;
   }
   const bool tie = has_previous_ && sample.t_s == last_seen_t_s_;
@@ -132,10 +130,17 @@ double SampleTimeCheck::TypicalIntervalS() const {
 }
 
 InputError SampleTimeCheck::TieError(const Held& h) const {
-  return InputError(source_name_, h.line, h.column,
-                    fmt::format("t = {} s does not increase (line {} has t = {} s); t must be "
-                                "strictly increasing", FormatNumber(h.sample.t_s), previous_line_,
-                                FormatNumber(previous_t_s_)));
+  return OrderError(h.line, h.column, h.sample.t_s, previous_line_, previous_t_s_);
+}
+
+InputError SampleTimeCheck::OrderError(long at, long column, double t_s, long previous,
+                                       double previous_t_s) const {
+  const std::string words = fmt::format("t = {} s does not increase ({} {} has t = {} s); t must be "
+                                        "strictly increasing", FormatNumber(t_s),
+                                        topic_.empty() ? "line" : "message", previous,
+                                        FormatNumber(previous_t_s));
+  if (topic_.empty()) return InputError(source_name_, at, column, words);
+  return InputError(source_name_, 0, 0, fmt::format("{} message {}: {}", topic_, at, words));
 }
 
 double SampleTimeCheck::MedianIntervalS() const {

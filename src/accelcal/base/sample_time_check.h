@@ -37,6 +37,10 @@ class SampleTimeCheck {
   SampleTimeCheck(std::string source_name, bool repair_ties)
       : source_name_(std::move(source_name)), repair_ties_(repair_ties) {}
 
+  // The samples are a bag's messages on `topic`, not a text's lines: the errors name them
+  // "/imu message 7" (no line or column) in the same words.
+  void NameMessages(std::string topic) { topic_ = std::move(topic); }
+
   // `sample` was read from line `line_number` (`line` its text, its t at byte `t_offset`, for
   // messages). Appends the samples now final to *out, in order; a refused sample's error goes
   // to *errors.
@@ -93,6 +97,8 @@ class SampleTimeCheck {
   void CloseGroup(double next_stamp_s, std::vector<Sample>* out, std::vector<InputError>* errors);
   double TypicalIntervalS() const;
   InputError TieError(const Held& h) const;
+  // "t = T s does not increase (line P has t = PT s); ..." at line (or message) `at`.
+  InputError OrderError(long at, long column, double t_s, long previous, double previous_t_s) const;
   void NoteStamp(double t_s) {
     if (std::isfinite(last_stamp_s_) && t_s > last_stamp_s_) {
       const double step = t_s - last_stamp_s_;
@@ -111,6 +117,7 @@ class SampleTimeCheck {
   static constexpr size_t kRateIntervals = 1024;   // intervals the reported rate is the median of
 
   std::string source_name_;
+  std::string topic_;  // non-empty: a bag's messages (NameMessages)
   bool repair_ties_;
   Mode mode_ = Mode::kStrict;
   bool has_previous_ = false;

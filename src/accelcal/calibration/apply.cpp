@@ -42,7 +42,7 @@ CalibrationApplier::CalibrationApplier(const Calibration& cal)
                                          "sensor's readings)", name));
       continue;
     }
-    if (name.rfind("temperature_", 0) == 0) {
+    if (effect->ReadsTemperature()) {
       context_.temp_ref_c = cal.reference.temp_c;
       if (!std::isfinite(context_.temp_ref_c))
         throw Error(fmt::format("effect '{}': reference.temp_c is missing", name));
@@ -68,6 +68,25 @@ Eigen::Vector3d CalibrationApplier::Apply(const Sample& sample) const {
   return model_.Calibrate(corrected.raw_counts);
 }
 
+bool CalibratedLineWriter::Write(const Sample& s, std::string* why) {
+  Eigen::Vector3d a;
+  try {
+    a = applier_.Apply(s);
+    // Never print inf or nan as a result (an effect's term may overflow for a wild reading).
+    if (!a.allFinite())
+      throw Error("the calibrated value is not a finite number (the reading is out of the sensor's range)");
+  } catch (const Error& e) {
+    *why = e.what();
+    return false;
+  }
+  line_.clear();
+  fmt::format_to(std::back_inserter(line_), "{} {:.6f} {:.6f} {:.6f}", s.t_s, a.x(), a.y(), a.z());
+  if (std::isfinite(s.temp_c)) fmt::format_to(std::back_inserter(line_), " {}", s.temp_c);
+  line_.push_back('\n');
+  out_.write(line_.data(), static_cast<std::streamsize>(line_.size()));
+  return true;
+}
+
 ApplyStreamResult ApplyStream(std::istream& in, std::ostream& out, const CalibrationApplier& applier,
                               const std::string& source_name,
                               const std::function<void(const InputError&)>& on_error,
@@ -83,29 +102,18 @@ ApplyStreamResult ApplyStream(std::istream& in, std::ostream& out, const Calibra
     ++result.malformed;
     on_error(e);
   });
-  fmt::memory_buffer buffer;
+  CalibratedLineWriter writer(out, applier);
   std::vector<Sample> samples;
   size_t written = 0;  // of `samples`
   // Writes the samples delivered so far (before a comment, so that it stays in place).
   const auto flush = [&] {
+    std::string why;
     for (; written < samples.size(); ++written) {
-      const Sample& s = samples[written];
-      Eigen::Vector3d a;
-      try {
-        a = applier.Apply(s);
-        // Never print inf or nan as a result (an effect's term may overflow for a wild reading).
-        if (!a.allFinite())
-          throw Error("the calibrated value is not a finite number (the reading is out of the sensor's range)");
-      } catch (const Error& e) {
+      if (!writer.Write(samples[written], &why)) {
         ++result.malformed;
-        on_error(InputError(source_name, reader.line_number(), 0, e.what()));
+        on_error(InputError(source_name, reader.line_number(), 0, why));
         continue;
       }
-      buffer.clear();
-      fmt::format_to(std::back_inserter(buffer), "{} {:.6f} {:.6f} {:.6f}", s.t_s, a.x(), a.y(), a.z());
-      if (std::isfinite(s.temp_c)) fmt::format_to(std::back_inserter(buffer), " {}", s.temp_c);
-      buffer.push_back('\n');
-      out.write(buffer.data(), static_cast<std::streamsize>(buffer.size()));
       ++result.samples;
     }
   };

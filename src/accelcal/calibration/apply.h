@@ -51,6 +51,23 @@ class CalibrationApplier {
   bool needs_temperature_ = false;
 };
 
+// Writes calibrated samples as the lines `apply` prints: `t ax ay az [temp_c]`, ax ay az the
+// calibrated a^p in m/s^2 with 6 decimals. A reading whose calibrated value cannot be given (it
+// lacks the temperature the calibration needs, or the value is not finite: no inf or nan is
+// ever written) is not written.
+class CalibratedLineWriter {
+ public:
+  CalibratedLineWriter(std::ostream& out, const CalibrationApplier& applier)
+      : out_(out), applier_(applier) {}
+  // Writes one sample's line; false with *why (in words) when it cannot be given.
+  bool Write(const Sample& sample, std::string* why);
+
+ private:
+  std::ostream& out_;
+  const CalibrationApplier& applier_;
+  std::string line_;
+};
+
 struct ApplyStreamResult {
   long lines = 0;      // lines read
   long samples = 0;    // data lines written calibrated

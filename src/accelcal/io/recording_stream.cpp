@@ -7,6 +7,9 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <fmt/format.h>
+
+#include "accelcal/bags/bag_open.h"
 #include "accelcal/base/error.h"
 
 namespace accelcal {
@@ -22,8 +25,19 @@ RecordingStream::RecordingStream(const std::string& path, size_t block_bytes,
                                  const SampleFormat& format)
     : path_(path),
       block_bytes_(block_bytes),
-      reader_(path, format, SampleReader::OnMalformed::kThrow) {
+      reader_(path, format, SampleReader::OnMalformed::kThrow),
+      reader_unit_(format.unit) {
   if (block_bytes_ == 0) throw Error("RecordingStream: block_bytes must be > 0");
+  if (bags::DetectBag(path)) {
+    bag_ = std::make_unique<bags::BagSampleStream>(path, format);
+    return;
+  }
+  if (!format.bag.topic.empty())
+    throw Error(fmt::format("--topic {}: {} is not a bag (ROS 1 .bag, .mcap, .db3, or a ROS 2 bag "
+                            "folder)", format.bag.topic, path));
+  if (format.bag.receive_time)
+    throw Error(fmt::format("--bag-time: {} is not a bag (ROS 1 .bag, .mcap, .db3, or a ROS 2 bag "
+                            "folder)", path));
   if (path == "-") {
     fd_ = STDIN_FILENO;
   } else {
@@ -45,7 +59,7 @@ RecordingStream::RecordingStream(const std::string& path, size_t block_bytes,
 }
 
 RecordingStream::~RecordingStream() {
-  if (owns_fd_) ::close(fd_);
+  if (owns_fd_ && fd_ >= 0) ::close(fd_);
 }
 
 bool RecordingStream::Fill() {
@@ -75,6 +89,7 @@ bool RecordingStream::Next(std::vector<Sample>* samples) {
 }
 
 bool RecordingStream::AppendNext(std::vector<Sample>* samples) {
+  if (bag_) return bag_->Next(samples);
   const size_t before = samples->size();
   // Read until at least one sample is parsed or the file ends (a block may hold only comments,
   // or only part of one long line).

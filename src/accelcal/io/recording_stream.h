@@ -6,6 +6,10 @@
 //
 // Speed: each block is read with read(2) straight into one buffer allocated once (never
 // zero-filled), parsed in place, and only the partial line at its end is moved to the front.
+//
+// A ROS bag (a ROS 1 .bag, an .mcap or .db3 file, a ROS 2 bag folder: bags/bag_open.h) is read
+// by the bag reader instead (bags/bag_sample_stream.h), one chunk at a time: the samples of its
+// IMU topic, through the same time checks, in m/s^2.
 #pragma once
 
 #include <cstddef>
@@ -13,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "accelcal/bags/bag_sample_stream.h"
 #include "accelcal/base/capture.h"
 #include "accelcal/base/sample_format.h"
 #include "accelcal/base/sample_reader.h"
@@ -27,7 +32,9 @@ class RecordingStream {
   static constexpr size_t kDefaultBlockBytes = size_t{1} << 18;
 
   // Opens `path` ("-" is standard input). Throws accelcal::Error "cannot open 'PATH': <reason>",
-  // or for an invalid format. `block_bytes` > 0 is how much is read at a time.
+  // or for an invalid format (a bag's choice given for a text: --topic, --bag-time; a table's
+  // options given for a bag; a bag's refusals, bags/bag_topics.h). `block_bytes` > 0 is how
+  // much text is read at a time.
   explicit RecordingStream(const std::string& path, size_t block_bytes = kDefaultBlockBytes,
                            const SampleFormat& format = {});
   ~RecordingStream();
@@ -47,7 +54,12 @@ class RecordingStream {
   // Bytes read so far.
   size_t bytes_read() const { return bytes_read_; }
   // What the reading understood so far (complete once Next returned false).
-  ReadingSummary Summary() const { return reader_.Summary(); }
+  ReadingSummary Summary() const { return bag_ ? bag_->Summary() : reader_.Summary(); }
+  // What the readings are in: the format's unit, or a bag's m/s^2.
+  const ReadingUnit& unit() const { return bag_ ? bag_->format().unit : reader_unit_; }
+  // The samples to expect when known before reading (a bag's indexed message count), else -1.
+  long long expected_samples() const { return bag_ ? bag_->choice().messages : -1; }
+  bool is_bag() const { return bag_ != nullptr; }
 
  private:
   bool Fill();  // reads one block after the kept partial line; false at end of file
@@ -64,6 +76,8 @@ class RecordingStream {
   bool at_eof_ = false;
   bool finished_ = false;
   SampleReader reader_;
+  ReadingUnit reader_unit_;
+  std::unique_ptr<bags::BagSampleStream> bag_;
 };
 
 }  // namespace accelcal

@@ -9,6 +9,7 @@
 #include "accelcal/base/error.h"
 #include "accelcal/base/version.h"
 #include "accelcal/base/sensor_model.h"
+#include "accelcal/calibration/diagnosis/effect.h"
 #include "accelcal/report/completeness.h"
 #include "accelcal/report/limit_checks.h"
 
@@ -100,10 +101,8 @@ std::vector<std::string> ParameterNotes(const std::vector<std::string>& effect_n
       "known only up to a rotation. Align the platform to the vehicle's frame separately when "
       "directions matter."};
   for (const std::string& name : effect_names)
-    if (name == "cross_axis_coupling")
-      notes.push_back("cross_axis_coupling: a magnitude fit sees only the sum kappa over the three "
-                      "axes of their coupling to the product of the other two inputs; the "
-                      "correction shares it equally (right for |a|, not resolved per axis).");
+    if (const Effect* effect = FindEffect(name); effect != nullptr && !effect->ReportNote().empty())
+      notes.push_back(fmt::format("{}: {}", name, effect->ReportNote()));
   return notes;
 }
 
@@ -118,7 +117,8 @@ std::string_view VerdictToString(Verdict v) {
 }
 
 bool TakesGravityErrorForItsOwn(const std::string& effect_name) {
-  return effect_name == "rpm_scale" || effect_name == "radius_offset";
+  const Effect* effect = FindEffect(effect_name);
+  return effect != nullptr && effect->TakesGravityErrorForItsOwn();
 }
 
 std::string GravityAmbiguityNote(const GravitySpec& gravity, const std::vector<std::string>& effect_names) {

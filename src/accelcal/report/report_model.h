@@ -149,7 +149,8 @@ struct SessionGaps {
 enum class Verdict { kPass, kFail, kNoLimits, kIncomplete };
 std::string_view VerdictToString(Verdict v);  // "PASS", "FAIL", "NO LIMITS STATED", "INCOMPLETE"
 
-// The effects whose size a gravity error would take for its own (only w^2 r / g is seen).
+// The effects whose size a gravity error would take for its own (only w^2 r / g is seen; the
+// effect says so: Effect::TakesGravityErrorForItsOwn). False for an unknown name.
 bool TakesGravityErrorForItsOwn(const std::string& effect_name);
 // Empty, or (when `effect_names` hold a speed or radius effect, whatever the gravity's source)
 // what the operator must know: a gravity error gives the same signature, the gravity that was
@@ -240,7 +241,8 @@ ReportModel BuildReportModel(const ReportInputs& inputs);
 void FillMetaFromInputs(const std::map<std::string, std::map<std::string, std::string>>& inputs,
                         ReportMeta* meta);
 
-// The notes of ReportModel::parameter_notes for a calibration with these adopted effects.
+// The notes of ReportModel::parameter_notes for a calibration with these adopted effects: the
+// nine parameters', then each effect's own (Effect::ReportNote) after its name.
 std::vector<std::string> ParameterNotes(const std::vector<std::string>& effect_names);
 
 // Text for an absent value in every renderer.

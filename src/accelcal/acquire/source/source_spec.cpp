@@ -5,7 +5,9 @@
 #include "accelcal/base/text_scan.h"
 #include "accelcal/base/error.h"
 #include "accelcal/acquire/sim/scenario.h"
+#include "accelcal/acquire/source/bag_source.h"
 #include "accelcal/acquire/source/file_link.h"
+#include "accelcal/bags/bag_open.h"
 #include "accelcal/acquire/source/serial_link.h"
 #include "accelcal/acquire/source/sim_source.h"
 #include "accelcal/acquire/source/stream_source.h"
@@ -83,6 +85,7 @@ std::unique_ptr<SampleSource> OpenSource(const std::string& spec, const SourceOp
       return std::make_unique<StreamSource>(MakeStdinLink(options.stdin_fd), options,
                                             Pacing::kAsFastAsPossible);
     case SourceKind::kFile:
+      if (bags::DetectBag(s.path)) return std::make_unique<BagSource>(s.path, options);  // a ROS bag
       return std::make_unique<StreamSource>(
           OpenFileLink(s.path), options,
           options.realtime ? Pacing::kByT : Pacing::kAsFastAsPossible);

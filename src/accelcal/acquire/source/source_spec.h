@@ -1,7 +1,8 @@
 // Choosing a sample source with a spec string (the `--source` flag):
 //
 //   sim                         the virtual bench, live (the default)
-//   file:PATH                   replay a recording (paced by t with SourceOptions::realtime)
+//   file:PATH                   replay a recording (paced by t with SourceOptions::realtime), or
+//                               a ROS bag's IMU topic (bag_source.h)
 //   serial:DEVICE@BAUD          a serial port in raw mode, e.g. serial:/dev/ttyUSB0@115200
 //   tcp:HOST:PORT               a TCP sample server, e.g. tcp:192.168.7.2:5000, tcp:[::1]:5000
 //   -                           standard input

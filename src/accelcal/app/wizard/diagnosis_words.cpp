@@ -2,30 +2,47 @@
 
 #include <cctype>
 #include <cmath>
-#include <utility>
+#include <optional>
 
 #include <fmt/core.h>
 #include <fmt/format.h>
 
+#include "accelcal/calibration/diagnosis/bench_statement.h"
+#include "accelcal/calibration/diagnosis/effect.h"
+#include "accelcal/calibration/diagnosis/rival_explanations.h"
 
 namespace accelcal {
 namespace {
 
-// The corner pose (1, 1, 1)/sqrt(3) loads u_x u_y u_z = g^3 / (3 sqrt 3): where cross-axis
-// coupling shows most.
-double CornerProduct(double g) { return g * g / (3.0 * std::sqrt(3.0)); }
-
-// "x +1.2, y -0.3, z +0.0" from three parameters times `factor`.
-std::string PerAxis(const std::vector<double>& p, double factor, const char* format) {
-  if (p.size() != 3) return "?";
+// "x +1.2, y -0.3, z +0.0" with `decimals` digits after the point; "?" unless three values.
+std::string ValuesPerAxis(const std::vector<double>& values, int decimals) {
+  if (values.size() != 3) return "?";
   const char* axes[] = {"x", "y", "z"};
   std::vector<std::string> parts;
-  for (int i = 0; i < 3; ++i) parts.push_back(std::string(axes[i]) + " " + fmt::format(fmt::runtime(format), p[static_cast<size_t>(i)] * factor));
+  for (size_t i = 0; i < 3; ++i) parts.push_back(fmt::format("{} {:+.{}f}", axes[i], values[i], decimals));
   return fmt::format("{}", fmt::join(parts, ", "));
 }
 
-double First(const std::vector<double>& v) { return v.empty() ? kNaN : v.front(); }
+// An effect's statement (bench_statement.h) as the sentence the technician reads.
+std::string SaidOf(const BenchStatement& s) {
+  const BenchQuantity& q = s.size;
+  const double value = q.values.empty() ? kNaN : q.values.front();
+  switch (q.shape) {
+    case BenchQuantity::Shape::kNone:
+      return s.lead + s.tail;
+    case BenchQuantity::Shape::kValue:
+      return fmt::format("{}{:.{}f} {}{}", s.lead, value, q.decimals, q.unit, s.tail);
+    case BenchQuantity::Shape::kDirection:
+      return fmt::format("{}{:.{}f} {} {}{} (+-{:.2g} {})", s.lead, std::abs(value), q.decimals, q.unit,
+                         value >= 0 ? q.positive : q.negative, s.tail, q.sigma, q.unit);
+    case BenchQuantity::Shape::kPerAxis:
+      return s.lead + ValuesPerAxis(q.values, q.decimals) + " " + q.unit + s.tail;
+  }
+  return s.lead + s.tail;
+}
 
+// An effect that says nothing in bench terms (or that this version does not know): its name and
+// parameters.
 std::string Generic(const AdoptedEffect& e) {
   std::vector<std::string> parts;
   for (size_t i = 0; i < e.parameters.size(); ++i)
@@ -42,21 +59,10 @@ std::string Capitalized(std::string s) {
 }  // namespace
 
 std::string PlainEffectName(const std::string& name) {
-  static const std::pair<const char*, const char*> kNames[] = {
-      {"radius_offset", "a wrong turntable radius"}, {"rpm_scale", "a wrong table speed"},
-      {"size_effect", "the sensor's size"}, {"turntable_tilt", "a tilted turntable"},
-      {"quadratic_nonlinearity", "a bent response"}, {"cubic_nonlinearity", "an S-shaped response"},
-      {"cross_axis_coupling", "axes responding to each other"},
-      {"temperature_bias", "a zero-g level moving with temperature"},
-      {"temperature_scale", "a sensitivity changing with temperature"},
-      {"bias_drift", "a drifting zero-g level"},
-      // Rivals outside the library (calibration/diagnosis/rival_explanations.h).
-      {"turntable_bias_shift", "a zero-g level that shifts while the table turns"},
-      {"bias_step", "a zero-g level that jumped once (a knock, the sensor reseated)"},
-      {"scale_asymmetry", "a sensitivity that differs for up and down"}};
-  for (const auto& [key, words] : kNames)
-    if (name == key) return words;
-  return name;
+  const Effect* effect = FindEffect(name);
+  if (effect == nullptr) effect = FindRival(name);  // a rival outside the library is said too
+  if (effect == nullptr || effect->PlainName().empty()) return name;
+  return std::string(effect->PlainName());
 }
 
 std::string WithPlainEffectNames(std::string text, const std::vector<std::string>& names) {
@@ -67,40 +73,15 @@ std::string WithPlainEffectNames(std::string text, const std::vector<std::string
 }
 
 bool IsBenchError(const std::string& name) {
-  return name == "radius_offset" || name == "rpm_scale" || name == "size_effect" || name == "turntable_tilt";
+  const Effect* effect = FindEffect(name);
+  return effect != nullptr && effect->IsBenchError();
 }
 
 std::string EffectInPlainWords(const AdoptedEffect& e, double g) {
-  const std::vector<double>& p = e.parameters;
-  const double p0 = First(p), s0 = First(e.uncertainty);
-  if (e.name == "radius_offset" && std::isfinite(p0))
-    return fmt::format("the turntable radius seems {:.1f} mm {} than entered (+-{:.2g} mm)",
-                       std::abs(p0) * 1000.0, p0 >= 0 ? "longer" : "shorter", s0 * 1000.0);
-  if (e.name == "rpm_scale" && std::isfinite(p0))
-    return fmt::format("the turntable seems to turn {:.2f} % {} than entered (+-{:.2g} %)",
-                       std::abs(p0) * 100.0, p0 >= 0 ? "faster" : "slower", s0 * 100.0);
-  if (e.name == "size_effect")
-    return "each axis senses at a point off the one the radius was measured to: " +
-           PerAxis(p, 1000.0, "{:+.1f}") + " mm";
-  if (e.name == "turntable_tilt")
-    return "the turntable's spin axis is not vertical" +
-           (e.interpretation.empty() ? std::string() : ": " + e.interpretation) + "; level the turntable";
-  if (e.name == "quadratic_nonlinearity")
-    return "the sensor's output is not quite a straight line: at 1 g it bends by " +
-           PerAxis(p, g * g, "{:+.1f}") + " counts";
-  if (e.name == "cubic_nonlinearity")
-    return "the sensor's output is not quite a straight line (an S-bend): at 1 g by " +
-           PerAxis(p, g * g * g, "{:+.1f}") + " counts";
-  if (e.name == "cross_axis_coupling" && std::isfinite(p0))
-    return fmt::format("each axis also responds to the other two together: {:.1f} mm/s^2 on a corner pose",
-                       p0 * CornerProduct(g) * 1000.0);
-  if (e.name == "temperature_bias")
-    return "the zero-g level moves with temperature: " + PerAxis(p, 1.0, "{:+.2f}") + " counts per degC";
-  if (e.name == "temperature_scale")
-    return "the sensitivity changes with temperature: " + PerAxis(p, 100.0, "{:+.3f}") + " % per degC";
-  if (e.name == "bias_drift")
-    return "the zero-g level drifts during the session: " + PerAxis(p, 60.0, "{:+.2f}") + " counts per minute";
-  return Generic(e);
+  const Effect* effect = FindEffect(e.name);
+  const std::optional<BenchStatement> said =
+      effect == nullptr ? std::nullopt : effect->InBenchTerms(e.parameters, e.uncertainty, e.interpretation, g);
+  return said ? SaidOf(*said) : Generic(e);
 }
 
 DiagnosisWords DiagnosisInPlainWords(const DiagnosisReport& r, double g) {

@@ -13,19 +13,22 @@
 namespace accelcal {
 
 // The effect in a plain sentence, lower case, no final period, its size in bench units from its
-// final parameters: mm for radii, % for speed and sensitivity, counts (at 1 g, per degC, per
-// minute) for the sensor's response, deg for a tilt. `gravity_mps2` sizes the responses at 1 g.
-// An effect this file does not know is named with its parameters and units.
+// final parameters (mm for radii, % for speed and sensitivity, counts at 1 g, per degC, per
+// minute for the sensor's response, deg for a tilt): what the effect states
+// (Effect::InBenchTerms, calibration/diagnosis/bench_statement.h), rendered here.
+// `gravity_mps2` sizes the responses at 1 g. An effect that states nothing, or that this version
+// does not know, is named with its parameters and units.
 std::string EffectInPlainWords(const AdoptedEffect& effect, double gravity_mps2);
 
-// The effect's name in words ("a wrong turntable radius", "a bent response"); the name itself
-// when unknown.
+// The effect's name in words ("a wrong turntable radius", "a bent response"; Effect::PlainName,
+// of the library or of a rival explanation); the name itself when unknown.
 std::string PlainEffectName(const std::string& effect_name);
 // `text` with each of `effect_names` replaced by its PlainEffectName.
 std::string WithPlainEffectNames(std::string text, const std::vector<std::string>& effect_names);
 
-// True when the effect is an error of the bench during the calibration (radius, speed, tilt):
-// "correct it and refit"; false for a property of the sensor: "add it to the calibration".
+// True when the effect is an error of the bench during the calibration (radius, speed, tilt;
+// Effect::IsBenchError): "correct it and refit"; false for a property of the sensor or an
+// unknown effect: "add it to the calibration".
 bool IsBenchError(const std::string& effect_name);
 
 struct DiagnosisWords {

@@ -24,6 +24,25 @@ constexpr double kMaxRpmScale = 0.05;
 constexpr double kMaxSizeEffectM = 0.01;
 constexpr double kMaxTiltDeg = 5.0;
 
+// "<lead>3.0 mm longer<tail> (+-0.2 mm)": the first of `values` and of `sigmas` times `factor`;
+// none when the value is not a number.
+std::optional<BenchStatement> DirectionStatement(std::string lead, std::span<const double> values,
+                                                 std::span<const double> sigmas, double factor, int decimals,
+                                                 std::string unit, std::string positive, std::string negative,
+                                                 std::string tail) {
+  const double value = FirstOf(values);
+  if (!std::isfinite(value)) return std::nullopt;
+  BenchStatement s{std::move(lead), {}, std::move(tail)};
+  s.size.shape = BenchQuantity::Shape::kDirection;
+  s.size.values = {value * factor};
+  s.size.sigma = FirstOf(sigmas) * factor;
+  s.size.unit = std::move(unit);
+  s.size.decimals = decimals;
+  s.size.positive = std::move(positive);
+  s.size.negative = std::move(negative);
+  return s;
+}
+
 double SmallestRadius(const std::vector<FitCapture>& captures) {
   double smallest = INFINITY;
   for (const FitCapture& c : captures)
@@ -31,8 +50,21 @@ double SmallestRadius(const std::vector<FitCapture>& captures) {
   return smallest;
 }
 
+// What the bench's errors share: they act on the turntable runs' reference and grow with w^2 r,
+// correct at the last stage (the bench's geometry), never later readings, and the advice is to
+// correct the bench and refit.
+template <class Derived>
+class BenchError : public DifferentiableEffect<Derived> {
+ public:
+  std::string_view RegressorName() const override { return "w^2 r"; }
+  double Regressor(const FitCapture& c) const override { return CentripetalMps2(c); }
+  int CorrectionStage() const override { return 3; }
+  bool CorrectsReadings() const override { return false; }
+  bool IsBenchError() const override { return true; }
+};
+
 // --- radius_offset ---------------------------------------------------------------------------
-class RadiusOffset final : public DifferentiableEffect<RadiusOffset> {
+class RadiusOffset final : public BenchError<RadiusOffset> {
  public:
   std::string_view Name() const override { return "radius_offset"; }
   std::string_view Story() const override {
@@ -62,14 +94,17 @@ class RadiusOffset final : public DifferentiableEffect<RadiusOffset> {
              CorrectedCaptureOf<S>* out) const {
     if (c.kind == CaptureKind::kTurntable) out->radius_m += dr[0];
   }
-  std::string_view RegressorName() const override { return "w^2 r"; }
-  double Regressor(const FitCapture& c) const override { return CentripetalMps2(c); }
-  int CorrectionStage() const override { return 3; }
-  bool CorrectsReadings() const override { return false; }
+  std::string_view PlainName() const override { return "a wrong turntable radius"; }
+  bool TakesGravityErrorForItsOwn() const override { return true; }
+  std::optional<BenchStatement> InBenchTerms(std::span<const double> dr, std::span<const double> sigma,
+                                             std::string_view, double) const override {
+    return DirectionStatement("the turntable radius seems ", dr, sigma, 1000.0, 1, "mm", "longer", "shorter",
+                              " than entered");
+  }
 };
 
 // --- rpm_scale -------------------------------------------------------------------------------
-class RpmScale final : public DifferentiableEffect<RpmScale> {
+class RpmScale final : public BenchError<RpmScale> {
  public:
   std::string_view Name() const override { return "rpm_scale"; }
   std::string_view Story() const override {
@@ -96,17 +131,20 @@ class RpmScale final : public DifferentiableEffect<RpmScale> {
              CorrectedCaptureOf<S>* out) const {
     if (c.kind == CaptureKind::kTurntable) out->omega_rad_per_s *= 1.0 + s[0];
   }
-  std::string_view RegressorName() const override { return "w^2 r"; }
-  double Regressor(const FitCapture& c) const override { return CentripetalMps2(c); }
-  int CorrectionStage() const override { return 3; }
-  bool CorrectsReadings() const override { return false; }
+  std::string_view PlainName() const override { return "a wrong table speed"; }
+  bool TakesGravityErrorForItsOwn() const override { return true; }
+  std::optional<BenchStatement> InBenchTerms(std::span<const double> s, std::span<const double> sigma,
+                                             std::string_view, double) const override {
+    return DirectionStatement("the turntable seems to turn ", s, sigma, 100.0, 2, "%", "faster", "slower",
+                              " than entered");
+  }
 };
 
 // --- size_effect -----------------------------------------------------------------------------
 // Each axis's proof mass sits d_j along its own axis from the nominal sensing point; an axis in
 // the table's plane then feels the centripetal acceleration of its own radius: -w^2 d_j extra
 // along itself (radial or tangential alike); the vertical axis feels none.
-class SizeEffect final : public DifferentiableEffect<SizeEffect> {
+class SizeEffect final : public BenchError<SizeEffect> {
  public:
   std::string_view Name() const override { return "size_effect"; }
   std::string_view Story() const override {
@@ -155,10 +193,12 @@ class SizeEffect final : public DifferentiableEffect<SizeEffect> {
       out->raw_counts(j) += base.scale_counts_per_mps2(j) * w2 * d[j] * in_plane;
     }
   }
-  std::string_view RegressorName() const override { return "w^2 r"; }
-  double Regressor(const FitCapture& c) const override { return CentripetalMps2(c); }
-  int CorrectionStage() const override { return 3; }
-  bool CorrectsReadings() const override { return false; }
+  std::string_view PlainName() const override { return "the sensor's size"; }
+  std::optional<BenchStatement> InBenchTerms(std::span<const double> d, std::span<const double>, std::string_view,
+                                             double) const override {
+    return PerAxisStatement("each axis senses at a point off the one the radius was measured to: ", d, 1000.0, 1,
+                            "mm");
+  }
 };
 
 // --- turntable_tilt --------------------------------------------------------------------------
@@ -167,7 +207,7 @@ class SizeEffect final : public DifferentiableEffect<SizeEffect> {
 // it averages out of a capture's mean over whole revolutions. The mean then shows
 // |f| = sqrt((g cos theta)^2 + (w^2 r)^2). The parameter is 1 - cos(theta) (a tilt is felt in
 // its square, so theta itself would be a poor parameter near zero), never negative.
-class TurntableTilt final : public DifferentiableEffect<TurntableTilt> {
+class TurntableTilt final : public BenchError<TurntableTilt> {
  public:
   std::string_view Name() const override { return "turntable_tilt"; }
   std::string_view Story() const override {
@@ -207,10 +247,13 @@ class TurntableTilt final : public DifferentiableEffect<TurntableTilt> {
              CorrectedCaptureOf<S>* out) const {
     if (c.kind == CaptureKind::kTurntable) out->gravity_along_axis *= 1.0 - loss[0];
   }
-  std::string_view RegressorName() const override { return "w^2 r"; }
-  double Regressor(const FitCapture& c) const override { return CentripetalMps2(c); }
-  int CorrectionStage() const override { return 3; }
-  bool CorrectsReadings() const override { return false; }
+  std::string_view PlainName() const override { return "a tilted turntable"; }
+  std::optional<BenchStatement> InBenchTerms(std::span<const double>, std::span<const double>,
+                                             std::string_view interpretation, double) const override {
+    std::string lead = "the turntable's spin axis is not vertical";
+    if (!interpretation.empty()) lead += ": " + std::string(interpretation);
+    return BenchStatement{std::move(lead), {}, "; level the turntable"};
+  }
 };
 
 }  // namespace

@@ -12,12 +12,16 @@
 #pragma once
 
 #include <memory>
+#include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include <Eigen/Core>
 
+#include "accelcal/calibration/diagnosis/bench_statement.h"
+#include "accelcal/calibration/diagnosis/c_correction.h"
 #include "accelcal/calibration/diagnosis/effect_jet.h"
 #include "accelcal/calibration/fit/fit_capture.h"
 #include "accelcal/base/sensor_model.h"
@@ -79,6 +83,44 @@ class Effect {
   // True for properties of the sensor itself, which `accelcal apply` corrects in every reading;
   // false for errors of the bench during calibration (radius, speed), which it does not.
   virtual bool CorrectsReadings() const = 0;
+  // True when its correction reads the sensor's temperature (a capture's mean_temp_c, a
+  // reading's temp_c, relative to the context's temp_ref_c): `accelcal apply` then needs a
+  // temperature on every reading, and the C header's function takes one.
+  virtual bool ReadsTemperature() const { return false; }
+
+  // --- What the technician is told of it (bench_statement.h; app/wizard/diagnosis_words.h) ---
+  // Its name in the bench's words, lower case ("a wrong turntable radius"); empty (the
+  // default): Name() is said.
+  virtual std::string_view PlainName() const { return {}; }
+  // True for an error of the bench during the calibration (radius, speed, tilt): the advice is
+  // to correct it and refit; false for the sensor's own: to add it to the calibration.
+  virtual bool IsBenchError() const { return false; }
+  // What fitted parameters `values` (with their 1-sigma `sigmas`, and Interpretation() of them
+  // `interpretation`) mean at the bench, its size in bench units; `gravity_mps2` sizes a
+  // response at 1 g. None (the default, or values that make no statement): its name and
+  // parameters are said instead.
+  virtual std::optional<BenchStatement> InBenchTerms(std::span<const double> /*values*/,
+                                                     std::span<const double> /*sigmas*/,
+                                                     std::string_view /*interpretation*/,
+                                                     double /*gravity_mps2*/) const {
+    return std::nullopt;
+  }
+
+  // --- What the report says of it (report/report_model.h) ----------------------------------
+  // What a magnitude fit cannot resolve of it, said beside the nine parameters when it is
+  // adopted (one sentence, after its name); empty (the default): nothing.
+  virtual std::string_view ReportNote() const { return {}; }
+  // True when the captures see its size only through w^2 r / g (a speed or radius scale): an
+  // error of the gravity value looks the same, and while gravity is the standard value the
+  // report says so and the verdict cannot be PASS.
+  virtual bool TakesGravityErrorForItsOwn() const { return false; }
+
+  // --- How each export carries it (io/export/) ----------------------------------------------
+  // Every export writes its parameters (CSV) and says what it cannot hold; a session's effect
+  // (CorrectsReadings false) is never carried (a note says so), nor by a per-axis offset and
+  // scale (ArduPilot, PX4) any effect. A sensor's effect in the C header: its C form
+  // (c_correction.h); without one (the default), the header refuses the calibration, naming it.
+  virtual std::optional<CCorrection> InC() const { return std::nullopt; }
 };
 
 // An effect whose correction is written once, as
@@ -112,9 +154,29 @@ std::vector<const Effect*> InCorrectionOrder(std::vector<const Effect*> effects)
 // line reads "rpm_scale = 0.00136 +- 4.4e-05", never "... 4.4e-05 1".
 inline std::string_view UnitAfterValue(std::string_view unit) { return unit == "1" ? std::string_view() : unit; }
 
-// The library, in a fixed order. Ownership: the returned effects are static; never freed.
+// The library, in a fixed order: the effects the diagnosis tries. Ownership: the returned effects
+// are static; never freed.
 const std::vector<const Effect*>& AllEffects();
-// nullptr when there is no effect of that name.
+// Every effect known by name: the library's, then the registered ones (EffectRegistration) in
+// the order registered.
+std::vector<const Effect*> KnownEffects();
+// The known effect of that name; nullptr when there is none.
 const Effect* FindEffect(std::string_view name);
+
+// Makes `effect`, defined outside the library (a test's), known by name while the registration
+// lives: a calibration that lists it is read, applied, put in words, reported and exported as
+// one of the library's (each of those asks the effect, never its name). The diagnosis tries only
+// the library's. `effect` must outlive the registration. Throws accelcal::Error when a known
+// effect already has its name.
+class EffectRegistration {
+ public:
+  explicit EffectRegistration(const Effect& effect);
+  ~EffectRegistration();
+  EffectRegistration(const EffectRegistration&) = delete;
+  EffectRegistration& operator=(const EffectRegistration&) = delete;
+
+ private:
+  const Effect* effect_;
+};
 
 }  // namespace accelcal

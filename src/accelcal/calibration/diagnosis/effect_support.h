@@ -1,8 +1,10 @@
 // What the effects of the library (sensor_effects.cpp, bench_effects.cpp) share: how they look
-// at a set of captures to decide whether it identifies them, and the bounds of what is
-// physically plausible. Private to the diagnosis (the effects are reached through effect.h).
+// at a set of captures to decide whether it identifies them, the bounds of what is physically
+// plausible, and the forms of their statements in bench units. Private to the diagnosis (the
+// effects are reached through effect.h).
 #pragma once
 
+#include <span>
 #include <string>
 #include <vector>
 
@@ -15,6 +17,8 @@ namespace accelcal::effects {
 
 // "q_x", "q_y", "q_z" for stem "q".
 std::string PerAxis(const char* stem, int axis);
+// All three: {"q_x", "q_y", "q_z"}.
+std::vector<std::string> PerAxisNames(const char* stem);
 
 // The full scale the nonlinearity bound is taken against, m/s^2: 6 g, the widest range of the
 // seed's MMA7260Q (the lab chapter's part).
@@ -49,16 +53,11 @@ std::vector<Eigen::Vector3d> RoughDirections(const std::vector<FitCapture>& capt
 // The stated centripetal acceleration of a turntable capture, m/s^2; NaN for a static one.
 double CentripetalMps2(const FitCapture& c);
 
-// The library's effects, each a static object (never freed).
-const Effect& QuadraticNonlinearityEffect();
-const Effect& CubicNonlinearityEffect();
-const Effect& CrossAxisCouplingEffect();
-const Effect& TemperatureBiasEffect();
-const Effect& TemperatureScaleEffect();
-const Effect& BiasDriftEffect();
-const Effect& RadiusOffsetEffect();
-const Effect& RpmScaleEffect();
-const Effect& SizeEffectEffect();
-const Effect& TurntableTiltEffect();
+// The first of `values`; NaN when there are none.
+double FirstOf(std::span<const double> values);
+// "<lead>x +4.0, y -2.0, z +0.0 <unit>": each of `values` times `factor`, in `unit`, with
+// `decimals` digits after the point.
+BenchStatement PerAxisStatement(std::string lead, std::span<const double> values, double factor, int decimals,
+                                std::string unit);
 
 }  // namespace accelcal::effects

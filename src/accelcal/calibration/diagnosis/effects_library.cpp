@@ -3,9 +3,11 @@
 // bench_effects.cpp (errors of the bench during the calibration).
 #include <algorithm>
 #include <cmath>
+#include <mutex>
 
 #include <fmt/core.h>
 
+#include "accelcal/base/error.h"
 #include "accelcal/base/linear_algebra.h"
 #include "accelcal/calibration/diagnosis/effect_support.h"
 
@@ -28,6 +30,21 @@ double Spread(const std::vector<FitCapture>& captures, Get get) {
 }  // namespace
 
 std::string PerAxis(const char* stem, int axis) { return fmt::format("{}_{}", stem, "xyz"[axis]); }
+
+std::vector<std::string> PerAxisNames(const char* stem) { return {PerAxis(stem, 0), PerAxis(stem, 1), PerAxis(stem, 2)}; }
+
+double FirstOf(std::span<const double> values) { return values.empty() ? kNaN : values.front(); }
+
+BenchStatement PerAxisStatement(std::string lead, std::span<const double> values, double factor, int decimals,
+                                std::string unit) {
+  BenchStatement s;
+  s.lead = std::move(lead);
+  s.size.shape = BenchQuantity::Shape::kPerAxis;
+  for (double v : values) s.size.values.push_back(v * factor);
+  s.size.unit = std::move(unit);
+  s.size.decimals = decimals;
+  return s;
+}
 
 int CountTurntable(const std::vector<FitCapture>& captures) {
   int n = 0;
@@ -107,6 +124,20 @@ double CentripetalMps2(const FitCapture& c) {
   return w * w * c.radius_m;
 }
 
+// The library's effects, each a static object (never freed), defined beside its class: the
+// sensor's in sensor_effects.cpp, the bench's in bench_effects.cpp. A new effect is declared
+// here and listed below, and nowhere else (ARCHITECTURE.md, "How to add an effect").
+const Effect& QuadraticNonlinearityEffect();
+const Effect& CubicNonlinearityEffect();
+const Effect& CrossAxisCouplingEffect();
+const Effect& TemperatureBiasEffect();
+const Effect& TemperatureScaleEffect();
+const Effect& BiasDriftEffect();
+const Effect& RadiusOffsetEffect();
+const Effect& RpmScaleEffect();
+const Effect& SizeEffectEffect();
+const Effect& TurntableTiltEffect();
+
 }  // namespace effects
 
 const std::vector<const Effect*>& AllEffects() {
@@ -124,10 +155,50 @@ std::vector<const Effect*> InCorrectionOrder(std::vector<const Effect*> effects)
   return effects;
 }
 
-const Effect* FindEffect(std::string_view name) {
-  for (const Effect* e : AllEffects())
+namespace {
+
+// The effects registered from outside the library (EffectRegistration), under their lock.
+std::mutex& RegisteredEffectsMutex() {
+  static std::mutex mutex;
+  return mutex;
+}
+std::vector<const Effect*>& RegisteredEffects() {
+  static std::vector<const Effect*> registered;
+  return registered;
+}
+
+const Effect* FindIn(const std::vector<const Effect*>& effects, std::string_view name) {
+  for (const Effect* e : effects)
     if (e->Name() == name) return e;
   return nullptr;
+}
+
+}  // namespace
+
+std::vector<const Effect*> KnownEffects() {
+  std::vector<const Effect*> known = AllEffects();
+  const std::lock_guard<std::mutex> lock(RegisteredEffectsMutex());
+  known.insert(known.end(), RegisteredEffects().begin(), RegisteredEffects().end());
+  return known;
+}
+
+const Effect* FindEffect(std::string_view name) {
+  if (const Effect* e = FindIn(AllEffects(), name)) return e;
+  const std::lock_guard<std::mutex> lock(RegisteredEffectsMutex());
+  return FindIn(RegisteredEffects(), name);
+}
+
+EffectRegistration::EffectRegistration(const Effect& effect) : effect_(&effect) {
+  const std::lock_guard<std::mutex> lock(RegisteredEffectsMutex());
+  if (FindIn(AllEffects(), effect.Name()) != nullptr || FindIn(RegisteredEffects(), effect.Name()) != nullptr)
+    throw Error(fmt::format("an effect named '{}' is already known", effect.Name()));
+  RegisteredEffects().push_back(effect_);
+}
+
+EffectRegistration::~EffectRegistration() {
+  const std::lock_guard<std::mutex> lock(RegisteredEffectsMutex());
+  std::vector<const Effect*>& registered = RegisteredEffects();
+  registered.erase(std::remove(registered.begin(), registered.end(), effect_), registered.end());
 }
 
 }  // namespace accelcal

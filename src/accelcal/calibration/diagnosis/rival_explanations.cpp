@@ -56,6 +56,7 @@ class RivalTurntableShift final : public RivalBiasOffset<RivalTurntableShift> {
  public:
   std::string_view Name() const override { return kTurntableShiftName; }
   std::string_view Story() const override { return "the bias shifts while the table turns"; }
+  std::string_view PlainName() const override { return "a zero-g level that shifts while the table turns"; }
   std::string WhyNotIdentifiable(const std::vector<FitCapture>& captures) const override {
     const int turning = effects::CountTurntable(captures);
     const int still = static_cast<int>(captures.size()) - turning;
@@ -76,6 +77,7 @@ class RivalScaleAsymmetry final : public DifferentiableEffect<RivalScaleAsymmetr
   std::string_view Story() const override {
     return "each axis has a different scale for positive and negative inputs";
   }
+  std::string_view PlainName() const override { return "a sensitivity that differs for up and down"; }
   int NumParameters() const override { return 3; }
   std::string ParameterName(int i) const override { return effects::PerAxis("asym", i); }
   std::string ParameterUnit(int) const override { return "counts/(m/s^2)"; }
@@ -123,6 +125,14 @@ std::vector<RivalExplanation> RivalExplanations(const std::vector<FitCapture>& c
   add(std::make_unique<RivalTurntableShift>(), 0);
   add(std::make_unique<RivalScaleAsymmetry>(), 0);
   return rivals;
+}
+
+const Effect* FindRival(std::string_view name) {
+  static const RivalTurntableShift turntable_shift;
+  static const RivalScaleAsymmetry scale_asymmetry;
+  for (const Effect* rival : {static_cast<const Effect*>(&turntable_shift), static_cast<const Effect*>(&scale_asymmetry)})
+    if (rival->Name() == name) return rival;
+  return nullptr;
 }
 
 std::string RivalStory(const std::string& name) {

@@ -40,6 +40,9 @@ struct RivalExplanation {
 // stage 2 like the nonlinearities and the cross-axis coupling).
 std::vector<RivalExplanation> RivalExplanations(const std::vector<FitCapture>& captures);
 
+// The rival of that name (a static object, never freed); nullptr for a name that is not a rival.
+const Effect* FindRival(std::string_view name);
+
 // The rival's cause in plain words, and what to capture to tell it from an effect of the
 // library; empty for a name that is not a rival.
 std::string RivalStory(const std::string& name);

@@ -95,6 +95,26 @@ class QuadraticNonlinearity final : public DifferentiableEffect<QuadraticNonline
   }
   int CorrectionStage() const override { return 2; }
   bool CorrectsReadings() const override { return true; }
+  std::optional<CCorrection> InC() const override {
+    // The same root as Apply's, in the same stable form.
+    return CCorrection{
+        {{"quadratic_nonlinearity: q (counts per (m/s^2)^2)", "accelcal_quadratic_counts_per_mps2_sq",
+          PerAxisNames("q")}},
+        "  /* quadratic_nonlinearity: d = k u + q u^2, solved for u (root near d/k) */\n"
+        "  for (j = 0; j < 3; ++j) {\n"
+        "    const ACCELCAL_REAL k = accelcal_scale_counts_per_mps2[j];\n"
+        "    const ACCELCAL_REAL disc = k * k + 4 * accelcal_quadratic_counts_per_mps2_sq[j] * d[j];\n"
+        "    if (disc > 0) d[j] = k * (2 * d[j] / (k + (ACCELCAL_REAL)sqrt((double)disc)));\n"
+        "  }\n",
+        true, {"sqrt"}};
+  }
+  std::string_view PlainName() const override { return "a bent response"; }
+  std::optional<BenchStatement> InBenchTerms(std::span<const double> q, std::span<const double>, std::string_view,
+                                             double g) const override {
+    // q g^2: the term at 1 g, counts.
+    return PerAxisStatement("the sensor's output is not quite a straight line: at 1 g it bends by ", q, g * g, 1,
+                            "counts");
+  }
 };
 
 // --- cubic_nonlinearity --------------------------------------------------------------------
@@ -151,6 +171,32 @@ class CubicNonlinearity final : public DifferentiableEffect<CubicNonlinearity> {
   }
   int CorrectionStage() const override { return 2; }
   bool CorrectsReadings() const override { return true; }
+  std::optional<CCorrection> InC() const override {
+    // SolveCubic's Newton steps, with its stop where the slope collapses.
+    return CCorrection{
+        {{"cubic_nonlinearity: c3 (counts per (m/s^2)^3)", "accelcal_cubic_counts_per_mps2_cu", PerAxisNames("c3")}},
+        "  /* cubic_nonlinearity: d = k u + c3 u^3, solved for u by Newton from d/k */\n"
+        "  for (j = 0; j < 3; ++j) {\n"
+        "    const ACCELCAL_REAL k = accelcal_scale_counts_per_mps2[j];\n"
+        "    const ACCELCAL_REAL c3 = accelcal_cubic_counts_per_mps2_cu[j];\n"
+        "    ACCELCAL_REAL u = d[j] / k;\n"
+        "    int it;\n"
+        "    for (it = 0; it < 4; ++it) {\n"
+        "      const ACCELCAL_REAL slope = k + 3 * c3 * u * u;\n"
+        "      if (!(slope * slope > (ACCELCAL_REAL)0.01 * k * k)) break;\n"
+        "      u -= (k * u + c3 * u * u * u - d[j]) / slope;\n"
+        "    }\n"
+        "    d[j] = k * u;\n"
+        "  }\n",
+        true, {}};
+  }
+  std::string_view PlainName() const override { return "an S-shaped response"; }
+  std::optional<BenchStatement> InBenchTerms(std::span<const double> c3, std::span<const double>, std::string_view,
+                                             double g) const override {
+    // c3 g^3: the term at 1 g, counts.
+    return PerAxisStatement("the sensor's output is not quite a straight line (an S-bend): at 1 g by ", c3,
+                            g * g * g, 1, "counts");
+  }
 
  private:
   // The root of k u + c3 u^3 = d near d / k, by Newton from there: the term is a small
@@ -241,6 +287,38 @@ class CrossAxisCoupling final : public DifferentiableEffect<CrossAxisCoupling> {
   }
   int CorrectionStage() const override { return 2; }
   bool CorrectsReadings() const override { return true; }
+  std::optional<CCorrection> InC() const override {
+    return CCorrection{
+        {{"cross_axis_coupling: kappa (per m/s^2)", "accelcal_cross_kappa_per_mps2", {"kappa"}}},
+        "  /* cross_axis_coupling: each axis also reads kappa/3 times the product of the other two\n"
+        "     inputs (a magnitude fit sees only the sum kappa: shared equally) */\n"
+        "  {\n"
+        "    ACCELCAL_REAL u[3];\n"
+        "    for (j = 0; j < 3; ++j) u[j] = d[j] / accelcal_scale_counts_per_mps2[j];\n"
+        "    d[0] -= accelcal_scale_counts_per_mps2[0] * accelcal_cross_kappa_per_mps2 / 3 * u[1] * u[2];\n"
+        "    d[1] -= accelcal_scale_counts_per_mps2[1] * accelcal_cross_kappa_per_mps2 / 3 * u[2] * u[0];\n"
+        "    d[2] -= accelcal_scale_counts_per_mps2[2] * accelcal_cross_kappa_per_mps2 / 3 * u[0] * u[1];\n"
+        "  }\n",
+        true, {}};
+  }
+  std::string_view PlainName() const override { return "axes responding to each other"; }
+  std::string_view ReportNote() const override {
+    return "a magnitude fit sees only the sum kappa over the three axes of their coupling to the product of "
+           "the other two inputs; the correction shares it equally (right for |a|, not resolved per axis).";
+  }
+  std::optional<BenchStatement> InBenchTerms(std::span<const double> values, std::span<const double>,
+                                             std::string_view, double g) const override {
+    const double kappa = FirstOf(values);
+    if (!std::isfinite(kappa)) return std::nullopt;
+    // The corner pose (1, 1, 1)/sqrt(3) loads u_x u_y u_z = g^3 / (3 sqrt 3), where the
+    // coupling shows most: |a| moves by kappa times that over |u| = g.
+    const double corner_mps2 = g * g / (3.0 * std::sqrt(3.0));
+    BenchStatement s{"each axis also responds to the other two together: ", {}, " on a corner pose"};
+    s.size.shape = BenchQuantity::Shape::kValue;
+    s.size.values = {kappa * corner_mps2 * 1000.0};
+    s.size.unit = "mm/s^2";
+    return s;
+  }
 };
 
 // --- temperature_bias ------------------------------------------------------------------------
@@ -249,7 +327,24 @@ constexpr double kMaxTempBiasMps2PerC = 0.05;
 // 0.1 %/degC, accelcal's (about ten times a typical sensitivity drift).
 constexpr double kMaxTempScalePerC = 1e-3;
 
-class TemperatureBias final : public DifferentiableEffect<TemperatureBias> {
+// What the temperature effects share: a temperature on every capture identifies them, they grow
+// with it, and they read it in every reading they correct.
+template <class Derived>
+class TemperatureEffect : public DifferentiableEffect<Derived> {
+ public:
+  std::string WhyNotIdentifiable(const std::vector<FitCapture>& captures) const override {
+    return NeedsTemperature(captures);
+  }
+  std::string_view CapturePlan() const override {
+    return "a temperature on every capture, varying by 1 degC or more (and not in step with time)";
+  }
+  std::string_view RegressorName() const override { return "temperature"; }
+  double Regressor(const FitCapture& c) const override { return c.mean_temp_c; }
+  bool CorrectsReadings() const override { return true; }
+  bool ReadsTemperature() const override { return true; }
+};
+
+class TemperatureBias final : public TemperatureEffect<TemperatureBias> {
  public:
   std::string_view Name() const override { return "temperature_bias"; }
   std::string_view Story() const override {
@@ -260,12 +355,6 @@ class TemperatureBias final : public DifferentiableEffect<TemperatureBias> {
   std::string ParameterUnit(int) const override { return "counts/degC"; }
   double ParameterScale(int i, const SensorModel& base, const EffectContext&) const override {
     return base.scale_counts_per_mps2(i) * 1e-4;
-  }
-  std::string WhyNotIdentifiable(const std::vector<FitCapture>& captures) const override {
-    return NeedsTemperature(captures);
-  }
-  std::string_view CapturePlan() const override {
-    return "a temperature on every capture, varying by 1 degC or more (and not in step with time)";
   }
   std::string WhyImplausible(const double* tc, const SensorModel& base,
                              const std::vector<FitCapture>&) const override {
@@ -283,14 +372,23 @@ class TemperatureBias final : public DifferentiableEffect<TemperatureBias> {
     const double dt_c = c.mean_temp_c - ctx.temp_ref_c;
     for (int j = 0; j < 3; ++j) out->raw_counts(j) -= tc[j] * dt_c;
   }
-  std::string_view RegressorName() const override { return "temperature"; }
-  double Regressor(const FitCapture& c) const override { return c.mean_temp_c; }
   int CorrectionStage() const override { return 0; }
-  bool CorrectsReadings() const override { return true; }
+  std::optional<CCorrection> InC() const override {
+    return CCorrection{
+        {{"", "accelcal_tc_bias_counts_per_degc", PerAxisNames("tc_bias")}},
+        "  /* temperature_bias: the zero-g level moves by tc counts per degC */\n"
+        "  for (j = 0; j < 3; ++j) d[j] -= accelcal_tc_bias_counts_per_degc[j] * dt_c;\n",
+        false, {}};
+  }
+  std::string_view PlainName() const override { return "a zero-g level moving with temperature"; }
+  std::optional<BenchStatement> InBenchTerms(std::span<const double> tc, std::span<const double>, std::string_view,
+                                             double) const override {
+    return PerAxisStatement("the zero-g level moves with temperature: ", tc, 1.0, 2, "counts per degC");
+  }
 };
 
 // --- temperature_scale -----------------------------------------------------------------------
-class TemperatureScale final : public DifferentiableEffect<TemperatureScale> {
+class TemperatureScale final : public TemperatureEffect<TemperatureScale> {
  public:
   std::string_view Name() const override { return "temperature_scale"; }
   std::string_view Story() const override {
@@ -300,12 +398,6 @@ class TemperatureScale final : public DifferentiableEffect<TemperatureScale> {
   std::string ParameterName(int i) const override { return PerAxis("tc_scale", i); }
   std::string ParameterUnit(int) const override { return "1/degC"; }
   double ParameterScale(int, const SensorModel&, const EffectContext&) const override { return 1e-5; }
-  std::string WhyNotIdentifiable(const std::vector<FitCapture>& captures) const override {
-    return NeedsTemperature(captures);
-  }
-  std::string_view CapturePlan() const override {
-    return "a temperature on every capture, varying by 1 degC or more (and not in step with time)";
-  }
   std::string WhyImplausible(const double* tc, const SensorModel&,
                              const std::vector<FitCapture>&) const override {
     for (int j = 0; j < 3; ++j)
@@ -323,10 +415,19 @@ class TemperatureScale final : public DifferentiableEffect<TemperatureScale> {
       out->raw_counts(j) = base.bias_counts(j) +
                            (out->raw_counts(j) - base.bias_counts(j)) / (1.0 + tc[j] * dt_c);
   }
-  std::string_view RegressorName() const override { return "temperature"; }
-  double Regressor(const FitCapture& c) const override { return c.mean_temp_c; }
   int CorrectionStage() const override { return 1; }
-  bool CorrectsReadings() const override { return true; }
+  std::optional<CCorrection> InC() const override {
+    return CCorrection{
+        {{"", "accelcal_tc_scale_per_degc", PerAxisNames("tc_scale")}},
+        "  /* temperature_scale: the sensitivity is k (1 + tc dT) */\n"
+        "  for (j = 0; j < 3; ++j) d[j] /= (ACCELCAL_REAL)1 + accelcal_tc_scale_per_degc[j] * dt_c;\n",
+        false, {}};
+  }
+  std::string_view PlainName() const override { return "a sensitivity changing with temperature"; }
+  std::optional<BenchStatement> InBenchTerms(std::span<const double> tc, std::span<const double>, std::string_view,
+                                             double) const override {
+    return PerAxisStatement("the sensitivity changes with temperature: ", tc, 100.0, 3, "% per degC");
+  }
 };
 
 // --- bias_drift ------------------------------------------------------------------------------
@@ -378,6 +479,11 @@ class BiasDrift final : public DifferentiableEffect<BiasDrift> {
   double Regressor(const FitCapture& c) const override { return c.mean_t_s; }
   int CorrectionStage() const override { return 0; }
   bool CorrectsReadings() const override { return false; }  // a session artifact, see README
+  std::string_view PlainName() const override { return "a drifting zero-g level"; }
+  std::optional<BenchStatement> InBenchTerms(std::span<const double> drift, std::span<const double>,
+                                             std::string_view, double) const override {
+    return PerAxisStatement("the zero-g level drifts during the session: ", drift, 60.0, 2, "counts per minute");
+  }
 };
 
 }  // namespace
