@@ -65,6 +65,20 @@ TEST(RefitSession, ACorrectedGravityIsFittedAgainAndTheEarlierResultKept) {
   EXPECT_TRUE(UnusedResumeFlags(*MakeMemoryJournal(), "new.db", "--latitude 0", "Lab 2").empty());
 }
 
+// A session resumed before its end: the flag is named, and the refit is for when it is finished
+// (a session without a calibration has nothing to refit).
+TEST(RefitSession, AFlagOnASessionUnderWayIsNamedWithTheRefitForItsEnd) {
+  const std::unique_ptr<SessionJournal> journal = MakeMemoryJournal();
+  journal->RecordInput("welcome", "gravity", "standard");
+  journal->RecordInput("welcome", "place", "Lab 1");
+  const std::vector<std::string> notes = UnusedResumeFlags(*journal, "s.db", "--latitude 0", "Lab 2");
+  ASSERT_EQ(notes.size(), 2u);
+  EXPECT_EQ(notes[0], "--latitude 0 ignored: this session's gravity was recorded at its welcome (standard); to "
+                      "calibrate it with another, once the session is finished: accelcal refit s.db --latitude 0");
+  EXPECT_EQ(notes[1], "--place Lab 2 ignored: this session's place was recorded at its welcome (Lab 1); to "
+                      "change it, once the session is finished: accelcal refit s.db --place 'Lab 2'");
+}
+
 TEST(RefitSession, ARefusedValueRecordsNothing) {
   const std::shared_ptr<SessionJournal> journal = FinishedOnTheStandardGravity();
   const auto inputs = journal->Inputs();

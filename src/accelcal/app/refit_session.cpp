@@ -149,15 +149,17 @@ std::vector<std::string> UnusedResumeFlags(const SessionJournal& journal, const 
                                            const std::string& gravity_flag, const std::string& place_flag) {
   const Inputs inputs = journal.Inputs();
   std::vector<std::string> out;
+  // A session still under way has no calibration to refit yet: the command is for its end.
+  const std::string when = journal.ResultCount() > 0 ? "" : ", once the session is finished";
   const std::string gravity = WelcomeInput(inputs, "gravity");
   if (!gravity_flag.empty() && !gravity.empty())
     out.push_back(fmt::format("{} ignored: this session's gravity was recorded at its welcome ({}); to "
-                              "calibrate it with another: accelcal refit {} {}",
-                              gravity_flag, gravity, session, gravity_flag));
+                              "calibrate it with another{}: accelcal refit {} {}",
+                              gravity_flag, gravity, when, session, gravity_flag));
   if (!place_flag.empty() && inputs.count(kWelcomeStepId) != 0 && inputs.at(kWelcomeStepId).count("place") != 0)
     out.push_back(fmt::format("--place {} ignored: this session's place was recorded at its welcome ({}); "
-                              "to change it: accelcal refit {} --place '{}'",
-                              place_flag, WelcomeInput(inputs, "place"), session, place_flag));
+                              "to change it{}: accelcal refit {} --place '{}'",
+                              place_flag, WelcomeInput(inputs, "place"), when, session, place_flag));
   return out;
 }
 

@@ -55,7 +55,8 @@ std::vector<std::string> SessionHistory(const SessionJournal& journal, int earli
 
 // The wizard's flags that a run on this (existing) session does not use, each named with why
 // and what to do instead: "--latitude 0 ignored: this session's gravity was recorded at its
-// welcome (standard); use accelcal refit SESSION --latitude 0". `gravity_flag` and
+// welcome (standard); to calibrate it with another: accelcal refit SESSION --latitude 0" (",
+// once the session is finished" when it has no calibration yet). `gravity_flag` and
 // `place_flag` as given ("" when not).
 std::vector<std::string> UnusedResumeFlags(const SessionJournal& journal, const std::string& session,
                                            const std::string& gravity_flag, const std::string& place_flag);
