@@ -17,7 +17,7 @@ namespace {
 using namespace accelcal;
 
 constexpr double kRateHz = 10000.0;
-constexpr long kSamples = 200000;  // 20 s of stream
+constexpr long kStreamSamples = 200000;  // 20 s of stream
 
 const SensorModel& Model() {
   static const SensorModel model = sim::DefaultScenario().sensor.model;
@@ -31,7 +31,7 @@ const std::vector<Sample>& StillSamples() {
     std::mt19937_64 rng(1);
     std::normal_distribution<double> noise(0.0, 1.5);
     const Eigen::Vector3d ideal = Model().Raw({0.0, 0.0, 9.80665});
-    for (long k = 0; k < kSamples; ++k) {
+    for (long k = 0; k < kStreamSamples; ++k) {
       Sample s;
       s.t_s = static_cast<double>(k) / kRateHz;
       s.raw_counts = (ideal + Eigen::Vector3d(noise(rng), noise(rng), noise(rng))).array().round();
@@ -67,9 +67,9 @@ CaptureEngine MakeEngine() {
 }
 
 void SetCounters(benchmark::State& state) {
-  const double per_iteration = static_cast<double>(kSamples);
-  state.SetItemsProcessed(static_cast<int64_t>(state.iterations()) * kSamples);
-  // CPU time for kSamples / kRateHz seconds of stream, as % of one core: elapsed / (n / 1e6).
+  const double per_iteration = static_cast<double>(kStreamSamples);
+  state.SetItemsProcessed(static_cast<int64_t>(state.iterations()) * kStreamSamples);
+  // CPU time for kStreamSamples / kRateHz seconds of stream, as % of one core: elapsed / (n / 1e6).
   state.counters["core_pct_at_10kHz"] = benchmark::Counter(
       per_iteration / (kRateHz * 100.0),
       benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
@@ -84,7 +84,7 @@ void BM_StabilityMonitor10kHz(benchmark::State& state) {
                                    2.0);
     CaptureStats stats;
     long stable = 0;
-    for (long k = 0; k < kSamples; ++k) {
+    for (long k = 0; k < kStreamSamples; ++k) {
       monitor.Add(samples[static_cast<size_t>(k)]);
       stats.Add(samples[static_cast<size_t>(k)]);
       if (k % 500 == 0) stable += monitor.Verdict().stable ? 1 : 0;

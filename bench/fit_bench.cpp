@@ -62,7 +62,7 @@ void BM_FitSeedPlan(benchmark::State& state) {
 BENCHMARK(BM_FitSeedPlan)->Unit(benchmark::kMicrosecond);
 
 void BM_RecordingWholeProcess(benchmark::State& state) {
-  const std::string path = std::string(ACCELCAL_SHARED_DATA_DIR) + "/imu_tk/xsens_acc.mat";
+  const std::string path = std::string(ACCELCAL_SOURCE_DIR) + "/tests/data/imu_tk/xsens_acc.mat";
   if (!std::filesystem::exists(path)) {
     state.SkipWithError("imu_tk data not found");
     return;

@@ -14,7 +14,7 @@
 
 namespace {
 
-const std::string kImuTkPath = std::string(ACCELCAL_SHARED_DATA_DIR) + "/imu_tk/xsens_acc.mat";
+const std::string kImuTkPath = std::string(ACCELCAL_SOURCE_DIR) + "/tests/data/imu_tk/xsens_acc.mat";
 
 // Parsing only: the text is already in memory.
 void BM_ParseRecordingImuTk(benchmark::State& state) {

@@ -21,7 +21,7 @@
 #
 # Rows (peer / accelcal = how many times faster accelcal is; the goal is >= 10):
 #   fit     accelcal fit --recording XSENS --gravity 9.81744   vs  IMU_TK_ACC_CMD XSENS
-#           (the imu_tk Xsens file, ../shared/data/imu_tk/xsens_acc.mat by default)
+#           (the imu_tk Xsens file, tests/data/imu_tk/xsens_acc.mat by default)
 #   fit --no-diagnose  the same with the nine parameters only (imu_tk's work: no model search)
 #   allan   accelcal allan REC (three axes)                     vs  ALLANTOOLS_CMD REC R 1,2,3
 #   allan/axis  accelcal's three-axis figure / 3                vs  ALLANTOOLS_CMD REC R 1
@@ -51,7 +51,7 @@ accelcal_bench=$repo/build-release/bench/accelcal_bench
 imu_tk_cmd=${IMU_TK_ACC_CMD:-}
 allantools_cmd=${ALLANTOOLS_CMD:-}
 hours=12 rate=1000 read_hours=1 runs=7 allan_runs=3 reps=10
-xsens=$repo/../shared/data/imu_tk/xsens_acc.mat
+xsens=$repo/tests/data/imu_tk/xsens_acc.mat
 workdir=${TMPDIR:-/tmp}/accelcal-bench-peers
 
 die() { echo "bench_peers: $*" >&2; exit 2; }

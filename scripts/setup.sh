@@ -17,9 +17,11 @@ packages=(
 package_packages=(dpkg-dev file)
 # Only the tests need these: headless Chromium renders the HTML report and prints it to PDF,
 # poppler-utils reads the PDF's pages back (tests/e2e/report_html.sh); man-db's man reads the
-# manual pages (tests/e2e/man_pages.sh, package_deb.sh); Node.js and its npm run the bag writers
-# and readers written elsewhere that the bag tests install (tests/e2e/bags_*.sh).
-test_packages=(chromium poppler-utils man-db nodejs)
+# manual pages (tests/e2e/man_pages.sh, package_deb.sh); libiio's tools read the fake IIO tree
+# beside accelcal (tests/e2e/iio_devices.sh). Node.js and its npm run the peers written elsewhere
+# that the tests install into the build directory when they first need them: the bag writers and
+# readers (tests/e2e/bags_*.sh) and the MAVLink test vehicle on node-mavlink (tests/peers/).
+test_packages=(chromium poppler-utils man-db libiio-utils nodejs)
 case "${1:-}" in
   --no-test) ;;
   --package) packages+=("${package_packages[@]}") ;;

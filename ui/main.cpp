@@ -64,6 +64,7 @@ int main(int argc, char** argv) {
   accelcal::cli::SetupWizardCommand(app);
   accelcal::cli::SetupAllanCommand(app);
   accelcal::cli::SetupNoiseCommand(app);
+  accelcal::cli::SetupDeviceInfoCommand(app);
   accelcal::cli::SetupBagInfoCommand(app);
   accelcal::cli::SetupHelpCommands(app, "accelcal " + VersionText());  // last: it walks the others
   accelcal::cli::RefuseNegativeWholeNumbers(app);

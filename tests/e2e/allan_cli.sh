@@ -7,7 +7,7 @@
 #   - the same record with 60 s cut out: one gap listed with its 6000 missing samples, the
 #     figures still right;
 #   - counts vs m/s^2 with a calibration; errors (missing file, malformed line) named.
-# Called by ctest as: allan_cli.sh ACCELCAL SOURCE_DIR SHARED_DATA_DIR
+# Called by ctest as: allan_cli.sh ACCELCAL SOURCE_DIR DATA_DIR
 set -euo pipefail
 accelcal=$1 src=$2 data=$3
 : "$data"

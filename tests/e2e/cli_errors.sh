@@ -3,7 +3,7 @@
 # "accelcal: error:" line (a suggestion may follow), exit 1 for bad input or a refusal, 2 for a
 # wrong command line; a mistyped option gets "did you mean"; a bound is readable; a serial port
 # that is not there is refused before a session file exists; `accelcal sessions` keeps its
-# columns with long fields. Usage: cli_errors.sh ACCELCAL SOURCE_DIR SHARED_DATA_DIR
+# columns with long fields. Usage: cli_errors.sh ACCELCAL SOURCE_DIR DATA_DIR
 set -euo pipefail
 accelcal=$1 src=$2
 make_session=$(dirname "$accelcal")/accelcal_make_session

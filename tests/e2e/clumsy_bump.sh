@@ -2,7 +2,7 @@
 # The clumsy bench (scenarios/clumsy_bump.toml): a knock on the bench during the capture of the
 # tilted pose +x+y+z. The capture is retried by itself (never taken with the knock in it), and
 # the technician is told so in words about the bench.
-# Usage: bash clumsy_bump.sh ACCELCAL SOURCE_DIR SHARED_DATA_DIR
+# Usage: bash clumsy_bump.sh ACCELCAL SOURCE_DIR DATA_DIR
 set -euo pipefail
 accelcal=$1
 source_dir=$2

@@ -6,7 +6,7 @@
 # same and the report cannot PASS: FAIL, the standard value's uncertainty (0.023 m/s^2) putting
 # the scales' U over the procedure's limit (issue 27: the verdict on the certificate's U), and
 # "gravity not established"; given the measured value, the calibration is right.
-# Usage: bash clumsy_local_gravity.sh ACCELCAL SOURCE_DIR SHARED_DATA_DIR
+# Usage: bash clumsy_local_gravity.sh ACCELCAL SOURCE_DIR DATA_DIR
 set -euo pipefail
 accelcal=$1
 source_dir=$2

@@ -6,7 +6,7 @@
 # Then the same bench with a procedure that states no expected noise: the shaking floor passes,
 # the first still capture proves it too high, it is lowered, and the shaking captures judged
 # with it are left out and taken again.
-# Usage: bash clumsy_shaking.sh ACCELCAL SOURCE_DIR SHARED_DATA_DIR
+# Usage: bash clumsy_shaking.sh ACCELCAL SOURCE_DIR DATA_DIR
 set -euo pipefail
 accelcal=$1
 source_dir=$2

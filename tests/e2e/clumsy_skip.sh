@@ -3,7 +3,7 @@
 # 17 used ... Overall: PASS". Now s asks first (Enter keeps the step), a skipped required step
 # is listed and the verdict is INCOMPLETE, in the wizard and in `accelcal report` later.
 # A real source with an empty device serial is refused when the procedure requires one.
-# Usage: bash clumsy_skip.sh ACCELCAL SOURCE_DIR SHARED_DATA_DIR
+# Usage: bash clumsy_skip.sh ACCELCAL SOURCE_DIR DATA_DIR
 set -euo pipefail
 accelcal=$1
 source_dir=$2

@@ -4,7 +4,7 @@
 # is right, but not PASS (issue 27, item 4): the lab's turntable is verified to 0.02 %, so either
 # that verification or the gravity is wrong, and both checks are named. On the standard value
 # it names the gravity ambiguity and the report cannot PASS.
-# Usage: bash clumsy_slow_turntable.sh ACCELCAL SOURCE_DIR SHARED_DATA_DIR
+# Usage: bash clumsy_slow_turntable.sh ACCELCAL SOURCE_DIR DATA_DIR
 set -euo pipefail
 accelcal=$1
 source_dir=$2

@@ -2,7 +2,7 @@
 # The clumsy bench (scenarios/clumsy_tilted_table.toml): the table stands tilted on its feet.
 # The leveling (reversal method) says which feet to raise; the technician turns them by 70 %
 # of the advice, and the loop converges until the table is level within tolerance.
-# Usage: bash clumsy_tilted_table.sh ACCELCAL SOURCE_DIR SHARED_DATA_DIR
+# Usage: bash clumsy_tilted_table.sh ACCELCAL SOURCE_DIR DATA_DIR
 set -euo pipefail
 accelcal=$1
 source_dir=$2

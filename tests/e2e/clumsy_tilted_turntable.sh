@@ -3,7 +3,7 @@
 # spin axis is tilted 2 deg. The run is refused with the tilt and leveling advice, the
 # technician levels it (to 0.4 deg), and the accepted runs have the swing removed: their noise
 # is the sensor's, and the calibration is right.
-# Usage: bash clumsy_tilted_turntable.sh ACCELCAL SOURCE_DIR SHARED_DATA_DIR
+# Usage: bash clumsy_tilted_turntable.sh ACCELCAL SOURCE_DIR DATA_DIR
 set -euo pipefail
 accelcal=$1
 source_dir=$2

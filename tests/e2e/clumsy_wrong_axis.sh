@@ -2,7 +2,7 @@
 # The clumsy bench (scenarios/clumsy_wrong_axis.toml), issue 12 problem 2: at "+x radial, +z up"
 # the technician mounts the sensor with +y outward. Once it was accepted and stored as "+x
 # radial"; now it is refused naming the radial axis, and the retry is right.
-# Usage: bash clumsy_wrong_axis.sh ACCELCAL SOURCE_DIR SHARED_DATA_DIR
+# Usage: bash clumsy_wrong_axis.sh ACCELCAL SOURCE_DIR DATA_DIR
 set -euo pipefail
 accelcal=$1
 source_dir=$2

@@ -2,7 +2,7 @@
 # The clumsy bench (scenarios/clumsy_wrong_face.toml): asked for -x up, the technician puts the
 # prism on -y up. The wizard refuses the capture naming the face; the retry takes the right
 # one; the calibration passes with the true parameters.
-# Usage: bash clumsy_wrong_face.sh ACCELCAL SOURCE_DIR SHARED_DATA_DIR
+# Usage: bash clumsy_wrong_face.sh ACCELCAL SOURCE_DIR DATA_DIR
 set -euo pipefail
 accelcal=$1
 source_dir=$2

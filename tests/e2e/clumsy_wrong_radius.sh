@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The clumsy bench (scenarios/clumsy_wrong_radius.toml): asked for 0.10 m, the technician mounts
 # the sensor at 0.15 m. The run is refused with what the measurement fits; the retry is right.
-# Usage: bash clumsy_wrong_radius.sh ACCELCAL SOURCE_DIR SHARED_DATA_DIR
+# Usage: bash clumsy_wrong_radius.sh ACCELCAL SOURCE_DIR DATA_DIR
 set -euo pipefail
 accelcal=$1
 source_dir=$2

@@ -59,7 +59,7 @@ expect_has "$accelcal fit --" --recording --output --no-diagnose --gravity --hel
 
 # Sources: the forms, the serial ports present, bauds; file: completes files. ':' and '=' break
 # words in bash, so each completion is what follows the last of them.
-expect_completions "$accelcal wizard --source " sim - file: serial: tcp: \
+expect_completions "$accelcal wizard --source " sim - file: serial: tcp: mavlink: iio: \
   "serial:$work/dev/ttyUSB0@" "serial:$work/dev/ttyACM1@"
 expect_completions "$accelcal wizard --source serial:" "$work/dev/ttyUSB0@" "$work/dev/ttyACM1@"
 expect_has "$accelcal record --source serial:$work/dev/ttyUSB0@" "$work/dev/ttyUSB0@115200" "$work/dev/ttyUSB0@9600"

@@ -4,7 +4,7 @@
 # kill -9 twice in the middle of the record, rerun each time: the record resumes with a gap
 # row, no committed chunk is lost or changed (checksums of the chunk rows before and after each
 # kill), and the final run completes: span = 12 h, samples = (span - gaps) x 100 Hz.
-# Called by ctest as: drift_resume.sh ACCELCAL SOURCE_DIR SHARED_DATA_DIR
+# Called by ctest as: drift_resume.sh ACCELCAL SOURCE_DIR DATA_DIR
 set -euo pipefail
 accelcal=$1
 source_dir=$2

@@ -3,7 +3,7 @@
 # (example) ... state its certificate" went through to a signed-looking PASS. A bench whose
 # uncertainties are good but whose items keep the procedure's example ids: INCOMPLETE, naming
 # them; the same bench with its ids given at the welcome: PASS.
-# Usage: bash equipment_identified.sh ACCELCAL SOURCE_DIR SHARED_DATA_DIR
+# Usage: bash equipment_identified.sh ACCELCAL SOURCE_DIR DATA_DIR
 set -euo pipefail
 accelcal=$1
 source_dir=$2

@@ -2,7 +2,7 @@
 # End to end: `accelcal export-cal` on a calibration made by simulate + fit, every target's file
 # checked (the C header compiled and run against `accelcal apply`, the parameter files parsed
 # and their values recomputed from the calibration), a session as input, and the failure paths.
-# Called by ctest as: export_cal.sh ACCELCAL SOURCE_DIR SHARED_DATA_DIR
+# Called by ctest as: export_cal.sh ACCELCAL SOURCE_DIR DATA_DIR
 set -euo pipefail
 accelcal=$1 src=$2 data=$3
 source "$(dirname "$0")/lib/common.bash"

@@ -4,7 +4,7 @@
 # (independent of accelcal's code), each calibrated from the command line and its numbers
 # checked against the truth by lib/check_truth.py (every fitted parameter within 4 sigma).
 # Also the capture set's `up` column (issue 13 item 4): a capture on the wrong face is named.
-# Called by ctest as: field_files.sh ACCELCAL SOURCE_DIR SHARED_DATA_DIR
+# Called by ctest as: field_files.sh ACCELCAL SOURCE_DIR DATA_DIR
 set -euo pipefail
 accelcal=$1 src=$2
 source "$(dirname "$0")/lib/common.bash"

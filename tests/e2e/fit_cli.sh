@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # End to end through the binary: simulate -> fit -> apply, and the exit codes and messages of
-# the failure paths. Called by ctest as: fit_cli.sh ACCELCAL SOURCE_DIR SHARED_DATA_DIR
+# the failure paths. Called by ctest as: fit_cli.sh ACCELCAL SOURCE_DIR DATA_DIR
 set -euo pipefail
 accelcal=$1 src=$2 data=$3
 source "$(dirname "$0")/lib/common.bash"
@@ -64,11 +64,9 @@ head -c 200 "$work/cal.json" >"$work/broken.json"
 expect 1 "$accelcal" apply "$work/broken.json" </dev/null
 grep -q "broken.json:[0-9]*:[0-9]*: not valid JSON" "$work/err" || fail "broken calibration message"
 
-# The real recording (skipped when the shared data is absent).
-if [ -f "$data/imu_tk/xsens_acc.mat" ]; then
-  expect 0 "$accelcal" fit --recording "$data/imu_tk/xsens_acc.mat" --gravity 9.81744 -o "$work/imu.json"
-  grep -q "static intervals: 38 found" "$work/out" || fail "imu_tk intervals"
-fi
+# The real recording (tests/data/imu_tk).
+expect 0 "$accelcal" fit --recording "$data/imu_tk/xsens_acc.mat" --gravity 9.81744 -o "$work/imu.json"
+grep -q "static intervals: 38 found" "$work/out" || fail "imu_tk intervals"
 
 # --help and --version.
 expect 0 "$accelcal" --version

@@ -6,7 +6,7 @@
 # Now the diagnosis names the ambiguity, and the verdict is INCOMPLETE: the lab's turntable is
 # verified to 0.02 %, so the verification or the gravity is wrong, and both checks are named;
 # with a turntable not verified, both checks are named too. Never PASS.
-# Usage: bash gravity_ambiguity.sh ACCELCAL SOURCE_DIR SHARED_DATA_DIR
+# Usage: bash gravity_ambiguity.sh ACCELCAL SOURCE_DIR DATA_DIR
 set -euo pipefail
 accelcal=$1
 source_dir=$2

@@ -3,7 +3,7 @@
 # (item 9); a calibration that cannot give finite outputs, or holds 1e999, is refused at read
 # with the file and field named and no library text (items 7, 11); text that is not UTF-8
 # never stops a JSON output (item 7).
-# Called by ctest as: hardening_cli.sh ACCELCAL SOURCE_DIR SHARED_DATA_DIR
+# Called by ctest as: hardening_cli.sh ACCELCAL SOURCE_DIR DATA_DIR
 set -euo pipefail
 accelcal=$1 src=$2 data=$3
 source "$(dirname "$0")/lib/common.bash"

@@ -3,7 +3,7 @@
 # changes of the true sensor (accelcal_make_session, built beside accelcal): listed in date
 # order with the right moves, flagged where they exceed 3 sigmas; another device kept apart;
 # an unknown device refused with the list of known ones.
-# Called by ctest as: history_cli.sh ACCELCAL SOURCE_DIR SHARED_DATA_DIR
+# Called by ctest as: history_cli.sh ACCELCAL SOURCE_DIR DATA_DIR
 set -euo pipefail
 accelcal=$1 src=$2 data=$3
 source "$(dirname "$0")/lib/common.bash"

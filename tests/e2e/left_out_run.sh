@@ -4,7 +4,7 @@
 # fit left it out ("it disagrees with the other captures"), and the certificate said "Overall:
 # PASS" and "Every step of the procedure was done." Now the wizard's summary, the report it
 # writes and `accelcal report` later say INCOMPLETE and name the run by its radius.
-# Usage: bash left_out_run.sh ACCELCAL SOURCE_DIR SHARED_DATA_DIR
+# Usage: bash left_out_run.sh ACCELCAL SOURCE_DIR DATA_DIR
 set -euo pipefail
 accelcal=$1
 source_dir=$2

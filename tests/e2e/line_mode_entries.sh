@@ -2,7 +2,7 @@
 # Line mode through the real binary (issue 15): "?" prints what the step expects and asks again;
 # a speed typed at the radius sets the speed; "0,05" is a radius; after a refused plan the speed
 # is asked again with the procedure's speed as the default, never the refused one; blanks are
-# the default. Usage: line_mode_entries.sh ACCELCAL SOURCE_DIR SHARED_DATA_DIR
+# the default. Usage: line_mode_entries.sh ACCELCAL SOURCE_DIR DATA_DIR
 set -euo pipefail
 accelcal=$1 src=$2
 work=$(mktemp -d)

@@ -3,7 +3,7 @@
 # accelcal_make_session --noise with known bias offsets and the default bench's white noise),
 # checked against the simulated truth; text and JSON; a calibration; a recording file; and the
 # failure paths (unknown device, one day only). Called by ctest as:
-#   noise_cli.sh ACCELCAL SOURCE_DIR SHARED_DATA_DIR
+#   noise_cli.sh ACCELCAL SOURCE_DIR DATA_DIR
 set -euo pipefail
 accelcal=$1 src=$2 data=$3
 : "$data"

@@ -3,7 +3,7 @@
 # memory does not grow with the record: a 200 s record at 10 kHz (2 M lines, 46 MB of text, 80 MB
 # as samples) analysed from the file and, held in memory, from a pipe; the two reports the same,
 # the file's peak resident set well under the pipe's. Called by ctest as:
-#   noise_memory.sh ACCELCAL SOURCE_DIR SHARED_DATA_DIR
+#   noise_memory.sh ACCELCAL SOURCE_DIR DATA_DIR
 set -euo pipefail
 accelcal=$1 src=$2 data=$3
 : "$data"

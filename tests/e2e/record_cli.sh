@@ -1,21 +1,17 @@
 #!/usr/bin/env bash
 # End to end through the binary: `accelcal record` from each kind of source that needs no
 # hardware (file, standard input, sim), the recording fitted, and a bad spec.
-# Called by ctest as: record_cli.sh ACCELCAL SOURCE_DIR SHARED_DATA_DIR
+# Called by ctest as: record_cli.sh ACCELCAL SOURCE_DIR DATA_DIR
 set -euo pipefail
 accelcal=$1 src=$2 data=$3
 source "$(dirname "$0")/lib/common.bash"
 
 # A recording replayed from a file, then fitted: the imu_tk tool's 38 intervals.
-if [ -f "$data/imu_tk/xsens_acc.mat" ]; then
-  expect 0 "$accelcal" record --source "file:$data/imu_tk/xsens_acc.mat" -o "$work/imu.txt"
-  grep -q "end of input; 51175 samples written" "$work/err" || { cat "$work/err"; fail "file record"; }
-  grep -q "ended, 100.0 Hz, 51175 samples, 0 malformed, 0 gaps" "$work/err" || fail "file status"
-  expect 0 "$accelcal" fit --recording "$work/imu.txt" --gravity 9.81744
-  grep -q "static intervals: 38 found" "$work/out" || fail "imu_tk intervals after record"
-else
-  echo "skipped the imu_tk replay: $data/imu_tk/xsens_acc.mat absent"
-fi
+expect 0 "$accelcal" record --source "file:$data/imu_tk/xsens_acc.mat" -o "$work/imu.txt"
+grep -q "end of input; 51175 samples written" "$work/err" || { cat "$work/err"; fail "file record"; }
+grep -q "ended, 100.0 Hz, 51175 samples, 0 malformed, 0 gaps" "$work/err" || fail "file status"
+expect 0 "$accelcal" fit --recording "$work/imu.txt" --gravity 9.81744
+grep -q "static intervals: 38 found" "$work/out" || fail "imu_tk intervals after record"
 
 # Standard input from a pipe, with a malformed line reported but not fatal.
 { echo "# from a pipe"; for i in $(seq 0 199); do echo "$i.5 $i 2000 3000"; done; echo "300 x 1 2"; } \
@@ -41,7 +37,7 @@ grep -q "interrupted" "$work/err" || { cat "$work/err"; fail "interrupt not repo
 # A bad spec: exit 1, one line on stderr.
 expect 1 "$accelcal" record --source foo -o "$work/x.txt"
 [ "$(wc -l <"$work/err")" -eq 1 ] || fail "more than one line on stderr"
-grep -q "accelcal: error: unknown source 'foo': expected sim, file:PATH, serial:DEVICE@BAUD, tcp:HOST:PORT or -" \
+grep -q "accelcal: error: unknown source 'foo': expected sim, file:PATH, serial:DEVICE@BAUD, tcp:HOST:PORT, mavlink:LINK, iio:NAME or -" \
   "$work/err" || { cat "$work/err"; fail "bad spec message"; }
 expect 1 "$accelcal" record --source serial:/dev/ttyUSB0@12345 -o "$work/x.txt"
 grep -q "unsupported baud rate 12345; supported: 300, 1200" "$work/err" || fail "baud message"

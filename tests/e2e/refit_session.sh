@@ -6,7 +6,7 @@
 # command that does, and `accelcal refit SESSION --gravity ...` fits the session again in one
 # command: the new calibration is the session's result, the earlier one is kept (never replaced
 # silently), the report is written again and `accelcal report` says what changed.
-# Usage: bash refit_session.sh ACCELCAL SOURCE_DIR SHARED_DATA_DIR
+# Usage: bash refit_session.sh ACCELCAL SOURCE_DIR DATA_DIR
 set -euo pipefail
 accelcal=$1
 source_dir=$2

@@ -14,7 +14,7 @@
 #    pixels, enough dark ones (text, rules, plot lines), many distinct colours, and the
 #    report's accent blue present;
 #  - --print-to-pdf: a PDF of at least one page (the print stylesheet's path).
-# Usage: bash report_html.sh ACCELCAL SOURCE_DIR SHARED_DATA_DIR
+# Usage: bash report_html.sh ACCELCAL SOURCE_DIR DATA_DIR
 set -euo pipefail
 accelcal=$1 src=$2
 # shellcheck source=lib/common.bash

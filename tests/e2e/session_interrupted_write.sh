@@ -4,7 +4,7 @@
 # beside it; seen as a rare failure of wizard_resume.sh). The read-only commands used to call it
 # "not an accelcal session (... attempt to write a readonly database)"; they must read it as its
 # last committed state: every capture there, the journal rolled back. Called by ctest as:
-#   session_interrupted_write.sh ACCELCAL SOURCE_DIR SHARED_DATA_DIR
+#   session_interrupted_write.sh ACCELCAL SOURCE_DIR DATA_DIR
 set -euo pipefail
 accelcal=$1 src=$2 data=$3
 : "$data"

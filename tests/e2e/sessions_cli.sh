@@ -2,7 +2,7 @@
 # End to end: a session file (made by accelcal_make_session, built beside accelcal) listed by
 # `accelcal sessions`, exported and refitted, reported as text and as a calibration file that
 # `accelcal apply` reads; and the failure paths. Called by ctest as:
-#   sessions_cli.sh ACCELCAL SOURCE_DIR SHARED_DATA_DIR
+#   sessions_cli.sh ACCELCAL SOURCE_DIR DATA_DIR
 set -euo pipefail
 accelcal=$1 src=$2 data=$3
 make_session=$(dirname "$accelcal")/accelcal_make_session

@@ -4,7 +4,7 @@
 # capture timeout is 3 s, and the wizard must give up on the wall clock, say why, and leave at
 # the end of its answers. The outer `timeout 60` only turns a hang into a failure (generous: a
 # loaded CI machine).
-# Usage: bash silent_link.sh ACCELCAL SOURCE_DIR SHARED_DATA_DIR
+# Usage: bash silent_link.sh ACCELCAL SOURCE_DIR DATA_DIR
 set -euo pipefail
 accelcal=$1
 source_dir=$2

@@ -4,7 +4,7 @@
 # must stop on the wall clock after its silence limit (its step's timeout_s - duration_s: 3 s
 # here), say why, keep what it recorded, and the wizard leave at the end of its answers. A
 # python3 TCP server plays the link; the outer `timeout 60` only turns a hang into a failure.
-# Usage: bash silent_record.sh ACCELCAL SOURCE_DIR SHARED_DATA_DIR
+# Usage: bash silent_record.sh ACCELCAL SOURCE_DIR DATA_DIR
 set -euo pipefail
 accelcal=$1
 source_dir=$2

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # End-to-end: `accelcal simulate` on the shipped scenarios.
-# Usage: bash simulate_cli.sh ACCELCAL_BINARY SOURCE_DIR SHARED_DATA_DIR
+# Usage: bash simulate_cli.sh ACCELCAL_BINARY SOURCE_DIR DATA_DIR
 set -euo pipefail
 
 accelcal=$1

@@ -2,7 +2,7 @@
 # `--source -`: stdin carries the samples, so the wizard's answers come from the terminal
 # (/dev/tty), never from the sample stream (issue 17, item 3). Before, `cat rec.txt | accelcal
 # wizard --source - --plain` stored sample lines as the device and the operator.
-# Usage: bash stdin_samples.sh ACCELCAL SOURCE_DIR SHARED_DATA_DIR
+# Usage: bash stdin_samples.sh ACCELCAL SOURCE_DIR DATA_DIR
 set -euo pipefail
 accelcal=$1
 source_dir=$2

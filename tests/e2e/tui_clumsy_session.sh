@@ -7,7 +7,7 @@
 # figures, and the final verdict screen; after the TUI exits, the verdict and the numbers stay on
 # the terminal. A second run is left with q: the terminal says how to resume.
 # Waits on screen content, never on fixed sleeps alone (the deadlines only guard against a hang).
-# Usage: bash tui_clumsy_session.sh ACCELCAL SOURCE_DIR SHARED_DATA_DIR
+# Usage: bash tui_clumsy_session.sh ACCELCAL SOURCE_DIR DATA_DIR
 # ACCELCAL_SCREENSHOTS=DIR keeps the ANSI captures of the key screens there (for a look by eye).
 set -u
 ACCELCAL=$(cd "$(dirname "$1")" && pwd)/$(basename "$1")

@@ -4,7 +4,7 @@
 # letters are typed; after a refused turntable plan the cursor is on the speed and the default is
 # not the refused speed; a speed typed at the radius sets the speed; Ctrl-X saves and quits.
 # ACCELCAL_SCREENSHOTS=DIR keeps each checked screen (capture-pane -e) there.
-# Usage: bash tui_keys_tmux.sh ACCELCAL SOURCE_DIR SHARED_DATA_DIR
+# Usage: bash tui_keys_tmux.sh ACCELCAL SOURCE_DIR DATA_DIR
 set -u
 ACCELCAL=$(cd "$(dirname "$1")" && pwd)/$(basename "$1")
 SOURCE_DIR=$2

@@ -2,7 +2,7 @@
 # The ncurses wizard driven through tmux (send-keys, capture-pane): a full session on the
 # simulator to the report, a resize in the middle, then a second session in NO_COLOR that is
 # left with q. Checks what is on screen, the exit status and that the terminal is restored.
-# Usage: bash tui_tmux.sh ACCELCAL SOURCE_DIR SHARED_DATA_DIR
+# Usage: bash tui_tmux.sh ACCELCAL SOURCE_DIR DATA_DIR
 set -u
 ACCELCAL=$(cd "$(dirname "$1")" && pwd)/$(basename "$1")  # the wizard runs in a scratch dir
 SOURCE_DIR=$2

@@ -8,7 +8,7 @@
 #  - A bench with the procedure's example equipment (the radius read to 0.5 mm, the speed to
 #    0.2 %) and the standard gravity: FAIL, the certificate saying which part of U dominates and
 #    what would bring it under the limit; the final summary shows the certificate's U.
-# Usage: bash verdict_on_u.sh ACCELCAL SOURCE_DIR SHARED_DATA_DIR
+# Usage: bash verdict_on_u.sh ACCELCAL SOURCE_DIR DATA_DIR
 set -euo pipefail
 accelcal=$1
 source_dir=$2

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # End-to-end: `accelcal wizard --plain` takes every default on the virtual bench (speed 0) and
 # completes a whole calibration, printing the report.
-# Usage: bash wizard_line_mode.sh ACCELCAL_BINARY SOURCE_DIR SHARED_DATA_DIR
+# Usage: bash wizard_line_mode.sh ACCELCAL_BINARY SOURCE_DIR DATA_DIR
 set -euo pipefail
 
 accelcal=$1

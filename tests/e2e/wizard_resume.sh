@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # kill -9 the wizard at random instants and rerun the same command: it resumes, the accepted
 # captures only grow, no step is recorded twice, and the last run finishes with a calibration.
-# Called by ctest as: wizard_resume.sh ACCELCAL SOURCE_DIR SHARED_DATA_DIR
+# Called by ctest as: wizard_resume.sh ACCELCAL SOURCE_DIR DATA_DIR
 set -euo pipefail
 accelcal=$1
 work=$(mktemp -d)

@@ -3,7 +3,7 @@
 # clock), so `accelcal export` of it then `accelcal fit` failed ("t = 13.56 s is earlier than
 # t = 1017.21 s"). Now the times go on across the resume, with the gap stated, and the export
 # fits.
-# Usage: bash wizard_resume_clock.sh ACCELCAL SOURCE_DIR SHARED_DATA_DIR
+# Usage: bash wizard_resume_clock.sh ACCELCAL SOURCE_DIR DATA_DIR
 set -euo pipefail
 accelcal=$1
 source_dir=$2

@@ -6,7 +6,7 @@
 #  2. the resume summary lists the steps in the procedure's order by title;
 #  3. the diagnosis on effects_demo's bench (radius 3 mm long, a quadratic response) in plain
 #     words with the recommended choice, the statistics on d.
-# Usage: bash wizard_way_back.sh ACCELCAL SOURCE_DIR SHARED_DATA_DIR
+# Usage: bash wizard_way_back.sh ACCELCAL SOURCE_DIR DATA_DIR
 set -euo pipefail
 accelcal=$1
 source_dir=$2

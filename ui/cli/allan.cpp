@@ -1,24 +1,18 @@
 // `accelcal allan`: the Allan deviation and the IEEE 952 read-offs of a long static record.
-#include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <iostream>
 #include <memory>
 #include <optional>
 
 #include <fmt/core.h>
-#include <fmt/format.h>
 
 #include "accelcal/app/analyze_recording.h"
-#include "accelcal/bags/bag_open.h"
 #include "accelcal/base/error.h"
 #include "accelcal/io/export/kalibr_imu_yaml.h"
 #include "accelcal/io/allan_file.h"
 #include "accelcal/io/atomic_write.h"
 #include "accelcal/io/calibration_file.h"
-#include "accelcal/io/text_file.h"
 #include "accelcal/report/allan_text.h"
-#include "accelcal/session/session_store.h"
 #include "cli/cli_checks.h"
 #include "cli/commands.h"
 #include "cli/sample_format_flags.h"
@@ -53,52 +47,22 @@ void WriteKalibr(const AllanCommandOptions& o, const std::string& allan_text, co
   for (const std::string& c : r.cannot_hold) std::cout << fmt::format("  note: {}\n", c);
 }
 
-// A session file (SQLite) rather than a recording: its first 16 bytes say so.
-bool IsSessionFile(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  char magic[16] = {};
-  in.read(magic, sizeof magic);
-  return in.gcount() == sizeof magic && std::string(magic, sizeof magic) == std::string("SQLite format 3\0", 16);
-}
-
-// The record of a wizard session (the drift procedure's), read chunk by chunk.
-RecordAnalysis AnalyzeSessionRecord(const AllanCommandOptions& o, const RecordAnalysisOptions& options,
-                                    const std::optional<Calibration>& cal, std::string* source) {
-  SessionOpenOptions read_only;
-  read_only.read_only = true;
-  const std::unique_ptr<SessionStore> store = SessionStore::Open(o.recording_path, read_only);
-  const std::vector<std::string> steps = store->RecordSteps();
-  if (steps.empty())
-    throw Error(fmt::format("session {} holds no record (run the drift or noise procedure)",
-                            o.recording_path));
-  const std::string step = o.step.empty() ? steps.front() : o.step;
-  if (std::find(steps.begin(), steps.end(), step) == steps.end())
-    throw Error(fmt::format("session {} has no record at step '{}'; its records: {}",
-                            o.recording_path, step, fmt::join(steps, ", ")));
-  *source = o.recording_path + ":" + step;
-  return AnalyzeJournalRecord(*store, step, options, cal);
-}
-
 void RunAllan(const AllanCommandOptions& o) {
   RecordAnalysisOptions options;
   const SampleFormat format = o.format.Resolve();
   options.rate_hz = format.rate_hz;
   options.drift.window_s = o.drift_window_s;
-  std::string source = o.recording_path;
   std::optional<Calibration> cal;
   if (!o.calibration_path.empty()) cal = ReadCalibrationFile(o.calibration_path);
   if (!o.kalibr_path.empty() && !cal)
     throw Error("--kalibr: Kalibr wants m/s^2; give the sensor's --calibration");
-  RecordAnalysis analysis;
-  if (o.recording_path != "-" && !IsReadOnceInput(o.recording_path) &&
-      !bags::DetectBag(o.recording_path) && IsSessionFile(o.recording_path)) {
-    analysis = AnalyzeSessionRecord(o, options, cal, &source);
-  } else {
-    ReadingSummary summary;
-    analysis = AnalyzeRecordingFile(o.recording_path, options, cal, {}, format, &summary);
-    std::cout << "read " << summary.Describe() << "\n";
-    if (!summary.converted_hint.empty()) std::cout << "note: " << summary.converted_hint << "\n";
+  const RecordInputAnalysis in = AnalyzeRecordInput(o.recording_path, o.step, options, cal, format);
+  if (in.reading) {
+    std::cout << "read " << in.reading->Describe() << "\n";
+    if (!in.reading->converted_hint.empty()) std::cout << "note: " << in.reading->converted_hint << "\n";
   }
+  const RecordAnalysis& analysis = in.analysis;
+  const std::string& source = in.source;
   if (analysis.samples < 2)
     throw Error(fmt::format("{}: {} samples: nothing to analyse", source, analysis.samples));
   const std::string allan = AllanFileText(analysis, source, o.drift_window_s);

@@ -25,6 +25,7 @@ void SetupRefitCommand(CLI::App& app);
 void SetupWizardCommand(CLI::App& app);
 void SetupAllanCommand(CLI::App& app);
 void SetupNoiseCommand(CLI::App& app);
+void SetupDeviceInfoCommand(CLI::App& app);
 void SetupBagInfoCommand(CLI::App& app);
 // The hidden commands that write the manual pages and the completion from `app` (set up last,
 // after every other command; help_commands.cpp). `version` goes into the pages.

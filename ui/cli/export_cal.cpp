@@ -2,27 +2,27 @@
 // header for firmware, ArduPilot or PX4 parameters, Kalibr's imu.yaml, CSV. Says what the
 // target cannot hold (src/accelcal/export/).
 #include <cmath>
-#include <fstream>
 #include <iostream>
 #include <memory>
 #include <optional>
+#include <utility>
 
 #include <fmt/core.h>
 
+#include "accelcal/app/calibration_input.h"
 #include "accelcal/base/error.h"
 #include "accelcal/io/export/ardupilot_params.h"
 #include "accelcal/io/export/c_header.h"
 #include "accelcal/io/export/calibration_csv.h"
 #include "accelcal/io/export/kalibr_imu_yaml.h"
 #include "accelcal/io/export/px4_params.h"
-#include "accelcal/io/calibration_file.h"
 #include "accelcal/io/procedure_file.h"
 #include "accelcal/io/text_file.h"
-#include "accelcal/session/session_store.h"
 #include "accelcal/session/procedure.h"
 #include "cli/cli_checks.h"
 #include "cli/commands.h"
 #include "cli/output.h"
+#include "cli/vehicle_writeback_cli.h"
 #include "cli/shipped_files.h"
 
 namespace accelcal::cli {
@@ -47,32 +47,21 @@ struct ExportCalCommandOptions {
   double gyro_noise_density = kNaN;
   double gyro_random_walk = kNaN;
   std::string rostopic = "/imu0";
+  bool apply = false;  // mavlink:LINK: send the PARAM_SETs (else only say them)
 };
 
-bool IsSqliteFile(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  char magic[16] = {};
-  in.read(magic, sizeof magic);
-  return in && std::string(magic, 15) == "SQLite format 3";
-}
-
-// The calibration, and what is known of its origin.
+// The calibration (app/calibration_input.h: a file or a session), and what is known of its
+// origin: what the options say, else the session's device and creation date.
 Calibration ReadInput(const ExportCalCommandOptions& o, ExportContext* context) {
+  CalibrationInput in = ReadCalibrationInput(o.input);
   context->source = o.input;
   context->device = o.device;
   context->date_utc = o.date_utc;
-  if (IsReadOnceInput(o.input) || !IsSqliteFile(o.input)) return ReadCalibrationFile(o.input);
-  SessionOpenOptions read_only;
-  read_only.read_only = true;
-  const std::unique_ptr<SessionStore> store = SessionStore::Open(o.input, read_only);
-  const SessionInfo info = store->Info();
-  const std::optional<std::string> result = store->Result();
-  if (!result)
-    throw Error(fmt::format("session {} has no calibration yet: {} captures accepted; run the "
-                            "wizard to finish it", o.input, info.num_captures));
-  if (context->device.empty()) context->device = info.device;
-  if (context->date_utc.empty()) context->date_utc = info.created_utc;
-  return CalibrationFromJsonText(*result, o.input);
+  if (in.session) {
+    if (context->device.empty()) context->device = in.session->device;
+    if (context->date_utc.empty()) context->date_utc = in.session->created_utc;
+  }
+  return std::move(in.calibration);
 }
 
 Eigen::Vector3d PerAxis(const std::vector<double>& values, const char* option) {
@@ -136,6 +125,12 @@ ExportResult Export(const ExportCalCommandOptions& o, const Calibration& cal, co
 void RunExportCal(const ExportCalCommandOptions& o) {
   ExportContext context;
   const Calibration cal = ReadInput(o, &context);
+  if (o.target.rfind("mavlink:", 0) == 0) {
+    const bool scaling_given = !o.procedure_path.empty() || !o.nominal_scale_counts_per_mps2.empty();
+    WriteBackToVehicle(cal, o.target, scaling_given ? std::optional(DriverScale(o)) : std::nullopt, o.apply);
+    return;
+  }
+  if (o.apply) throw Error("--apply writes to a vehicle: it goes with --to mavlink:LINK");
   const ExportResult r = Export(o, cal, context);
   // The statements go where they do not mix with the exported text.
   std::ostream& say = o.output_path.empty() ? std::cerr : std::cout;
@@ -159,17 +154,29 @@ void SetupExportCalCommand(CLI::App& app) {
       "  px4        CAL_ACC0_*OFF, CAL_ACC0_*SCALE (QGroundControl .params file)\n"
       "  kalibr     Kalibr imu.yaml (noise figures from --allan or --noise-density/--random-walk)\n"
       "  csv        parameters with 1-sigma uncertainties, one row each\n"
+      "  mavlink:LINK[,imu=N]  ArduPilot's or PX4's parameters written into the vehicle (dry run\n"
+      "             unless --apply)\n"
       "The file goes to -o (the statements to stdout) or to stdout (the statements to stderr).\n\n"
       "Examples:\n"
       "  accelcal export-cal cal.json --to c-header -o accel_cal.h\n"
       "  accelcal export-cal cal.json --to ardupilot --procedure procedures/seed_calibration.toml -o accel.param\n"
       "  accelcal export-cal session.db --to px4 --nominal-scale-counts-per-mps2 34.8 --nominal-bias-counts 2048\n"
-      "  accelcal export-cal cal.json --to kalibr --allan allan.json -o imu.yaml");
+      "  accelcal export-cal cal.json --to kalibr --allan allan.json -o imu.yaml\n"
+      "  accelcal export-cal session.db --to mavlink:serial:/dev/ttyACM0@115200 --apply");
   // No CLI11 existence check: a missing file is a failed job (exit 1) with the reader's message.
   sub->add_option("calibration", opts->input, "Calibration file (JSON) or session file (.db)")->required();
   sub->add_option("--to", opts->target, "Target format")
       ->required()
-      ->check(CLI::IsMember({"c-header", "ardupilot", "px4", "kalibr", "csv"}));
+      ->check([] {
+        // The file formats by name (their message when none matches), or a vehicle's link.
+        CLI::Validator formats = CLI::IsMember({"c-header", "ardupilot", "px4", "kalibr", "csv"});
+        return CLI::Validator(
+            [formats](std::string& v) mutable { return v.rfind("mavlink:", 0) == 0 ? std::string() : formats(v); },
+            formats.get_description());
+      }());
+  sub->add_flag("--apply", opts->apply,
+                "mavlink:LINK: send the PARAM_SETs, wait for each echo and read every value back "
+                "(without it: a dry run that prints them)");
   sub->add_option("-o,--output", opts->output_path, "File to write (default: standard output)");
   sub->add_option("--device", opts->device, "Device serial for the file's comment (a session gives it)");
   sub->add_option("--date", opts->date_utc, "Calibration date for the file's comment (a session gives it)");

@@ -17,10 +17,12 @@
 #include "accelcal/base/error.h"
 #include "accelcal/io/capture_set_writer.h"
 #include "accelcal/io/text_file.h"
+#include "accelcal/acquire/source/remote_bench.h"
 #include "accelcal/acquire/source/source_spec.h"
 #include "cli/cli_checks.h"
 #include "cli/commands.h"
 #include "cli/sample_format_flags.h"
+#include "cli/source_preflight.h"
 #include "cli/shipped_files.h"
 #include "accelcal/io/scenario_file.h"
 
@@ -36,6 +38,8 @@ struct RecordCommandOptions {
   SourceOptions source;
   std::string scenario_path;  // sim: the bench; empty = the built-in default
   SampleFormatFlags format;   // every source but sim
+  std::string bench_listen;   // sim: serve the bench's controls at HOST:PORT (remote_bench.h)
+  std::string vehicle_calibration = "undo";  // mavlink: undo | as-is
 };
 
 volatile std::sig_atomic_t g_interrupted = 0;
@@ -74,7 +78,9 @@ void ReportEvents(const SampleSource& source, const ReadResult& r, bool quiet) {
     fmt::print(stderr, "accelcal record: gap in t: {:.6g} s -> {:.6g} s ({:.3g} s missing)\n",
                s.last_gap.t_before_s, s.last_gap.t_after_s, s.last_gap.missing_s);
   if (r.went_dead) fmt::print(stderr, "accelcal record: link dead: {}\n", s.link_error);
+  else if (r.link_lost) fmt::print(stderr, "accelcal record: link lost: {}\n", s.link_error);
   if (r.reconnected) fmt::print(stderr, "accelcal record: link back up\n");
+  if (r.notice) fmt::print(stderr, "accelcal record: {}\n", s.last_notice);
 }
 
 // Drops the samples at or beyond end_s; true when any was (the duration is reached).
@@ -123,9 +129,19 @@ void RunRecord(const RecordCommandOptions& o) {
   }
   if (!o.scenario_path.empty()) source_options.scenario = sim::LoadScenario(o.scenario_path);
   std::unique_ptr<SampleSource> source = OpenSource(o.source_spec, source_options);
+  if (!o.quiet) PrepareVehicle(*source, o.vehicle_calibration, stderr);
+  else PrepareVehicle(*source, o.vehicle_calibration, nullptr);
   SigintGuard sigint;
   std::ofstream file;
   std::ostream& out = OpenOutput(o.output_path, &file);
+  std::unique_ptr<RemoteBenchServer> bench_server;
+  if (!o.bench_listen.empty()) {
+    bench_server = std::make_unique<RemoteBenchServer>(
+        ParseHostPort(o.bench_listen, o.bench_listen, "--bench-listen HOST:PORT, e.g. 127.0.0.1:0", true),
+        source->bench());
+    // Its port first, alone on a line of stderr, for the peer that drives it.
+    fmt::print(stderr, "accelcal record: bench controls at port {}\n", bench_server->port());
+  }
   std::optional<RecordingWriter> writer;  // created with the first samples (temperature or not)
   std::vector<Sample> chunk;              // one Read's samples; written, then cleared
   double end_s = INFINITY;
@@ -138,6 +154,10 @@ void RunRecord(const RecordCommandOptions& o) {
   // The writer throws when the stream fails (a full disk): say why, and keep whole lines only.
   try {
     while (!g_interrupted) {
+      if (bench_server) bench_server->Serve([&] {
+          if (writer) writer->Flush();
+          out.flush();
+        });
       chunk.clear();
       const ReadResult r = source->Read(kReadTimeoutS, &chunk);
       ReportEvents(*source, r, o.quiet);
@@ -150,6 +170,8 @@ void RunRecord(const RecordCommandOptions& o) {
       }
       const bool reached = TrimToEnd(&chunk, end_s);
       if (writer) writer->Write(chunk);
+      // A pipe feeds a live peer (a test vehicle): each chunk goes at once, not once a second.
+      if (writer && o.output_path == "-" && !chunk.empty()) writer->Flush();
       if (!out) throw Error("cannot write the recording");
       if (reached) {
         why_stopped = "duration reached";
@@ -195,12 +217,15 @@ void SetupRecordCommand(CLI::App& app) {
       "received is written, exit status 0).\n\n"
       "Sources (--source): sim (the virtual bench), file:PATH (a recording, or a ROS bag's IMU\n"
       "topic: --topic; written in m/s^2 as the bag holds them), serial:DEVICE@BAUD,\n"
-      "tcp:HOST:PORT, - (standard input). Line protocol in README.md, 'Sample sources'.");
+      "tcp:HOST:PORT, mavlink:LINK[,imu=N,rate=HZ], iio:DEVICE[,...], - (standard input).\n"
+      "Line protocol in README.md, 'Sample sources'.");
   sub->footer(
       "Examples:\n"
       "  accelcal record --source serial:/dev/ttyUSB0@115200 -o board.txt\n"
       "  accelcal record --source tcp:192.168.7.2:5000 --duration 600 -o board.txt\n"
       "  accelcal record --source sim --speed 50 --duration 120 -o sim.txt\n"
+      "  accelcal record --source mavlink:serial:/dev/ttyACM0@115200,imu=0,rate=200 -o px.txt\n"
+      "  accelcal record --source iio:adxl345,rate=100 --duration 60 -o board.txt\n"
       "  accelcal fit --recording board.txt -o cal.json");
   sub->add_option("--source", opts->source_spec, "Sample source spec")->capture_default_str();
   sub->add_option("-o,--output", opts->output_path, "Recording to write ('-': standard output)")
@@ -221,6 +246,14 @@ void SetupRecordCommand(CLI::App& app) {
                   "Report the link dead after this long without a sample, s")
       ->capture_default_str();
   opts->format.Bind(*sub, "the source's lines (file:, serial:, tcp:, -)");
+  sub->add_option("--vehicle-calibration", opts->vehicle_calibration,
+                  "mavlink: the vehicle's own accelerometer calibration: undo (taken out of every "
+                  "sample) or as-is")
+      ->check(CLI::IsMember({"undo", "as-is"}))->capture_default_str();
+  sub->add_option("--bench-listen", opts->bench_listen,
+                  "sim: serve the virtual bench's controls at HOST:PORT (port 0: any free one, said "
+                  "on stderr), so that a wizard reading the samples over another link can place "
+                  "the sensor (wizard --bench-control)");
   sub->add_flag("-q,--quiet", opts->quiet, "Print nothing but errors");
   sub->callback([opts] { RunRecord(*opts); });
 }

@@ -4,7 +4,9 @@
 
 #include <fmt/core.h>
 
+#include "accelcal/acquire/mavlink/mavlink_source.h"
 #include "accelcal/acquire/source/source_spec.h"
+#include "accelcal/app/device/vehicle_session.h"
 #include "accelcal/base/error.h"
 
 namespace accelcal::cli {
@@ -17,6 +19,16 @@ void RefuseAbsentSerialPort(const std::string& spec) {
   throw Error(fmt::format("serial port {} does not exist: plug the adapter in or check the name "
                           "(ls /dev/ttyUSB* /dev/ttyACM*); no session was created or changed",
                           parsed.path));
+}
+
+void PrepareVehicle(SampleSource& source, const std::string& choice, std::FILE* say) {
+  auto* vehicle = dynamic_cast<MavlinkSource*>(&source);
+  if (vehicle == nullptr) return;
+  const VehiclePreparation prep = PrepareVehicleSource(
+      *vehicle, choice == "as-is" ? VehicleCalibrationChoice::kAsIs : VehicleCalibrationChoice::kUndo);
+  if (say != nullptr)
+    for (const std::string& line : prep.lines) fmt::print(say, "{}\n", line);
+  if (!prep.refused.empty()) throw Error(prep.refused + "; no session was created or changed");
 }
 
 }  // namespace accelcal::cli

@@ -5,12 +5,21 @@
 // litter for `accelcal sessions`.
 #pragma once
 
+#include <cstdio>
 #include <string>
+
+#include "accelcal/acquire/source/sample_source.h"
 
 namespace accelcal::cli {
 
 // Throws accelcal::Error naming the port and what to check when `spec` is serial:DEVICE@BAUD
 // and DEVICE does not exist. Other specs are left to OpenSource.
 void RefuseAbsentSerialPort(const std::string& spec);
+
+// A MAVLink source: reads the vehicle's own accelerometer calibration, says it on `say`, and
+// takes it back out of the samples (`choice` "undo") or leaves it in ("as-is"). Throws
+// accelcal::Error (before anything is created) when it cannot be undone or no vehicle answers.
+// Other sources: nothing. What the wizard's device step will ask instead (README, "Autopilots").
+void PrepareVehicle(SampleSource& source, const std::string& choice, std::FILE* say);
 
 }  // namespace accelcal::cli

@@ -13,6 +13,7 @@
 #include "accelcal/io/procedure_file.h"
 #include "accelcal/io/scenario_file.h"
 #include "accelcal/session/session_paths.h"
+#include "accelcal/acquire/source/remote_bench.h"
 #include "accelcal/acquire/source/source_spec.h"
 #include "accelcal/session/procedure.h"
 #include "accelcal/app/refit_session.h"
@@ -54,7 +55,11 @@ int RunWizard(const WizardCommandOptions& options) {
   source_options.seed = options.seed;
   const bool sim = options.source == "sim";
   if (!options.scenario_path.empty()) source_options.scenario = sim::LoadScenario(options.scenario_path);
-  const std::unique_ptr<SampleSource> source = OpenSource(options.source, source_options);
+  std::unique_ptr<SampleSource> source = OpenSource(options.source, source_options);
+  PrepareVehicle(*source, options.vehicle_calibration, stdout);
+  if (!options.bench_control.empty())
+    source = WithRemoteBench(std::move(source), ParseHostPort(options.bench_control, options.bench_control,
+                                                              "--bench-control HOST:PORT"));
   // A new session goes to the default session directory, where `accelcal sessions` looks.
   const std::string session = options.session_path.empty() ? NewSessionPath() : options.session_path;
   const std::unique_ptr<SessionJournal> journal = OpenWizardJournal(session, procedure.title, options.source);
@@ -100,7 +105,7 @@ void SetupWizardCommand(CLI::App& app) {
       "session resumes). Runs on the virtual bench unless --source names a real one. Also what\n"
       "`accelcal` with no arguments does.");
   sub->add_option("--source", options->source, "Sample source: sim, file:PATH, serial:DEV@BAUD, "
-                  "tcp:HOST:PORT or - (default sim)");
+                  "tcp:HOST:PORT, mavlink:LINK[,imu=N,rate=HZ], iio:DEVICE[,...] or - (default sim)");
   sub->add_option("--speed", options->speed,
                   "sim: simulated seconds per wall-clock second (default 1; 0 = as fast as possible)")
       ->check(NonNegative());
@@ -117,6 +122,13 @@ void SetupWizardCommand(CLI::App& app) {
   sub->add_option("--session", options->session_path,
                   "Session file: created when new, resumed when it exists (default: a new one)");
   sub->add_flag("--plain", options->plain, "Plain line mode even on a terminal");
+  sub->add_option("--vehicle-calibration", options->vehicle_calibration,
+                  "mavlink: the vehicle's own accelerometer calibration: undo (take it out of every "
+                  "sample: the nine parameters describe the sensor) or as-is")
+      ->check(CLI::IsMember({"undo", "as-is"}))->capture_default_str();
+  sub->add_option("--bench-control", options->bench_control,
+                  "The virtual bench behind --source is another process's (accelcal record "
+                  "--bench-listen): its controls at HOST:PORT place the sensor (tests)");
   gravity->Bind(*sub);
   sub->footer(
       "Examples:\n"

@@ -18,6 +18,8 @@ struct WizardCommandOptions {
   std::string session_path;         // empty = a new session named by the time
   bool plain = false;               // line mode even on a terminal
   std::string place;                // offered at the welcome (the lab, the bench)
+  std::string bench_control;        // HOST:PORT of a remote virtual bench's controls (tests)
+  std::string vehicle_calibration = "undo";  // mavlink: undo | as-is
   GravitySpec gravity;
   std::string gravity_flag;         // the gravity flag as given ("--latitude 0"); empty: none
 };

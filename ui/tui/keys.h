@@ -1,5 +1,5 @@
 // From a key to what the TUI does: the mapping of keys to intents, apart from curses so that
-// tests drive it with plain codes (STYLE.md: htop's HandlerResult, FTXUI's synthetic events).
+// tests drive it with plain codes (docs/STYLE.md: htop's HandlerResult, FTXUI's synthetic events).
 //
 // Keys: Enter accepts, or submits the typed answer when a value is asked (an empty answer takes
 // the default); r retry, s skip, b back, n no, q save and quit. While a value is asked every

@@ -1,5 +1,5 @@
 // A fixed-size grid of ASCII cells, each with a role: what the TUI draws, kept free of curses so
-// that view tests render into it and compare its text with golden files (STYLE.md: FTXUI's
+// that view tests render into it and compare its text with golden files (docs/STYLE.md: FTXUI's
 // Screen::ToString).
 #pragma once
 

@@ -1,4 +1,4 @@
-// All curses handling of the TUI in one place (STYLE.md: htop's CRT.c): setup and teardown,
+// All curses handling of the TUI in one place (docs/STYLE.md: htop's CRT.c): setup and teardown,
 // the role -> colour table with its monochrome fallback, key translation, and restoring the
 // terminal on every exit: normal return and exceptions (the destructor), fatal and terminating
 // signals (a handler ends curses, then re-raises the signal with its default action).

@@ -12,7 +12,7 @@ namespace {
 
 // UTF-8 sequences the engine is likely to use, with their ASCII stand-ins.
 constexpr std::pair<std::string_view, std::string_view> kFolds[] = {
-    {"\xE2\x80\x94", "--"},   // em dash (also the NaN mark of STYLE.md)
+    {"\xE2\x80\x94", "--"},   // em dash (also the NaN mark of docs/STYLE.md)
     {"\xE2\x80\x93", "-"},    // en dash
     {"\xC2\xB0", " deg"},     // degree sign
     {"\xC2\xB1", "+-"},       // plus-minus

@@ -1,4 +1,4 @@
-// The TUI's one loop (STYLE.md: htop's ScreenManager_run): poll the driver, draw its view when
+// The TUI's one loop (docs/STYLE.md: htop's ScreenManager_run): poll the driver, draw its view when
 // the picture changed, read a key with a short timeout, act on the key's result, until the
 // final screen is left or q was sent. The terminal is an interface so tests run the loop
 // against a fake one.

@@ -20,7 +20,7 @@
 //     the start is much noisier than the typical window (it includes a move);
 //   - q is 0 (noise-free or stuck data: no threshold can be derived).
 //
-// Defaults: on /work/shared/data/imu_tk/xsens_acc.mat (100 Hz Xsens, a 52 s still start, then
+// Defaults: on tests/data/imu_tk/xsens_acc.mat (100 Hz Xsens, a 52 s still start, then
 // 37 hand-held poses of 3-11 s) init_static_s = 50 and threshold_multiplier = 6 find 38
 // intervals, the first 0.53-51.92 s, q = 18.93 counts^2 and threshold 113.6 counts^2, exactly
 // as the imu_tk reference does. Why these values:

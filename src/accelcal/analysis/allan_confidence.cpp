@@ -10,7 +10,8 @@
 namespace accelcal {
 namespace {
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+// A figure the data do not define.
+constexpr double kNotDefined = std::numeric_limits<double>::quiet_NaN();
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
 std::vector<double> Differenced(const std::vector<double>& w) {
@@ -37,7 +38,7 @@ double Sw(double t, int alpha) {
     case 0: return a * a * a;
     case -1: return a == 0.0 ? 0.0 : -t * t * t * t * std::log(a);
     case -2: return -a * a * a * a * a;
-    default: return kNaN;
+    default: return kNotDefined;
   }
 }
 
@@ -91,7 +92,7 @@ std::string NoiseIdMethodToString(NoiseIdMethod method) {
 
 double Lag1Autocorrelation(std::span<const double> w) {
   const size_t n = w.size();
-  if (n < 2) return kNaN;
+  if (n < 2) return kNotDefined;
   double mean = 0.0;
   for (double v : w) mean += v;
   mean /= static_cast<double>(n);
@@ -103,11 +104,11 @@ double Lag1Autocorrelation(std::span<const double> w) {
     if (k + 1 < n) num += a * (w[k + 1] - mean);
   }
   const double nd = static_cast<double>(n);
-  return den > 0.0 ? (num / nd) / (den / (nd - 1.0)) : kNaN;
+  return den > 0.0 ? (num / nd) / (den / (nd - 1.0)) : kNotDefined;
 }
 
 std::array<double, 3> Lag1Autocorrelations(std::span<const double> z) {
-  std::array<double, 3> r1 = {kNaN, kNaN, kNaN};
+  std::array<double, 3> r1 = {kNotDefined, kNotDefined, kNotDefined};
   std::vector<double> series(z.begin(), z.end());
   for (int d = 0; d < 3; ++d) {
     r1[d] = Lag1Autocorrelation(series);
@@ -147,9 +148,9 @@ int ResolvePhaseNoise(double rn, int64_t m) {
 }
 
 double AllanEdf(int alpha, int64_t m, int64_t stride, int64_t phase_points) {
-  if (m < 1 || stride < 1 || m % stride != 0 || alpha < -2 || alpha > 2) return kNaN;
+  if (m < 1 || stride < 1 || m % stride != 0 || alpha < -2 || alpha > 2) return kNotDefined;
   const int64_t span = phase_points - 1 - 2 * m;  // N - L with L = m/F + m d = 1 + 2m
-  if (span < 0) return kNaN;
+  if (span < 0) return kNotDefined;
   const double s = static_cast<double>(m / stride);  // stride factor S
   const double big_m = 1.0 + static_cast<double>(span / stride);
   const double j = std::min(big_m, (kD + 1.0) * s);

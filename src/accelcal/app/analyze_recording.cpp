@@ -6,10 +6,14 @@
 #include <vector>
 
 #include <fmt/core.h>
+#include <fmt/ranges.h>
 
+#include "accelcal/app/calibration_input.h"
+#include "accelcal/bags/bag_open.h"
 #include "accelcal/calibration/apply.h"
 #include "accelcal/base/error.h"
 #include "accelcal/io/recording_stream.h"
+#include "accelcal/session/session_store.h"
 
 namespace accelcal {
 
@@ -89,6 +93,46 @@ RecordAnalysis AnalyzeJournalRecord(const SessionJournal& journal, const std::st
   CheckRecordReadable(journal, step_id, samples_read);
   RecordAnalysis result = analyzer.Result();
   if (end_gap) AddEndGap(*end_gap, &result);
+  return result;
+}
+
+namespace {
+
+// The record step `step_id` (empty: the first) of the session file at `path`, opened read-only;
+// *source gets "PATH:STEP".
+RecordAnalysis AnalyzeSessionRecordFile(const std::string& path, const std::string& step_id,
+                                        const RecordAnalysisOptions& options,
+                                        const std::optional<Calibration>& calibration,
+                                        std::string* source) {
+  SessionOpenOptions read_only;
+  read_only.read_only = true;
+  const std::unique_ptr<SessionStore> store = SessionStore::Open(path, read_only);
+  const std::vector<std::string> steps = store->RecordSteps();
+  if (steps.empty())
+    throw Error(fmt::format("session {} holds no record (run the drift or noise procedure)", path));
+  const std::string step = step_id.empty() ? steps.front() : step_id;
+  if (std::find(steps.begin(), steps.end(), step) == steps.end())
+    throw Error(fmt::format("session {} has no record at step '{}'; its records: {}", path, step,
+                            fmt::join(steps, ", ")));
+  *source = path + ":" + step;
+  return AnalyzeJournalRecord(*store, step, options, calibration);
+}
+
+}  // namespace
+
+RecordInputAnalysis AnalyzeRecordInput(const std::string& path, const std::string& step_id,
+                                       const RecordAnalysisOptions& options,
+                                       const std::optional<Calibration>& calibration,
+                                       const SampleFormat& format) {
+  RecordInputAnalysis result;
+  result.source = path;
+  // A ROS 2 bag (.db3) is an SQLite file too: a recording, as the reader takes it.
+  if (path != "-" && IsSessionFile(path) && !bags::DetectBag(path)) {
+    result.analysis = AnalyzeSessionRecordFile(path, step_id, options, calibration, &result.source);
+    return result;
+  }
+  result.reading.emplace();
+  result.analysis = AnalyzeRecordingFile(path, options, calibration, {}, format, &*result.reading);
   return result;
 }
 

@@ -42,4 +42,20 @@ RecordAnalysis AnalyzeJournalRecord(const SessionJournal& journal, const std::st
                                     const RecordAnalysisOptions& options,
                                     const std::optional<Calibration>& calibration = std::nullopt);
 
+// A record named by the one who asks (`accelcal allan`), analysed whatever it is: a wizard
+// session's record when `path` is a session file (app/calibration_input.h's test; its record
+// step `step_id`, empty: the first), else a recording ("-": standard input; a ROS bag, though
+// a .db3 is an SQLite file too) read as `format`.
+// Throws as AnalyzeRecordingFile, and accelcal::Error naming the session when it holds no
+// record, or none at `step_id` (the message lists its records).
+struct RecordInputAnalysis {
+  RecordAnalysis analysis;
+  std::string source;                     // what was analysed: "PATH", or "PATH:STEP"
+  std::optional<ReadingSummary> reading;  // a recording's: what the reading understood
+};
+RecordInputAnalysis AnalyzeRecordInput(const std::string& path, const std::string& step_id,
+                                       const RecordAnalysisOptions& options,
+                                       const std::optional<Calibration>& calibration,
+                                       const SampleFormat& format);
+
 }  // namespace accelcal

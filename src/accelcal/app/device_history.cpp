@@ -8,6 +8,7 @@
 #include "accelcal/base/error.h"
 #include "accelcal/io/calibration_file.h"
 #include "accelcal/session/session_catalog.h"
+#include "accelcal/session/session_paths.h"
 #include "accelcal/session/session_store.h"
 
 namespace accelcal {
@@ -27,7 +28,8 @@ namespace {
 
 }  // namespace
 
-DeviceHistory BuildDeviceHistory(const std::string& dir, const std::string& device) {
+DeviceHistory BuildDeviceHistory(const std::string& folder, const std::string& device) {
+  const std::string dir = folder.empty() ? DefaultSessionDir() : folder;
   DeviceHistory h;
   h.device = device;
   h.dir = dir;

@@ -8,9 +8,10 @@
 
 namespace accelcal {
 
-// Throws accelcal::Error when the directory does not exist, or when it has no calibration of
-// `device`: the message lists the devices that have sessions there (or says none do) and, for a
-// known device without a finished calibration, how many sessions it has.
+// `dir` empty: the default session folder (session_paths.h). Throws accelcal::Error when the
+// directory does not exist, or when it has no calibration of `device`: the message lists the
+// devices that have sessions there (or says none do) and, for a known device without a
+// finished calibration, how many sessions it has.
 DeviceHistory BuildDeviceHistory(const std::string& dir, const std::string& device);
 
 }  // namespace accelcal

@@ -5,6 +5,7 @@
 #include "accelcal/app/refit_session.h"
 #include "accelcal/base/error.h"
 #include "accelcal/io/calibration_file.h"
+#include "accelcal/io/session_result_file.h"
 
 namespace accelcal {
 

@@ -39,6 +39,10 @@ struct Sample {
   double temp_c = kNaN;  // NaN when the source has no temperature
 };
 
+// A sample whose time and counts are all finite (a NaN temperature is allowed): the checks that
+// judge samples skip the others.
+inline bool IsFinite(const Sample& s) { return std::isfinite(s.t_s) && s.raw_counts.allFinite(); }
+
 // Running statistics of a capture (Welford's algorithm: one pass, numerically stable).
 struct CaptureStats {
   long n = 0;

@@ -27,7 +27,7 @@
 // reading is settled (layout, header, the first rows' unit hint), its plain lines take a lane:
 // read one after another straight from the buffer, most by the shape learned from the lines
 // before (line_shapes.h), each handled as the line-by-line path would (the same samples, time
-// checks, counts and errors; tests/unit/reader_lane_test.cpp holds the two together). Samples
+// checks, counts and errors; tests/unit/base/reader_lane_test.cpp holds the two together). Samples
 // are appended to the caller's vector (reserve it).
 #pragma once
 

@@ -401,19 +401,8 @@ json CalibrationToJson(const Calibration& cal) {
 
 std::string CalibrationToJsonText(const Calibration& cal) { return detail::JsonText(CalibrationToJson(cal)); }
 
-std::string SessionResultJsonText(const Calibration& cal, const SessionGaps& gaps) {
-  json j = CalibrationToJson(cal);
-  j["session_gaps"] = SessionGapsToJson(gaps);
-  return j.dump(2);
-}
-
 Calibration CalibrationFromJsonText(const std::string& text, const std::string& source_name) {
   return CalibrationFromJson(ParseJsonText(text, source_name), source_name);
-}
-
-void ReadAnalysesFromResultText(const std::string& text, const std::string& source_name,
-                                ReportInputs* inputs) {
-  ReadAnalysesFromResult(ParseJsonText(text, source_name), source_name, inputs);
 }
 
 void WriteCalibrationFile(const std::string& path, const Calibration& cal) {

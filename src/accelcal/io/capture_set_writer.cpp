@@ -36,7 +36,7 @@ void AppendNumber(double value, fmt::memory_buffer* out) {
 }
 
 // Empty for NaN: the format's "unknown".
-std::string OptionalNumber(double value) {
+std::string OptionalCsvNumber(double value) {
   return std::isnan(value) ? std::string() : Number(value);
 }
 
@@ -54,9 +54,9 @@ void WriteRow(std::ostream& out, const Capture& c, const std::string& label, con
   const bool turntable = c.kind == CaptureKind::kTurntable;
   out << c.id << ',' << CaptureKindToString(c.kind) << ',' << Number(s.t_s) << ','
       << Number(s.raw_counts.x()) << ',' << Number(s.raw_counts.y()) << ','
-      << Number(s.raw_counts.z()) << ',' << OptionalNumber(s.temp_c) << ','
-      << (turntable ? OptionalNumber(c.radius_m) : "") << ','
-      << (turntable ? OptionalNumber(c.rpm) : "") << ',' << label << ','
+      << Number(s.raw_counts.z()) << ',' << OptionalCsvNumber(s.temp_c) << ','
+      << (turntable ? OptionalCsvNumber(c.radius_m) : "") << ','
+      << (turntable ? OptionalCsvNumber(c.rpm) : "") << ',' << label << ','
       << (turntable && c.up_axis ? SensorAxisToString(*c.up_axis) : "");
 }
 

@@ -15,7 +15,7 @@ using analysis::NoiseReport;
 using analysis::NormalityTest;
 using analysis::RecordNoise;
 
-constexpr const char* kAxisNames[3] = {"x", "y", "z"};
+constexpr const char* kNoiseAxisNames[3] = {"x", "y", "z"};
 
 nlohmann::json NormalityJson(const NormalityTest& t) {
   return {{"test", "jarque-bera"},
@@ -32,12 +32,12 @@ nlohmann::json RecordJson(const RecordNoise& r) {
   nlohmann::json spectrum = {{"frequency_hz", JsonNumbers(r.spectrum.frequency_hz)}};
   for (std::size_t a = 0; a < 3; ++a) {
     const AxisNoise& axis = r.axes[a];
-    axes[kAxisNames[a]] = {{"mean", JsonNumber(axis.mean)},
+    axes[kNoiseAxisNames[a]] = {{"mean", JsonNumber(axis.mean)},
                            {"std", JsonNumber(axis.std)},
                            {"std_counts", JsonNumber(axis.std_counts)},
                            {"density", JsonNumber(axis.density)},
                            {"normality", NormalityJson(axis.normality)}};
-    spectrum[kAxisNames[a]] = JsonNumbers(r.spectrum.density[a]);
+    spectrum[kNoiseAxisNames[a]] = JsonNumbers(r.spectrum.density[a]);
   }
   return {{"label", r.label},
           {"date", r.date.empty() ? nlohmann::json() : nlohmann::json(r.date)},

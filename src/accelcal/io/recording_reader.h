@@ -1,5 +1,5 @@
 // Reading a continuous recording into memory: one sample per line, as logged by a data logger
-// or exported by other tools (the imu_tk test data, /work/shared/data/imu_tk/xsens_acc.mat, is
+// or exported by other tools (the imu_tk test data, tests/data/imu_tk/xsens_acc.mat, is
 // one). The reader is the one of every sample table (base/sample_reader.h; README.md,
 // "Recordings and sample streams"); the protocol's form, with no options, is:
 //

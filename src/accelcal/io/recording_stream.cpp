@@ -15,7 +15,7 @@
 namespace accelcal {
 namespace {
 
-std::string Failure(const char* what, const std::string& path, int err) {
+std::string StreamFailure(const char* what, const std::string& path, int err) {
   return std::string(what) + " '" + path + "': " + std::strerror(err);
 }
 
@@ -42,14 +42,14 @@ RecordingStream::RecordingStream(const std::string& path, size_t block_bytes,
     fd_ = STDIN_FILENO;
   } else {
     fd_ = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
-    if (fd_ < 0) throw Error(Failure("cannot open", path, errno));
+    if (fd_ < 0) throw Error(StreamFailure("cannot open", path, errno));
     owns_fd_ = true;
   }
   struct stat info {};
   if (::fstat(fd_, &info) == 0) {
     if (S_ISDIR(info.st_mode)) {
       if (owns_fd_) ::close(fd_);
-      throw Error(Failure("cannot open", path, EISDIR));
+      throw Error(StreamFailure("cannot open", path, EISDIR));
     }
     if (S_ISREG(info.st_mode) && info.st_size > 0) size_hint_ = static_cast<size_t>(info.st_size);
   }
@@ -69,7 +69,7 @@ bool RecordingStream::Fill() {
     const ssize_t got = ::read(fd_, buffer_.get() + used_, block_bytes_ - got_total);
     if (got < 0) {
       if (errno == EINTR) continue;
-      throw Error(Failure("cannot read", path_, errno));
+      throw Error(StreamFailure("cannot read", path_, errno));
     }
     if (got == 0) {
       at_eof_ = true;

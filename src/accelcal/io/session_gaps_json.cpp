@@ -1,4 +1,4 @@
-// The JSON form of SessionGaps (report_model.h): what a wizard session's result carries beside
+// The JSON form of SessionGaps (session/session_gaps.h): what a wizard session's result carries beside
 // the calibration so that `accelcal report SESSION` gives the verdict the wizard gave.
 #include <fmt/core.h>
 

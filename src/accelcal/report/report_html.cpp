@@ -10,6 +10,9 @@
 #include "accelcal/report/svg_plot.h"
 
 namespace accelcal {
+// The sections in a scope of their own: report_text.cpp has sections of the same names, and a unity
+// batch compiles the two as one file.
+namespace report_html_sections {
 namespace {
 
 const char* const kAxisNames[3] = {"x", "y", "z"};
@@ -401,9 +404,7 @@ std::string NoiseAndDrift(const ReportModel& m) {
   return out + "</section>\n";
 }
 
-}  // namespace
-
-std::string RenderReportHtml(const ReportModel& m) {
+std::string Render(const ReportModel& m) {
   std::string title = "Calibration report";
   if (!m.meta.device.empty()) title += " " + m.meta.device;
   std::string out = "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n";
@@ -426,5 +427,10 @@ std::string RenderReportHtml(const ReportModel& m) {
          ". Uncertainties are 1&sigma; from the fit&rsquo;s covariance, scaled by &radic;max(1, &chi;&sup2;/dof).</footer>\n";
   return out + "</div>\n</body>\n</html>\n";
 }
+
+}  // namespace
+}  // namespace report_html_sections
+
+std::string RenderReportHtml(const ReportModel& m) { return report_html_sections::Render(m); }
 
 }  // namespace accelcal

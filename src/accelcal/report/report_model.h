@@ -23,6 +23,7 @@
 #include "accelcal/calibration/calibration.h"
 #include "accelcal/report/certificate.h"
 #include "accelcal/session/procedure.h"
+#include "accelcal/session/session_gaps.h"
 #include "accelcal/session/session_journal.h"
 
 namespace accelcal {
@@ -121,22 +122,6 @@ struct LimitCheck {
   // each would need: limit_checks.h); empty when met.
   std::string why;
   bool on_uncertainty = false;  // a limit on U (the calibration cannot show conformity)
-};
-
-// What a wizard session lacks that its procedure asked for (a calibration file alone knows
-// nothing of it). The report lists every entry; a required one keeps the verdict from PASS.
-struct SessionGaps {
-  struct Step {
-    std::string id;       // the procedure's step id
-    std::string title;    // as shown to the operator
-    std::string why;      // "skipped", "its capture was left out: not still: ..."
-    bool required = true;
-  };
-  std::vector<Step> steps;                  // in procedure order
-  std::vector<std::string> identification;  // required and empty: "device serial", "operator"
-  // The diagnosis found a turntable speed or radius scale (adopted or declined: the base model
-  // then carries the same error in its scales): its note (GravityAmbiguityNote), else empty.
-  std::string gravity_ambiguity;
 };
 
 // PASS: every limit met and nothing required missing. FAIL: a limit not met (a limit on U not

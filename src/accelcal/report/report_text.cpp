@@ -8,6 +8,9 @@
 #include "accelcal/calibration/diagnosis/effect.h"
 #include "accelcal/report/certificate_text.h"
 namespace accelcal {
+// The sections in a scope of their own: report_html.cpp has sections of the same names, and a unity
+// batch compiles the two as one file.
+namespace report_text_sections {
 namespace {
 
 constexpr size_t kWidth = 80;
@@ -242,9 +245,7 @@ std::string Completeness(const ReportModel& m) {
   return out;
 }
 
-}  // namespace
-
-std::string RenderReportText(const ReportModel& m) {
+std::string Render(const ReportModel& m) {
   std::string out = Header(m);
   out += LetterHeading('A', "Results (expanded uncertainty)");
   out += CertificateResultsText(m, Wrap);
@@ -278,5 +279,10 @@ std::string RenderReportText(const ReportModel& m) {
   out += "\n  Date:          ____________________     Date:       ____________________\n";
   return out;
 }
+
+}  // namespace
+}  // namespace report_text_sections
+
+std::string RenderReportText(const ReportModel& m) { return report_text_sections::Render(m); }
 
 }  // namespace accelcal

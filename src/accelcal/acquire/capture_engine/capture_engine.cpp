@@ -10,8 +10,6 @@
 namespace accelcal {
 namespace {
 
-bool IsFinite(const Sample& s) { return std::isfinite(s.t_s) && s.raw_counts.allFinite(); }
-
 // Samples of a stream come every dt: n samples from t_first to t_last cover n dt.
 double CoveredS(double t_first_s, double t_last_s, size_t n) {
   if (n < 2) return 0.0;

@@ -15,8 +15,6 @@ constexpr char kAxisNames[3] = {'x', 'y', 'z'};
 // Removals from a sliding window between rebuilds of its sums (rounding drift).
 constexpr long kResyncRemovals = 4096;
 
-bool IsFinite(const Sample& s) { return std::isfinite(s.t_s) && s.raw_counts.allFinite(); }
-
 int WorstAxis(const Eigen::Vector3d& ratio) {
   int worst = 0;
   for (int axis = 1; axis < 3; ++axis) {

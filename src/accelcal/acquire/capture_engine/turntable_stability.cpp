@@ -11,12 +11,10 @@
 namespace accelcal {
 namespace {
 
-constexpr double kRadToDeg = 180.0 / M_PI;
-constexpr char kAxisNames[3] = {'x', 'y', 'z'};
+constexpr double kDegreesPerRadian = 180.0 / M_PI;
+constexpr char kAxisLetters[3] = {'x', 'y', 'z'};
 // Above this an entered radius is more likely a unit slip than a bench turntable, m.
 constexpr double kLargestLikelyRadiusM = 2.0;
-
-bool IsFinite(const Sample& s) { return std::isfinite(s.t_s) && s.raw_counts.allFinite(); }
 
 // The specific force of each finite sample (platform frame, m/s^2) and its time.
 struct ForceSeries {
@@ -230,7 +228,7 @@ void CheckLevel(const std::vector<Sample>& samples, const SensorModel& rough_mod
     const Eigen::Vector3d cos_mps2 = v->swing.cos_counts.cwiseQuotient(rough_model.scale_counts_per_mps2);
     const Eigen::Vector3d sin_mps2 = v->swing.sin_counts.cwiseQuotient(rough_model.scale_counts_per_mps2);
     v->wobble_amplitude_mps2 = std::sqrt((cos_mps2.squaredNorm() + sin_mps2.squaredNorm()) / 2.0);
-    v->tilt_deg = std::asin(std::min(1.0, v->wobble_amplitude_mps2 / options.gravity_mps2)) * kRadToDeg;
+    v->tilt_deg = std::asin(std::min(1.0, v->wobble_amplitude_mps2 / options.gravity_mps2)) * kDegreesPerRadian;
   }
   v->level = !options.judge_tilt || !(v->tilt_deg > options.max_tilt_deg);
 }
@@ -274,7 +272,7 @@ std::string CheckStill(const std::vector<Sample>& samples, const TurntableStabil
     for (const Sample& s : samples)
       if (IsFinite(s) && seen++ == k_worst) t_s = s.t_s;
     reason = fmt::format("knocked: {} jumped {:.0f} counts ({:.0f} sigma) from the run at t = {:.2f} s",
-                         kAxisNames[axis], residual[k_worst][axis] - mean[axis], sigmas, t_s);
+                         kAxisLetters[axis], residual[k_worst][axis] - mean[axis], sigmas, t_s);
   }
   return reason;
 }
@@ -384,7 +382,7 @@ std::string CheckTurntablePlan(const TurntableSetup& setup, const SensorModel& r
     std::string reason = fmt::format(
         "planned {:.4g} m/s^2 centripetal ({:.4g} rpm at {:.3g} m) exceeds the sensor's range on "
         "{} (about {:.3g}..{:.3g} m/s^2, less a {:.0f} % margin)", c, setup.rpm, setup.radius_m,
-        kAxisNames[axis], (adc_range.min_counts - b) / k, (adc_range.max_counts - b) / k,
+        kAxisLetters[axis], (adc_range.min_counts - b) / k, (adc_range.max_counts - b) / k,
         100.0 * options.range_margin);
     if (setup.radius_m > kLargestLikelyRadiusM) {
       reason += fmt::format("; {:.3g} m is an unusual radius: did you mean {:.3g} m?",

@@ -19,7 +19,7 @@
 //                      70(3) 1982, "1/f noise"). The Allan deviation then sits within 5 % of
 //                      0.664 B for tau from 10 tau_min_s to tau_max_s / 3, within 15 % from
 //                      3 tau_min_s to tau_max_s
-//                      (tests/unit/bias_noise_test.cpp checks it with the closed-form Allan
+//                      (tests/unit/io/bias_noise_test.cpp checks it with the closed-form Allan
 //                      variance of a Gauss-Markov process, IEEE 952 C.1.6).
 //
 // Each Gauss-Markov term is advanced exactly over any step dt: x <- a x + s sqrt(1 - a^2) w with

@@ -4,6 +4,8 @@
 
 #include <algorithm>
 
+#include "accelcal/acquire/source/wall_clock.h"
+
 namespace accelcal {
 
 class ReconnectBackoff {
@@ -23,6 +25,13 @@ class ReconnectBackoff {
   }
   // Wall time before which no attempt should be made, s.
   double next_attempt_s() const { return next_attempt_s_; }
+  // True when an attempt may be made now (at now_s); otherwise sleeps until it may or until
+  // deadline_s, whichever comes first, and returns false (the caller loops).
+  bool Due(double now_s, double deadline_s) const {
+    if (now_s >= next_attempt_s_) return true;
+    source_detail::SleepS(std::min(deadline_s, next_attempt_s_) - now_s);
+    return false;
+  }
 
  private:
   double initial_s_;

@@ -36,7 +36,8 @@ std::string Errno(const std::string& what) { return what + ": " + std::strerror(
 
 class SerialLink final : public ByteLink {
  public:
-  SerialLink(std::string device, long baud) : device_(std::move(device)), baud_(baud) {}
+  SerialLink(std::string device, long baud, bool read_write)
+      : device_(std::move(device)), baud_(baud), read_write_(read_write) {}
   ~SerialLink() override { Close(); }
 
   std::string Describe() const override { return fmt::format("serial:{}@{}", device_, baud_); }
@@ -53,11 +54,12 @@ class SerialLink final : public ByteLink {
 
   std::string device_;
   long baud_;
+  bool read_write_;
   int fd_ = -1;
 };
 
 ByteLink::OpenStep SerialLink::Open(double /*timeout_s*/, std::string* error) {
-  fd_ = ::open(device_.c_str(), O_RDONLY | O_NOCTTY | O_NONBLOCK | O_CLOEXEC);
+  fd_ = ::open(device_.c_str(), (read_write_ ? O_RDWR : O_RDONLY) | O_NOCTTY | O_NONBLOCK | O_CLOEXEC);
   if (fd_ < 0) {
     *error = Errno("open " + device_);
     return OpenStep::kFailed;
@@ -102,11 +104,11 @@ std::string SupportedBaudRatesText() {
   return text;
 }
 
-std::unique_ptr<ByteLink> MakeSerialLink(const std::string& device, long baud) {
+std::unique_ptr<ByteLink> MakeSerialLink(const std::string& device, long baud, bool read_write) {
   if (!IsSupportedBaudRate(baud))
     throw Error(fmt::format("serial:{}@{}: unsupported baud rate {}; supported: {}", device, baud,
                             baud, SupportedBaudRatesText()));
-  return std::make_unique<SerialLink>(device, baud);
+  return std::make_unique<SerialLink>(device, baud, read_write);
 }
 
 }  // namespace accelcal

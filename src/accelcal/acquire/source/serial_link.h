@@ -17,7 +17,8 @@ bool IsSupportedBaudRate(long baud);
 std::string SupportedBaudRatesText();
 
 // The port is opened on the first Open call (a missing device is a failed attempt, retried).
-// Throws accelcal::Error for an unsupported baud rate, listing the supported ones.
-std::unique_ptr<ByteLink> MakeSerialLink(const std::string& device, long baud);
+// Throws accelcal::Error for an unsupported baud rate, listing the supported ones. read_write:
+// opened for writing too (a MAVLink link sends heartbeats and requests); else read only.
+std::unique_ptr<ByteLink> MakeSerialLink(const std::string& device, long baud, bool read_write = false);
 
 }  // namespace accelcal

@@ -5,8 +5,11 @@
 #include "accelcal/base/text_scan.h"
 #include "accelcal/base/error.h"
 #include "accelcal/acquire/sim/scenario.h"
+#include "accelcal/acquire/iio/iio_source.h"
+#include "accelcal/acquire/mavlink/mavlink_source.h"
 #include "accelcal/acquire/source/bag_source.h"
 #include "accelcal/acquire/source/file_link.h"
+#include "accelcal/acquire/source/host_port.h"
 #include "accelcal/bags/bag_open.h"
 #include "accelcal/acquire/source/serial_link.h"
 #include "accelcal/acquire/source/sim_source.h"
@@ -16,7 +19,8 @@
 namespace accelcal {
 namespace {
 
-constexpr const char* kExpected = "expected sim, file:PATH, serial:DEVICE@BAUD, tcp:HOST:PORT or -";
+constexpr const char* kExpected =
+    "expected sim, file:PATH, serial:DEVICE@BAUD, tcp:HOST:PORT, mavlink:LINK, iio:NAME or -";
 
 bool StartsWith(const std::string& text, std::string_view prefix) {
   return text.compare(0, prefix.size(), prefix) == 0;
@@ -36,20 +40,8 @@ SourceSpec ParseSerial(const std::string& spec) {
 }
 
 SourceSpec ParseTcp(const std::string& spec) {
-  const std::string rest = spec.substr(4);
-  const size_t colon = rest.rfind(':');
-  SourceSpec s{SourceKind::kTcp, {}, 0, rest.substr(0, colon), 0};
-  if (s.host.size() >= 2 && s.host.front() == '[' && s.host.back() == ']')
-    s.host = s.host.substr(1, s.host.size() - 2);
-  if (colon == std::string::npos || s.host.empty())
-    throw Error(fmt::format("source '{}': expected tcp:HOST:PORT, e.g. tcp:192.168.7.2:5000",
-                            spec));
-  long port = 0;
-  if (!detail::ParseLong(rest.substr(colon + 1), &port) || port < 1 || port > 65535)
-    throw Error(fmt::format("source '{}': port '{}' is not a number in 1..65535", spec,
-                            rest.substr(colon + 1)));
-  s.port = static_cast<int>(port);
-  return s;
+  const HostPort hp = ParseHostPort(spec.substr(4), spec, "tcp:HOST:PORT, e.g. tcp:192.168.7.2:5000");
+  return {SourceKind::kTcp, {}, 0, hp.host, hp.port};
 }
 
 std::unique_ptr<SampleSource> OpenSim(const SourceOptions& options) {
@@ -70,6 +62,14 @@ SourceSpec ParseSourceSpec(const std::string& spec) {
   }
   if (StartsWith(spec, "serial:")) return ParseSerial(spec);
   if (StartsWith(spec, "tcp:")) return ParseTcp(spec);
+  if (StartsWith(spec, "mavlink:")) {
+    ParseMavlinkSpec(spec);  // throws for a malformed one
+    return {SourceKind::kMavlink, spec, 0, {}, 0};
+  }
+  if (StartsWith(spec, "iio:")) {
+    ParseIioSpec(spec);
+    return {SourceKind::kIio, spec, 0, {}, 0};
+  }
   throw Error(fmt::format("unknown source '{}': {}", detail::TrimBlanks(spec), kExpected));
 }
 
@@ -95,6 +95,10 @@ std::unique_ptr<SampleSource> OpenSource(const std::string& spec, const SourceOp
     case SourceKind::kTcp:
       return std::make_unique<StreamSource>(MakeTcpLink(s.host, s.port), options,
                                             Pacing::kAsFastAsPossible);
+    case SourceKind::kMavlink:
+      return std::make_unique<MavlinkSource>(ParseMavlinkSpec(spec), options);
+    case SourceKind::kIio:
+      return OpenIioSource(ParseIioSpec(spec), options);
   }
   throw Error("unreachable source kind");
 }

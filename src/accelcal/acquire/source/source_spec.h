@@ -6,8 +6,10 @@
 //   serial:DEVICE@BAUD          a serial port in raw mode, e.g. serial:/dev/ttyUSB0@115200
 //   tcp:HOST:PORT               a TCP sample server, e.g. tcp:192.168.7.2:5000, tcp:[::1]:5000
 //   -                           standard input
+//   mavlink:LINK[,imu=N,...]    a flight controller's IMU over MAVLink (mavlink/mavlink_source.h)
+//   iio:DEVICE[,root=DIR,...]   a Linux IIO accelerometer or ADC (iio/iio_source.h)
 //
-// All but sim carry the line protocol of line_stream.h (README.md, "Sample sources").
+// file, serial, tcp and - carry the line protocol of line_stream.h (README.md, "Sample sources").
 #pragma once
 
 #include <memory>
@@ -18,12 +20,12 @@
 
 namespace accelcal {
 
-enum class SourceKind { kSim, kFile, kSerial, kTcp, kStdin };
+enum class SourceKind { kSim, kFile, kSerial, kTcp, kStdin, kMavlink, kIio };
 
 // A spec taken apart; only the fields of its kind are set.
 struct SourceSpec {
   SourceKind kind = SourceKind::kSim;
-  std::string path;  // file: the recording; serial: the device
+  std::string path;  // file: the recording; serial: the device; mavlink, iio: the whole spec
   long baud = 0;     // serial
   std::string host;  // tcp (without brackets)
   int port = 0;      // tcp, 1..65535

@@ -10,6 +10,7 @@
 #include <string_view>
 
 #include "accelcal/base/capture.h"
+#include "accelcal/base/sample_format.h"
 
 namespace accelcal {
 
@@ -46,9 +47,26 @@ struct SourceStatus {
   double rate_hz = kNaN;        // median of recent sample intervals, inverted; NaN until known
   double last_t_s = kNaN;       // t of the latest sample
   double since_last_sample_s = kNaN;  // wall time since the latest sample (as of the last Read)
+  // What a reading's counts are (a MAVLink stream in m/s^2 is taken as counts of 0.001 m/s^2;
+  // the text links: counts unless their format says otherwise), once the source knows.
+  ReadingUnit unit;
+  // The step between two readings the source can deliver, counts (SCALED_IMU's 1 mG is 9.80665
+  // counts of 0.001 m/s^2; an ADC's 1 count); NaN: unknown or finer than anything that matters
+  // (a float). A noise floor near or below step / sqrt(12) is the rounding, not the sensor.
+  double resolution_counts = kNaN;
+  // Samples the sender numbered but that never arrived: MAVLink sequence gaps, IIO timestamps
+  // that jump (buffer overruns).
+  long lost_frames = 0;
+  // The latest event that is neither a sample nor an error: "system 1 rebooted ...", "the
+  // vehicle refused SET_MESSAGE_INTERVAL ...". Empty when none.
+  std::string last_notice;
 
   // One line for a status bar: "up, 100.0 Hz, 1234 samples, 0 malformed, 0 gaps".
   std::string BriefReport() const;
+  // What the resolution means for a noise figure, for the noise floor to say: "the readings come
+  // in steps of 9.81 counts (1 mG): a noise below 2.83 counts (step / sqrt 12) is the rounding,
+  // not the sensor; a quantised stream is not a quiet sensor". Empty when the step is unknown.
+  std::string ResolutionNote() const;
 };
 
 // What happened during one SampleSource::Read call, so that each event can be shown once.
@@ -60,6 +78,7 @@ struct ReadResult {
   bool went_dead = false;    // the link became dead (no sample for dead_after_s)
   bool reconnected = false;  // the link came back after being lost or dead
   bool ended = false;        // the source finished in this call (it stays ended)
+  bool notice = false;       // status().last_notice changed in this call
 };
 
 }  // namespace accelcal

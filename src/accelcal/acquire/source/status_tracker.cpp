@@ -85,9 +85,13 @@ void StatusTracker::OnLinkLost(const std::string& why, ReadResult* result) {
   if (status_.link != LinkState::kDead) result->went_dead = true;
   status_.link = LinkState::kDead;
   status_.link_error = why;
+  dead_of_silence_ = false;
 }
 
-void StatusTracker::OnOpenFailed(const std::string& why) { status_.link_error = why; }
+void StatusTracker::OnOpenFailed(const std::string& why) {
+  status_.link_error = why;
+  dead_of_silence_ = false;
+}
 
 void StatusTracker::OnEnded(ReadResult* result) {
   if (status_.link == LinkState::kEnded) return;
@@ -96,15 +100,33 @@ void StatusTracker::OnEnded(ReadResult* result) {
   result->ended = true;
 }
 
-void StatusTracker::Tick(double now_s, ReadResult* result) {
+void StatusTracker::Tick(double now_s, ReadResult* result, const std::string& silence) {
   if (!std::isnan(last_sample_wall_s_)) status_.since_last_sample_s = now_s - last_sample_wall_s_;
   const bool waiting = status_.link == LinkState::kUp || status_.link == LinkState::kConnecting;
   if (!waiting || now_s - quiet_since_s_ <= dead_after_s_) return;
   status_.link = LinkState::kDead;
   result->went_dead = true;
   // A connection error says more than the silence it causes; keep it when there is one.
-  if (status_.link_error.empty())
-    status_.link_error = fmt::format("no sample for {:.1f} s", now_s - quiet_since_s_);
+  dead_of_silence_ = status_.link_error.empty();
+  if (dead_of_silence_)
+    status_.link_error = fmt::format("no sample for {:.1f} s", now_s - quiet_since_s_) +
+                         (silence.empty() ? "" : ": " + silence);
+}
+
+void StatusTracker::OnSilenceReason(const std::string& silence, double now_s, ReadResult* result) {
+  if (status_.link == LinkState::kDead && dead_of_silence_)
+    status_.link_error = fmt::format("no sample for {:.1f} s: {}", now_s - quiet_since_s_, silence);
+  OnNotice(silence, result);
+}
+
+void StatusTracker::OnNotice(const std::string& notice, ReadResult* result) {
+  status_.last_notice = notice;
+  result->notice = true;
+}
+
+void StatusTracker::SetUnit(const ReadingUnit& unit, double resolution_counts) {
+  status_.unit = unit;
+  status_.resolution_counts = resolution_counts;
 }
 
 }  // namespace accelcal

@@ -36,8 +36,17 @@ class StatusTracker {
   void OnOpenFailed(const std::string& why);
   // The source is finished.
   void OnEnded(ReadResult* result);
-  // Updates the age of the latest sample and applies the dead-link rule.
-  void Tick(double now_s, ReadResult* result);
+  // Updates the age of the latest sample and applies the dead-link rule. `silence`, when not
+  // empty, says why nothing arrives ("no heartbeat from system 1 for 3.2 s"), beside the time.
+  void Tick(double now_s, ReadResult* result, const std::string& silence = {});
+  // A new reason for the silence (a vehicle's heartbeats stopped after its samples had): a
+  // notice, and, when the link is dead for want of samples, its error says the new reason.
+  void OnSilenceReason(const std::string& silence, double now_s, ReadResult* result);
+  // Something the source noticed that is neither a sample nor an error (status().last_notice).
+  void OnNotice(const std::string& notice, ReadResult* result);
+  // The stream's unit and resolution, once the source knows them.
+  void SetUnit(const ReadingUnit& unit, double resolution_counts);
+  void SetLostFrames(long lost_frames) { status_.lost_frames = lost_frames; }
 
   const SourceStatus& status() const { return status_; }
 
@@ -50,6 +59,7 @@ class StatusTracker {
   double dead_after_s_;
   SourceStatus status_;
   double quiet_since_s_;  // wall time from which silence counts towards dead, s
+  bool dead_of_silence_ = false;  // dead for want of samples (not a connection error)
   double last_sample_wall_s_ = kNaN;
   std::array<double, kRateWindow> intervals_s_{};
   long intervals_seen_ = 0;

@@ -83,10 +83,7 @@ void StreamSource::Fill(double deadline_s, ReadResult* result) {
 
 bool StreamSource::TryOpen(double deadline_s, ReadResult* result) {
   const double now_s = WallNowS();
-  if (now_s < backoff_.next_attempt_s()) {
-    SleepS(std::min(deadline_s, backoff_.next_attempt_s()) - now_s);
-    return false;
-  }
+  if (!backoff_.Due(now_s, deadline_s)) return false;
   std::string error;
   switch (link_->Open(std::max(0.0, deadline_s - now_s), &error)) {
     case ByteLink::OpenStep::kOpen:

@@ -10,7 +10,7 @@
 #include "accelcal/analysis/noise_analysis.h"
 #include "accelcal/app/noise_records.h"
 #include "accelcal/base/error.h"
-#include "accelcal/io/calibration_file.h"
+#include "accelcal/io/session_result_file.h"
 #include "accelcal/report/allan_text.h"
 #include "accelcal/report/fit_text.h"
 #include "accelcal/report/noise_text.h"

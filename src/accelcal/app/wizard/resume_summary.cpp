@@ -8,7 +8,7 @@ namespace accelcal {
 namespace {
 
 // "done (capture 7)", "done (capture 7; capture 3 taken again, superseded)", "left out, ...".
-std::string CaptureState(const ProcedureStep& step, const SessionModel& model) {
+std::string CaptureStepState(const ProcedureStep& step, const SessionModel& model) {
   const JournalCapture* current = model.CaptureOf(step.id);
   std::string superseded;
   bool left_out = false;
@@ -37,7 +37,7 @@ std::vector<std::string> ResumeSummaryLines(const Procedure& procedure, const Se
   for (const ProcedureStep& s : procedure.steps) {
     const std::string title = StepDisplayTitle(s);
     // A capture first: a step skipped and then captured after b is done.
-    if (const std::string state = CaptureState(s, model); !state.empty()) {
+    if (const std::string state = CaptureStepState(s, model); !state.empty()) {
       lines.push_back(fmt::format("  {}: {}", title, state));
       continue;
     }

@@ -1,13 +1,13 @@
-// What a wizard session lacks that its procedure asked for, gathered for the report (report's
-// SessionGaps): the steps skipped, the steps whose capture was left out after it was accepted
-// (judged again against a lowered noise floor, and not captured again, or left out by the fit:
-// a turntable run that disagrees with the other captures), and the identification the
+// What a wizard session lacks that its procedure asked for, gathered for the report
+// (session/session_gaps.h): the steps skipped, the steps whose capture was left out after it was
+// accepted (judged again against a lowered noise floor, and not captured again, or left out by
+// the fit: a turntable run that disagrees with the other captures), and the identification the
 // procedure requires but the welcome left empty.
 #pragma once
 
 #include "accelcal/app/wizard/session_model.h"
-#include "accelcal/report/report_model.h"
 #include "accelcal/session/procedure.h"
+#include "accelcal/session/session_gaps.h"
 
 namespace accelcal {
 

@@ -1,6 +1,6 @@
 // The wizard's view-model and intents: the whole contract between the wizard engine (src/,
 // no terminal code) and its front ends (ui/: ncurses and plain line mode). A front end draws a
-// WizardView and sends Intents back; it keeps no calibration state of its own (STYLE.md:
+// WizardView and sends Intents back; it keeps no calibration state of its own (docs/STYLE.md:
 // FTXUI's state/drawing split, htop's single loop).
 //
 // Units: live readings in raw counts and in g (approximate, from the nominal model until the

@@ -12,7 +12,7 @@
 namespace accelcal::effects {
 namespace {
 
-constexpr std::string_view kAxes = "xyz";
+constexpr std::string_view kBenchAxisNames = "xyz";
 constexpr double kRadToDeg = 180.0 / M_PI;
 
 // Bounds (accelcal's): the sensing point within 2 cm of where the radius was measured (a board
@@ -167,7 +167,7 @@ class SizeEffect final : public BenchError<SizeEffect> {
     }
     if (known < 3) return "needs three turntable captures or more";
     for (int j = 0; j < 3; ++j)
-      if (!in_plane[j]) return fmt::format("axis {} never lies in the table's plane", kAxes[j]);
+      if (!in_plane[j]) return fmt::format("axis {} never lies in the table's plane", kBenchAxisNames[j]);
     return {};
   }
   std::string_view CapturePlan() const override {
@@ -179,7 +179,7 @@ class SizeEffect final : public BenchError<SizeEffect> {
     for (int j = 0; j < 3; ++j)
       if (std::fabs(d[j]) > kMaxSizeEffectM)
         return fmt::format("axis {}'s proof mass would sit {:.1f} mm from the sensing point, "
-                           "beyond {:.0f} mm", kAxes[j], 1000.0 * d[j], 1000.0 * kMaxSizeEffectM);
+                           "beyond {:.0f} mm", kBenchAxisNames[j], 1000.0 * d[j], 1000.0 * kMaxSizeEffectM);
     return {};
   }
   template <class S, class Base>

@@ -45,7 +45,7 @@ struct LeaveOneOutResult {
 // settle within 8 Jacobians, a refit: Gauss-Newton warm-started at p_full
 // (LeastSquaresOptions::warm_start, at most 3 iterations), the full solve (NLopt, then
 // Gauss-Newton) when that does not converge. A refit that fails both ways predicts from
-// `p_full`. tests/unit/leave_one_out_test.cpp holds the result to cold refits.
+// `p_full`. tests/unit/acquire/leave_one_out_test.cpp holds the result to cold refits.
 LeaveOneOutResult PredictLeftOut(const ResidualModel& model, const std::vector<FitCapture>& captures,
                                  const Eigen::VectorXd& p_full, const LeastSquaresOptions& solver);
 

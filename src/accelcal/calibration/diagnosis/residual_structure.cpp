@@ -16,7 +16,7 @@ struct Variable {
 };
 
 // Pearson's correlation; NaN when either series is constant.
-double Correlation(const std::vector<double>& x, const std::vector<double>& y) {
+double ResidualCorrelation(const std::vector<double>& x, const std::vector<double>& y) {
   const double n = static_cast<double>(x.size());
   double mx = 0.0, my = 0.0;
   for (size_t i = 0; i < x.size(); ++i) {
@@ -82,7 +82,7 @@ ResidualStructure FindResidualStructure(const std::vector<FitCapture>& captures,
   const double n = static_cast<double>(captures.size());
   double best_p = 1.0;
   for (const Variable& v : BenchVariables(captures)) {
-    const double rho = Correlation(v.values, z);
+    const double rho = ResidualCorrelation(v.values, z);
     if (std::isnan(rho)) continue;
     const double fisher = std::atanh(std::clamp(rho, -0.999999, 0.999999)) * std::sqrt(n - 3.0);
     const double p = std::erfc(std::fabs(fisher) / std::sqrt(2.0));

@@ -9,7 +9,7 @@
 namespace accelcal {
 namespace {
 
-constexpr const char* kAxes[3] = {"X", "Y", "Z"};
+constexpr const char* kPx4Axes[3] = {"X", "Y", "Z"};
 constexpr int kMavParamTypeReal32 = 9;  // MAVLink MAV_PARAM_TYPE_REAL32
 constexpr int kMavParamTypeInt32 = 6;   // MAVLink MAV_PARAM_TYPE_INT32
 
@@ -35,9 +35,9 @@ ExportResult ExportPx4Params(const Calibration& cal, const Px4ExportOptions& opt
   if (options.device_id)
     t += fmt::format("1\t1\tCAL_ACC0_ID\t{}\t{}\n", *options.device_id, kMavParamTypeInt32);
   for (int j = 0; j < 3; ++j)
-    t += fmt::format("1\t1\tCAL_ACC0_{}OFF\t{}\t{}\n", kAxes[j], ExportNumber9(c.offset_mps2(j)), kMavParamTypeReal32);
+    t += fmt::format("1\t1\tCAL_ACC0_{}OFF\t{}\t{}\n", kPx4Axes[j], ExportNumber9(c.offset_mps2(j)), kMavParamTypeReal32);
   for (int j = 0; j < 3; ++j)
-    t += fmt::format("1\t1\tCAL_ACC0_{}SCALE\t{}\t{}\n", kAxes[j], ExportNumber9(c.scale(j)), kMavParamTypeReal32);
+    t += fmt::format("1\t1\tCAL_ACC0_{}SCALE\t{}\t{}\n", kPx4Axes[j], ExportNumber9(c.scale(j)), kMavParamTypeReal32);
   AddDiagonalLimits(cal, c, "PX4", &result);
   if (!options.device_id)
     result.cannot_hold.push_back(

@@ -70,7 +70,8 @@ namespace {
 
 // Columns 0..7 are those of kChunkChecksumColumns, 8 the checksum (NULL in a file older than
 // version 4, read as it is), 9..11 the gap before the chunk.
-constexpr int kIndex = 1, kN = 2, kTLast = 4, kWallEnd = 5, kSamples = 6, kChecksum = 8, kGapStart = 9;
+constexpr int kChunkIndex = 1, kChunkN = 2, kChunkTLast = 4, kChunkWallEnd = 5, kChunkSamples = 6,
+              kChunkChecksum = 8, kChunkGapStart = 9;
 
 std::string SelectSql(bool has_checksum) {
   return fmt::format("SELECT c.step_id, c.chunk_index, c.n, c.t_first_s, c.t_last_s, c.wall_end_s, "
@@ -83,22 +84,22 @@ std::string SelectSql(bool has_checksum) {
 // The chunk of the current row, or what is wrong with it.
 std::string ReadChunk(const SqliteStatement& row, bool has_checksum, RecordChunk* chunk) {
   if (has_checksum) {
-    if (std::string problem = ChecksumProblem(row, 0, kChunkChecksumColumnCount, kChecksum);
+    if (std::string problem = ChecksumProblem(row, 0, kChunkChecksumColumnCount, kChunkChecksum);
         !problem.empty())
       return problem;
   }
-  chunk->index = static_cast<long>(row.ColumnInt(kIndex));
-  chunk->wall_end_s = row.ColumnDouble(kWallEnd);
+  chunk->index = static_cast<long>(row.ColumnInt(kChunkIndex));
+  chunk->wall_end_s = row.ColumnDouble(kChunkWallEnd);
   try {
-    chunk->samples = DecodeSamples(row.ColumnBlob(kSamples));
+    chunk->samples = DecodeSamples(row.ColumnBlob(kChunkSamples));
   } catch (const Error& e) {
     return e.what();
   }
-  if (static_cast<std::int64_t>(chunk->samples.size()) != row.ColumnInt(kN) || chunk->samples.empty())
-    return fmt::format("{} samples stored, {} expected", chunk->samples.size(), row.ColumnInt(kN));
-  if (!row.ColumnIsNull(kGapStart))
-    chunk->gap_before = RecordGap{row.ColumnDouble(kGapStart), row.ColumnDouble(kGapStart + 1),
-                                  row.ColumnText(kGapStart + 2)};
+  if (static_cast<std::int64_t>(chunk->samples.size()) != row.ColumnInt(kChunkN) || chunk->samples.empty())
+    return fmt::format("{} samples stored, {} expected", chunk->samples.size(), row.ColumnInt(kChunkN));
+  if (!row.ColumnIsNull(kChunkGapStart))
+    chunk->gap_before = RecordGap{row.ColumnDouble(kChunkGapStart), row.ColumnDouble(kChunkGapStart + 1),
+                                  row.ColumnText(kChunkGapStart + 2)};
   return "";
 }
 
@@ -138,8 +139,8 @@ void VisitRecordRows(SqliteDb& db, const std::string& step_id,
     const std::string problem = ReadChunk(rows, has_checksum, &chunk);
     if (!problem.empty()) {
       damage += fmt::format("{}chunk {} is damaged in the session file ({}): left out",
-                            damage.empty() ? "" : "; ", rows.ColumnInt(kIndex), problem);
-      damaged_t_last_s = rows.ColumnDouble(kTLast);
+                            damage.empty() ? "" : "; ", rows.ColumnInt(kChunkIndex), problem);
+      damaged_t_last_s = rows.ColumnDouble(kChunkTLast);
       continue;
     }
     if (!damage.empty()) AddDamageGap(damage, last_good_t_s, &chunk);

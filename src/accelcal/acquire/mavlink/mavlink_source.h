@@ -1,0 +1,135 @@
+// mavlink:<link>[,imu=N][,rate=HZ][,msg=highres|scaled|raw][,sys=N][,comp=N]: the accelerometer of
+// a flight controller (ArduPilot, PX4) as a sample source. <link> as in mavlink_link.h.
+//
+// The stream: HIGHRES_IMU (float m/s^2, temperature) is preferred; SCALED_IMU, SCALED_IMU2 and
+// SCALED_IMU3 (int16 mG: IMU 0, 1, 2) or RAW_IMU (the sensor's own units) otherwise; `msg=`
+// forces one. The IMU is `imu=` (the id field of HIGHRES_IMU and RAW_IMU; which SCALED_IMU*
+// message). When a HIGHRES_IMU does not come within about a second of the others, the best
+// that came is taken and said.
+//
+// Counts: the model is in counts; HIGHRES_IMU and SCALED_IMU readings are m/s^2 (mG converted
+// exactly, 1 mG = 9.80665e-3 m/s^2), taken as counts of 0.001 m/s^2 (sample_format.h's
+// ReadingUnit); RAW_IMU's are counts as they come. The status says which, and the resolution: a
+// SCALED_IMU stream moves in steps of 1 mG = 9.80665 counts, so a quiet sensor's noise is hidden
+// in the rounding (std below 2.8 counts is the rounding's).
+//
+// The rate: asked once the vehicle is heard (rate=, default 100 Hz; rate=0 asks nothing) with
+// MAV_CMD_SET_MESSAGE_INTERVAL, or REQUEST_DATA_STREAM (the raw-sensor group) when the vehicle
+// refuses or does not answer; what it sends is measured (status().rate_hz) and the request's
+// outcome said (DescribeReading).
+//
+// Time: the message's own time stamp (time_usec, or time_boot_ms for SCALED_IMU*). A vehicle that
+// reboots starts its clock again: the samples go on after the last one by the wall-clock gap, and
+// the reboot is a notice. Frames the vehicle numbered but that never came are counted as lost
+// (status().lost_frames); a gap in t is a gap as for every source.
+//
+// The vehicle's own calibration: its readings arrive already corrected (offsets, scales, board
+// rotation). SetUndo takes that correction back from every sample (accel_undo.h); the app reads
+// the vehicle's parameters to build it (app/device/vehicle_calibration.h).
+#pragma once
+
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "accelcal/acquire/mavlink/accel_undo.h"
+#include "accelcal/acquire/mavlink/mavlink_connection.h"
+#include "accelcal/acquire/source/sample_source.h"
+#include "accelcal/acquire/source/source_options.h"
+#include "accelcal/acquire/source/status_tracker.h"
+
+namespace accelcal {
+
+struct MavlinkSourceSpec {
+  mavlink::LinkSpec link;
+  int imu = 0;                // 0..2
+  double rate_hz = 100.0;     // asked; 0: ask nothing
+  std::optional<std::uint32_t> message;  // forced: kHighresImu, kScaledImu (the imu's), kRawImu
+  int system = -1, component = -1;
+
+  // "mavlink:tcp:127.0.0.1:5760,imu=0,rate=100".
+  std::string Describe() const;
+};
+
+// Throws accelcal::Error naming the spec for anything malformed.
+MavlinkSourceSpec ParseMavlinkSpec(const std::string& spec);
+
+class MavlinkSource final : public SampleSource, private mavlink::ConnectionObserver {
+ public:
+  // Reads options' dead_after_s, gap_factor and reconnect_*. Opens nothing yet.
+  MavlinkSource(MavlinkSourceSpec spec, const SourceOptions& options);
+  ~MavlinkSource() override;
+
+  std::string Describe() const override { return spec_.Describe(); }
+  ReadResult Read(double timeout_s, std::vector<Sample>* out) override;
+  const SourceStatus& status() const override { return tracker_.status(); }
+  // "HIGHRES_IMU of IMU 0 from system 1 component 1 (ArduPilot): m/s^2, taken as counts of
+  // 0.001 m/s^2 (resolution: float); rate: asked 100 Hz with SET_MESSAGE_INTERVAL, accepted; ...".
+  std::string DescribeReading() const override;
+
+  const MavlinkSourceSpec& spec() const { return spec_; }
+  // The link, for a parameter exchange in the middle of the stream (samples keep coming in).
+  mavlink::Connection& connection() { return connection_; }
+  // Takes the vehicle's correction back from every later sample (nullopt: as sent). Applies to
+  // HIGHRES_IMU and SCALED_IMU streams; RAW_IMU is the sensor's units already.
+  void SetUndo(std::optional<mavlink::AccelUndo> undo) { undo_ = std::move(undo); }
+  const std::optional<mavlink::AccelUndo>& undo() const { return undo_; }
+  // The chosen message (nullopt until chosen).
+  std::optional<std::uint32_t> message() const { return chosen_; }
+  // Every (message, IMU instance) seen from the vehicle with its frame count: a later
+  // several-IMU session takes one source per instance, or reads these.
+  const std::map<std::pair<std::uint32_t, int>, long>& imu_streams() const { return streams_; }
+
+ private:
+  enum class Request { kNotYet, kAwaitAck, kDone };
+
+  void OnFrame(const mavlink::Frame& frame, bool from_vehicle) override;
+  void OnLinkUp() override;
+  void OnLinkLost(const std::string& why) override;
+  void OnOpenFailed(const std::string& why) override;
+  void OnBadFrames(long count, const std::string& latest) override;
+
+  ReadResult& Events() { return current_ != nullptr ? *current_ : scratch_; }
+  void Notice(const std::string& text);
+  void OnImu(const mavlink::ImuReading& reading);
+  void AdvanceRequest(double now_s);
+  void SendRateRequest();
+  void FallBackToDataStream(const std::string& why);
+  void ChooseIfDue(double now_s);
+  void Choose(std::uint32_t message);
+  void Emit(const mavlink::ImuReading& reading);
+  std::uint32_t WantedMessage() const;
+  std::string Silence() const;
+
+  MavlinkSourceSpec spec_;
+  mavlink::Connection connection_;
+  StatusTracker tracker_;
+  ReadResult* current_ = nullptr;  // the Read in progress
+  ReadResult scratch_;             // events outside a Read (a parameter exchange)
+  std::optional<mavlink::AccelUndo> undo_;
+
+  Request request_ = Request::kNotYet;
+  double ack_deadline_s_ = 0.0;
+  double request_done_s_ = -1e300;
+  double last_heartbeat_s_ = -1e300;  // wall time of the vehicle's latest heartbeat
+  std::string request_outcome_;
+
+  std::optional<std::uint32_t> chosen_;
+  double first_other_s_ = -1.0;  // wall time the first non-preferred IMU message came
+  std::map<std::uint32_t, std::vector<mavlink::ImuReading>> held_;  // while choosing
+  std::map<std::pair<std::uint32_t, int>, long> streams_;
+
+  std::vector<Sample> ready_;
+  double offset_s_ = 0.0;          // added to the vehicle's time stamps (reboots)
+  double last_vehicle_t_s_ = kNaN;
+  double last_t_s_ = kNaN;
+  double last_sample_wall_s_ = kNaN;
+  long ties_spread_ = 0;
+  long reboots_ = 0;
+  bool vehicle_gone_said_ = false;  // its heartbeats' stop was said (until they come again)
+};
+
+}  // namespace accelcal

@@ -1,0 +1,92 @@
+#include "accelcal/app/calibration_input.h"
+
+#include <sys/stat.h>
+
+#include <fstream>
+
+#include <fmt/core.h>
+
+#include "accelcal/base/error.h"
+#include "accelcal/io/calibration_file.h"
+#include "accelcal/io/text_file.h"
+#include "accelcal/session/session_paths.h"
+
+namespace accelcal {
+
+namespace {
+
+bool IsRegularFile(const std::string& path) {
+  struct stat info {};
+  return ::stat(path.c_str(), &info) == 0 && S_ISREG(info.st_mode);
+}
+
+// A calibration file is JSON: its first non-blank byte is '{'.
+bool StartsLikeJson(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  char c = 0;
+  while (in.get(c))
+    if (c != ' ' && c != '\n' && c != '\r' && c != '\t') return c == '{';
+  return false;
+}
+
+}  // namespace
+
+bool IsSessionFile(const std::string& path) {
+  if (!IsRegularFile(path)) return false;
+  std::ifstream in(path, std::ios::binary);
+  char magic[16] = {};
+  in.read(magic, sizeof magic);
+  return in.gcount() == sizeof magic && std::string(magic, sizeof magic) == std::string("SQLite format 3\0", 16);
+}
+
+LocatedCalibrationInput LocateCalibrationInput(const std::string& input) {
+  if (IsReadOnceInput(input)) return {CalibrationInputKind::kCalibrationFile, input};
+  if (IsSessionFile(input)) return {CalibrationInputKind::kSession, input};
+  if (IsRegularFile(input)) {
+    if (StartsLikeJson(input)) return {CalibrationInputKind::kCalibrationFile, input};
+    throw Error(fmt::format("{} is not an accelcal session or a calibration file (neither a "
+                            "session's SQLite file nor JSON)", input));
+  }
+  // Nothing there: a bare name is a session's in the default folder; a path is a missing file,
+  // said as its reader says it.
+  if (input.find('/') == std::string::npos) return {CalibrationInputKind::kSession, ResolveSessionPath(input)};
+  return {CalibrationInputKind::kCalibrationFile, input};
+}
+
+SessionWithResult OpenSessionResult(const std::string& path) {
+  SessionOpenOptions read_only;
+  read_only.read_only = true;
+  SessionWithResult s;
+  s.store = SessionStore::Open(path, read_only);
+  s.info = s.store->Info();
+  std::optional<std::string> result = s.store->Result();
+  if (!result && !DescribeRecords(*s.store).empty())
+    throw Error(fmt::format("session {} has no calibration: it holds records ({}), which another "
+                            "command analyses", path, DescribeRecords(*s.store)));
+  if (!result)
+    throw Error(fmt::format("session {} has no calibration yet: {} captures accepted; run the "
+                            "wizard to finish it", path, s.info.num_captures));
+  s.result_text = std::move(*result);
+  return s;
+}
+
+CalibrationInput ReadCalibrationInput(const LocatedCalibrationInput& at) {
+  CalibrationInput in;
+  in.kind = at.kind;
+  in.path = at.path;
+  if (at.kind == CalibrationInputKind::kSession) {
+    SessionWithResult s = OpenSessionResult(at.path);
+    in.text = std::move(s.result_text);
+    in.session = std::move(s.info);
+  } else {
+    in.text = ReadTextFile(at.path);
+  }
+  in.calibration = CalibrationFromJsonText(in.text, at.path);
+  return in;
+}
+
+CalibrationInput ReadCalibrationInput(const std::string& input) {
+  return ReadCalibrationInput(LocateCalibrationInput(input));
+}
+
+}  // namespace accelcal

@@ -1,0 +1,108 @@
+// What the wizard tells the technician to do at the bench (issue 15): a tilted pose says which
+// corner or edge goes down, a turntable step says "stop the table" before the sensor is touched
+// and "start the table at N rpm, wait for it to settle" before the capture, and the diagnosis
+// speaks plain words with the statistics one key (d) away. The engine on the virtual bench.
+#include <algorithm>
+#include <functional>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "accelcal/acquire/sim/scenario.h"
+#include "accelcal/acquire/source/sim_source.h"
+#include "accelcal/app/wizard/wizard_engine.h"
+#include "accelcal/io/procedure_file.h"
+#include "accelcal/io/scenario_file.h"
+#include "accelcal/session/session_journal.h"
+
+namespace accelcal::wizard_bench_words_test {
+namespace {
+
+Procedure ShortSeed() {
+  Procedure p = LoadProcedure(std::string(ACCELCAL_SOURCE_DIR) + "/procedures/seed_calibration.toml");
+  for (ProcedureStep& s : p.steps) s.duration_s = std::min(s.duration_s, 3.0);
+  return p;
+}
+
+struct Rig {
+  explicit Rig(sim::Scenario scenario)
+      : sim(std::move(scenario), [] {
+          SimOptions o;
+          o.speed = 0.0;
+          o.bump_probability = 0.0;
+          return o;
+        }()),
+        journal(MakeMemoryJournal()),
+        engine(ShortSeed(), sim, *journal, WizardOptions{"test", "op", "SN1", {}, 2.0, {}}) {}
+  SimSource sim;
+  std::unique_ptr<SessionJournal> journal;
+  WizardEngine engine;
+};
+
+bool Busy(const WizardView& v) { return v.screen == WizardScreen::kCapturing && !v.input; }
+
+void AcceptUntil(WizardEngine& e, const std::function<bool(const WizardView&)>& stop) {
+  for (int i = 0; i < 400; ++i) {
+    for (int k = 0; k < 5000 && Busy(e.View()); ++k) e.Poll(0.0);
+    if (stop(e.View())) return;
+    ASSERT_FALSE(e.View().finished) << "finished before getting there";
+    e.Handle({IntentKind::kAccept, ""});
+  }
+  FAIL() << "the wizard did not get there";
+}
+
+bool PromptStarts(const WizardView& v, const std::string& start) { return v.prompt.rfind(start, 0) == 0; }
+
+TEST(WizardBenchWordsTest, ATiltedPoseSaysWhichCornerGoesDown) {
+  Rig rig(sim::DefaultScenario());
+  AcceptUntil(rig.engine, [](const WizardView& v) { return v.step_title == "tilted +x+y-z" && PromptStarts(v, "Set"); });
+  EXPECT_EQ(rig.engine.View().prompt,
+            "Set the prism on its -X-Y+Z corner (where the -X, -Y and +Z faces meet), the +X+Y-Z corner "
+            "straight above it: the +X, +Y and -Z faces each tilted 54.7 deg from level; steady it in a "
+            "holder and let go; press Enter to capture.");
+}
+
+TEST(WizardBenchWordsTest, TheTurntableIsStoppedBeforeTheSensorIsTouchedAndStartedBeforeTheCapture) {
+  Rig rig(sim::DefaultScenario());
+  AcceptUntil(rig.engine, [](const WizardView& v) { return v.input && v.input->key == "radius"; });
+  EXPECT_EQ(rig.engine.View().prompt, "Turntable run with +x radial, +z up: stop the table before you touch the sensor.");
+  rig.engine.Handle({IntentKind::kSubmitText, ""});
+  rig.engine.Handle({IntentKind::kSubmitText, ""});
+  const WizardView v = rig.engine.View();
+  EXPECT_EQ(v.screen, WizardScreen::kMountTurntable);
+  EXPECT_EQ(v.prompt, "Stop the table before you touch the sensor. Mount it with +x radial, +z up at 50 mm from "
+                      "the axis, then start the table at 120 rpm and wait for it to settle; press Enter when it "
+                      "turns steadily.");
+}
+
+// effects_demo's bench: every radius 3 mm longer than entered and a quadratic response.
+TEST(WizardBenchWordsTest, TheDiagnosisSpeaksPlainWordsWithTheStatisticsOneKeyAway) {
+  Rig rig(sim::LoadScenario(std::string(ACCELCAL_SOURCE_DIR) + "/scenarios/effects_demo.toml"));
+  AcceptUntil(rig.engine, [](const WizardView& v) { return v.screen == WizardScreen::kDiagnosis; });
+  WizardView v = rig.engine.View();
+  ASSERT_TRUE(v.problem.empty()) << v.problem;
+  EXPECT_NE(v.prompt.find("(recommended), or keep the basic model?"), std::string::npos) << v.prompt;
+  const auto has = [](const WizardView& w, const std::string& part) {
+    return std::any_of(w.lines.begin(), w.lines.end(),
+                       [&](const std::string& l) { return l.find(part) != std::string::npos; });
+  };
+  EXPECT_TRUE(has(v, "- the turntable radius seems ")) << v.prompt;
+  EXPECT_TRUE(has(v, " mm longer than entered"));
+  EXPECT_TRUE(has(v, "- the sensor's output is not quite a straight line"));
+  EXPECT_FALSE(has(v, "BIC"));
+  EXPECT_FALSE(has(v, "seed"));
+  ASSERT_FALSE(v.keys.empty());
+  EXPECT_EQ(v.keys[0].key, "Enter");
+  EXPECT_NE(v.keys[0].action.find("(recommended)"), std::string::npos);
+  rig.engine.Handle({IntentKind::kDetails, ""});
+  v = rig.engine.View();
+  EXPECT_TRUE(has(v, "BIC"));
+  rig.engine.Handle({IntentKind::kDetails, ""});
+  EXPECT_FALSE(has(rig.engine.View(), "BIC"));
+  rig.engine.Handle({IntentKind::kAccept, ""});  // the recommended choice
+  EXPECT_EQ(rig.journal->DoneSteps().at("diagnosis").rfind("adopted: ", 0), 0u);
+  EXPECT_NE(rig.journal->DoneSteps().at("diagnosis").find("radius_offset"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace accelcal::wizard_bench_words_test
