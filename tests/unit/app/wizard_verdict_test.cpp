@@ -8,6 +8,7 @@
 
 #include "accelcal/io/calibration_file.h"
 #include "accelcal/io/scenario_file.h"
+#include "accelcal/io/session_result_file.h"
 #include "accelcal/report/report_model.h"
 #include "accelcal/report/report_text.h"
 #include "accelcal/report/uncertainty_text.h"

@@ -6,6 +6,7 @@
 #pragma once
 
 #include "accelcal/app/wizard/session_model.h"
+#include "accelcal/calibration/calibration.h"
 #include "accelcal/session/procedure.h"
 #include "accelcal/session/session_gaps.h"
 
