@@ -51,7 +51,7 @@ NoiseRecordSet NoiseRecordsOfDevice(const std::string& sessions_dir, const std::
                                     const Procedure& noise_procedure) {
   std::set<std::string> record_steps;
   for (const ProcedureStep& step : noise_procedure.steps)
-    if (step.kind == StepKind::kRecord) record_steps.insert(step.id);
+    if (IsRecordStep(step.kind)) record_steps.insert(step.id);
   if (record_steps.empty())
     throw Error(fmt::format("procedure {} has no `record` step: not a noise procedure",
                             noise_procedure.source_name));

@@ -6,6 +6,7 @@
 #include "accelcal/base/error.h"
 #include "accelcal/io/calibration_file.h"
 #include "accelcal/io/session_result_file.h"
+#include "accelcal/session/session_inputs.h"
 
 namespace accelcal {
 
@@ -18,12 +19,10 @@ ReportInputs ReportInputsFromJournal(const SessionJournal& journal, const std::s
   for (const JournalCapture& c : CurrentCaptures(journal.Captures()))
     in.captures.push_back(ReportStatsOf(c.capture));
   for (const DamagedCapture& d : journal.DamagedCaptures()) in.damaged_captures.push_back(d.Describe());
-  FillMetaFromInputs(journal.Inputs(), &in.meta);
-  // (Inputs() returns a copy: hold it while its iterators are used.)
-  const std::map<std::string, std::map<std::string, std::string>> inputs = journal.Inputs();
-  if (const auto welcome = inputs.find("welcome"); welcome != inputs.end())
-    if (const auto answer = welcome->second.find("equipment"); answer != welcome->second.end())
-      in.equipment_answer = answer->second;
+  const SessionInputs inputs = journal.Inputs();
+  FillMetaFromInputs(inputs, &in.meta);
+  if (std::optional<std::string> equipment = ReadWelcomeAnswers(inputs).equipment)
+    in.equipment_answer = std::move(*equipment);
   ReadAnalysesFromResultText(*result, source_name, &in);
   in.meta.history = SessionHistory(journal, journal.ResultCount() - 1);
   return in;

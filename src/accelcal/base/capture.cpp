@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
+
+#include <fmt/core.h>
 
 namespace accelcal {
 
@@ -36,6 +39,16 @@ Eigen::Vector3d SensorAxisVector(SensorAxis axis) {
   Eigen::Vector3d v = Eigen::Vector3d::Zero();
   v(i / 2) = (i % 2 == 0) ? 1.0 : -1.0;
   return v;
+}
+
+std::string DescribeUp(const Eigen::Vector3d& up) {
+  const Eigen::Vector3d u = up.normalized();
+  const char* names[3] = {"x", "y", "z"};
+  for (int axis = 0; axis < 3; ++axis) {
+    if (std::fabs(std::fabs(u[axis]) - 1.0) < 1e-6)
+      return fmt::format("{}{}", u[axis] > 0 ? '+' : '-', names[axis]);
+  }
+  return fmt::format("({:.2f}, {:.2f}, {:.2f})", u.x(), u.y(), u.z());
 }
 
 void CaptureStats::Add(const Sample& s) {

@@ -32,6 +32,8 @@ std::string_view SensorAxisToString(SensorAxis axis);
 std::optional<SensorAxis> StringToSensorAxis(std::string_view text);
 // Unit vector of `axis` in sensor (platform) coordinates.
 Eigen::Vector3d SensorAxisVector(SensorAxis axis);
+// The name of a face ("+z") when `up` is within 1e-6 of one; else "(x, y, z)".
+std::string DescribeUp(const Eigen::Vector3d& up);
 
 struct Sample {
   double t_s = 0.0;

@@ -5,10 +5,8 @@
 #include <set>
 
 #include <fmt/core.h>
-#include <Eigen/Geometry>
 #include <toml++/toml.h>
 
-#include "accelcal/acquire/capture_engine/orientation_check.h"
 #include "accelcal/base/error.h"
 #include "accelcal/io/detail/read_file.h"
 #include "accelcal/io/detail/toml_reader.h"
@@ -32,13 +30,8 @@ void ReadSensor(TomlTableReader& r, Procedure& p) {
   p.adc_range = is_signed ? AdcRange{-span / 2, span / 2 - 1} : AdcRange{0.0, span - 1};
 }
 
-struct CaptureDefaults {
-  double duration_s = 10.0;
-  double timeout_s = 60.0;
-};
-
-CaptureDefaults ReadChecks(TomlTableReader& r, Procedure& p) {
-  CaptureDefaults d;
+StepDefaults ReadChecks(TomlTableReader& r, Procedure& p) {
+  StepDefaults d;
   d.duration_s = r.Number("capture_duration_s", 10.0, NumberRange::kPositive);
   d.timeout_s = r.Number("capture_timeout_s", 60.0, NumberRange::kPositive);
   p.orientation_tolerance_deg = r.Number("orientation_tolerance_deg", 15.0, NumberRange::kPositive);
@@ -127,86 +120,54 @@ std::vector<EquipmentItem> ReadEquipment(TomlTableReader& r, const std::string& 
   return items;
 }
 
-SensorAxis ReadAxis(TomlTableReader& r, std::string_view key, SensorAxis fallback) {
-  const std::string text = r.String(key, std::string(SensorAxisToString(fallback)));
-  const std::optional<SensorAxis> axis = StringToSensorAxis(text);
-  if (!axis) r.Fail(*r.Get(key), key, "'" + text + "' is not an axis: expected +x, -x, ... -z");
-  return *axis;
-}
-
-void ReadPose(TomlTableReader& r, ProcedureStep& s) {
-  s.up = r.Vector3("up", Eigen::Vector3d::UnitZ());
-  if (!(s.up.norm() > 0.0)) r.FailKey("up", "must not be zero");
-  s.up.normalize();
-  s.pose_name = r.String("pose", DescribeUp(s.up) + " up");
-}
-
-void ReadTurntable(TomlTableReader& r, ProcedureStep& s) {
-  s.radius_m = r.Number("radius_m", std::nullopt, NumberRange::kPositive);
-  s.rpm = r.Number("rpm", std::nullopt, NumberRange::kPositive);
-  s.radial_axis = ReadAxis(r, "radial", SensorAxis::kPlusX);
-  s.up_axis = ReadAxis(r, "up_axis", SensorAxis::kPlusZ);
-  if (SensorAxisVector(s.radial_axis).cross(SensorAxisVector(s.up_axis)).norm() < 0.5)
-    r.FailKey("radial", "must be perpendicular to up_axis");  // "radial" may be the default
-  s.pose_name = fmt::format("{} radial, {} up", SensorAxisToString(s.radial_axis),
-                            SensorAxisToString(s.up_axis));
-}
-
-void ReadDurations(TomlTableReader& r, ProcedureStep& s, const CaptureDefaults& d) {
-  s.duration_s = r.Number("duration_s", d.duration_s, NumberRange::kPositive);
-  // A long record gets a timeout beyond its own length by default.
-  const double fallback = std::max(d.timeout_s, s.duration_s + d.timeout_s);
-  s.timeout_s = r.Number("timeout_s", s.duration_s >= d.timeout_s ? fallback : d.timeout_s,
-                         NumberRange::kPositive);
-  if (s.timeout_s <= s.duration_s) {
-    if (const toml::node* node = r.Get("timeout_s")) r.Fail(*node, "timeout_s", "must exceed duration_s");
-    r.Fail(*r.Get("duration_s"), "duration_s", "must be below the capture timeout");
+// A step's fields read from its TOML table, for its kind's reader (session/step_kind.h).
+class TomlStepFields final : public StepFields {
+ public:
+  explicit TomlStepFields(TomlTableReader& r) : r_(r) {}
+  bool Has(std::string_view key) const override { return r_.Has(key); }
+  double Number(std::string_view key, std::optional<double> fallback, FieldRange range) override {
+    return r_.Number(key, fallback, range == FieldRange::kPositive      ? NumberRange::kPositive
+                                    : range == FieldRange::kNonNegative ? NumberRange::kNonNegative
+                                                                        : NumberRange::kAny);
   }
+  std::string Text(std::string_view key, std::optional<std::string> fallback) override {
+    return r_.String(key, std::move(fallback));
+  }
+  Eigen::Vector3d Vector3(std::string_view key, std::optional<Eigen::Vector3d> fallback) override {
+    return r_.Vector3(key, fallback);
+  }
+  [[noreturn]] void Fail(std::string_view key, const std::string& message) const override {
+    r_.FailKey(key, message);
+  }
+
+ private:
+  TomlTableReader& r_;
+};
+
+// "level, static, ... or analysis": the kinds the table knows.
+std::string KindChoices() {
+  const std::vector<std::string_view> names = StepKindNames();
+  std::string text;
+  for (size_t i = 0; i < names.size(); ++i)
+    text += (i == 0 ? "" : i + 1 == names.size() ? " or " : ", ") + std::string(names[i]);
+  return text;
 }
 
-ProcedureStep ReadStep(TomlTableReader& r, const CaptureDefaults& d) {
+// The fields every step has, and its kind's own (its kind reads them: session/step_kind.h).
+ProcedureStep ReadStep(TomlTableReader& r, const StepDefaults& d) {
   ProcedureStep s;
   s.id = r.String("id", std::nullopt);
   if (s.id.empty()) r.Fail(*r.Get("id"), "id", "must not be empty");
   const std::string kind = r.String("kind", std::nullopt);
   const std::optional<StepKind> k = StringToStepKind(kind);
-  if (!k) {
-    r.Fail(*r.Get("kind"), "kind",
-           "'" + kind + "' is not a step kind: expected level, static, turntable, record, fit, "
-           "diagnosis, report or analysis");
-  }
+  if (!k) r.Fail(*r.Get("kind"), "kind", "'" + kind + "' is not a step kind: expected " + KindChoices());
   s.kind = *k;
-  switch (s.kind) {
-    case StepKind::kLevel:
-      s.tolerance_deg = r.Number("tolerance_deg", 1.5, NumberRange::kPositive);
-      s.duration_s = r.Number("duration_s", 3.0, NumberRange::kPositive);
-      s.timeout_s = r.Number("timeout_s", d.timeout_s, NumberRange::kPositive);
-      break;
-    case StepKind::kStatic:
-      ReadPose(r, s);
-      ReadDurations(r, s, d);
-      break;
-    case StepKind::kRecord:
-      ReadPose(r, s);
-      ReadDurations(r, s, d);
-      s.chunk_s = r.Number("chunk_s", ProcedureStep::kDefaultRecordChunkS, NumberRange::kPositive);
-      break;
-    case StepKind::kTurntable:
-      ReadTurntable(r, s);
-      ReadDurations(r, s, d);
-      break;
-    case StepKind::kAnalysis:
-      s.record_step = r.String("record", std::nullopt);
-      s.method = r.String("method", std::nullopt);
-      if (s.method != "allan" && s.method != "noise")
-        r.Fail(*r.Get("method"), "method", "'" + s.method + "' is not an analysis: expected allan or noise");
-      break;
-    default: break;
-  }
-  s.title = r.String("title", s.pose_name.empty() ? std::string(StepKindToString(s.kind))
-                                                  : s.pose_name);
+  const StepKindInfo& info = InfoOf(s.kind);
+  TomlStepFields fields(r);
+  if (info.read_fields != nullptr) info.read_fields(fields, s, d);
+  s.title = r.String("title", s.pose_name.empty() ? std::string(info.name) : s.pose_name);
   s.required = r.Bool("required", true);
-  if (s.kind == StepKind::kLevel) s.pose_name = "+z up";  // the reversal's pose
+  if (!info.fixed_pose.empty()) s.pose_name = std::string(info.fixed_pose);
   return s;
 }
 
@@ -219,7 +180,7 @@ void WithTable(TomlTableReader& root, std::string_view key, const std::string& s
   reader.Finish();
 }
 
-void ReadSteps(TomlTableReader& root, const CaptureDefaults& d, const std::string& source,
+void ReadSteps(TomlTableReader& root, const StepDefaults& d, const std::string& source,
                Procedure& p) {
   const toml::array* steps = root.ArrayOfTables("step");
   if (steps == nullptr || steps->empty())
@@ -231,12 +192,9 @@ void ReadSteps(TomlTableReader& root, const CaptureDefaults& d, const std::strin
     ProcedureStep s = ReadStep(r, d);
     r.Finish();
     if (!ids.insert(s.id).second) r.Fail(*r.Get("id"), "id", "'" + s.id + "' is used twice");
-    if (s.kind == StepKind::kAnalysis) {
-      const bool earlier_record = std::any_of(p.steps.begin(), p.steps.end(), [&](const ProcedureStep& e) {
-        return e.id == s.record_step && e.kind == StepKind::kRecord;
-      });
-      if (!earlier_record)
-        r.Fail(*r.Get("record"), "record", "'" + s.record_step + "' is not an earlier record step");
+    if (const auto check = InfoOf(s.kind).check_order) {
+      TomlStepFields fields(r);
+      check(s, p.steps, fields);
     }
     p.steps.push_back(std::move(s));
   }
@@ -256,7 +214,7 @@ Procedure ParseProcedure(std::string_view toml_text, const std::string& source_n
     has_sensor = true;
   });
   if (!has_sensor) throw InputError(source_name, 0, 0, "required table [sensor] is missing");
-  CaptureDefaults defaults;
+  StepDefaults defaults;
   WithTable(root, "checks", source_name,
             [&](TomlTableReader& r) { defaults = ReadChecks(r, p); });
   WithTable(root, "limits", source_name, [&](TomlTableReader& r) { p.limits = ReadLimits(r); });

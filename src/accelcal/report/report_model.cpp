@@ -9,6 +9,7 @@
 #include "accelcal/base/error.h"
 #include "accelcal/base/version.h"
 #include "accelcal/base/sensor_model.h"
+#include "accelcal/session/session_inputs.h"
 #include "accelcal/calibration/diagnosis/effect.h"
 #include "accelcal/report/completeness.h"
 #include "accelcal/report/limit_checks.h"
@@ -214,9 +215,9 @@ ReportModel BuildReportModel(const ReportInputs& in) {
 void FillMetaFromInputs(const std::map<std::string, std::map<std::string, std::string>>& inputs,
                         ReportMeta* meta) {
   for (const auto& [step, values] : inputs) {
-    if (auto it = values.find("device"); it != values.end()) meta->device = it->second;
-    if (auto it = values.find("operator"); it != values.end()) meta->operator_name = it->second;
-    if (auto it = values.find("place"); it != values.end()) meta->place = it->second;
+    if (auto it = values.find(welcome_key::kDevice); it != values.end()) meta->device = it->second;
+    if (auto it = values.find(welcome_key::kOperator); it != values.end()) meta->operator_name = it->second;
+    if (auto it = values.find(welcome_key::kPlace); it != values.end()) meta->place = it->second;
   }
 }
 

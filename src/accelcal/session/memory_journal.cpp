@@ -46,7 +46,7 @@ class MemoryJournal final : public SessionJournal {
   }
   void MarkDone() override { done_session_ = true; }
   std::vector<JournalCapture> Captures() const override { return captures_; }
-  std::map<std::string, std::map<std::string, std::string>> Inputs() const override { return inputs_; }
+  SessionInputs Inputs() const override { return inputs_; }
   std::map<std::string, std::string> DoneSteps() const override { return done_; }
   std::optional<std::string> Result() const override { return result_; }
   int ResultCount() const override { return results_; }

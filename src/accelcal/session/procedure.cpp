@@ -3,32 +3,11 @@
 #include <cmath>
 
 namespace accelcal {
-namespace {
-
-constexpr std::pair<StepKind, std::string_view> kKindNames[] = {
-    {StepKind::kLevel, "level"},         {StepKind::kStatic, "static"},
-    {StepKind::kTurntable, "turntable"}, {StepKind::kRecord, "record"},
-    {StepKind::kFit, "fit"},             {StepKind::kDiagnosis, "diagnosis"},
-    {StepKind::kReport, "report"},       {StepKind::kAnalysis, "analysis"}};
-
-}  // namespace
-
-std::string_view StepKindToString(StepKind kind) {
-  for (const auto& [k, name] : kKindNames)
-    if (k == kind) return name;
-  return "?";
-}
-
-std::optional<StepKind> StringToStepKind(std::string_view text) {
-  for (const auto& [k, name] : kKindNames)
-    if (name == text) return k;
-  return std::nullopt;
-}
 
 std::vector<Eigen::Vector3d> Procedure::TiltedPoses() const {
   std::vector<Eigen::Vector3d> out;
   for (const ProcedureStep& s : steps) {
-    if (s.kind != StepKind::kStatic) continue;
+    if (!IsStaticPoseStep(s.kind)) continue;
     if ((s.up.array().abs() > 1e-6).count() > 1) out.push_back(s.up);
   }
   return out;

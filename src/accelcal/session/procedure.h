@@ -5,6 +5,7 @@
 // g for the accelerometer's range, counts and counts per m/s^2 for the nominal model.
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -16,23 +17,9 @@
 #include "accelcal/base/capture_set.h"
 #include "accelcal/base/sensor_model.h"
 #include "accelcal/session/equipment.h"
+#include "accelcal/session/step_kind.h"
 
 namespace accelcal {
-
-enum class StepKind {
-  kLevel,      // level the table (reversal method)
-  kStatic,     // a static pose on the prism
-  kTurntable,  // a turntable run
-  kRecord,     // a long static record (noise, drift), streamed to the journal in chunks
-  kFit,        // the nine-parameter fit over the accepted captures
-  kDiagnosis,  // the diagnosis; asks before adopting an effect
-  kReport,     // the calibration report; the session's result is recorded
-  kAnalysis,   // the noise or drift analysis of an earlier record step, shown
-};
-
-// "level", "static", "turntable", "record", "fit", "diagnosis", "report", "analysis".
-std::string_view StepKindToString(StepKind kind);
-std::optional<StepKind> StringToStepKind(std::string_view text);
 
 struct ProcedureStep {
   std::string id;     // unique in the procedure; the journal's step id
@@ -60,6 +47,9 @@ struct ProcedureStep {
   // The calibration needs this step: skipping it (or having its capture left out) makes the
   // report's verdict INCOMPLETE. TOML `required`, default true.
   bool required = true;
+  // A kind's own fields that none of the members above holds (step_kind.h); null for the
+  // kinds of the table.
+  std::shared_ptr<const StepOwnFields> own_fields;
 
   static constexpr double kDefaultRecordChunkS = 10.0;
 };

@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "accelcal/base/capture.h"
+#include "accelcal/session/session_inputs.h"
 
 namespace accelcal {
 
@@ -127,7 +128,7 @@ class SessionJournal {
   // fails its check on read (session_store.h) is left out here and named by DamagedCaptures().
   virtual std::vector<JournalCapture> Captures() const = 0;
   virtual std::vector<DamagedCapture> DamagedCaptures() const { return {}; }
-  virtual std::map<std::string, std::map<std::string, std::string>> Inputs() const = 0;
+  virtual SessionInputs Inputs() const = 0;
   virtual std::map<std::string, std::string> DoneSteps() const = 0;  // step id -> outcome
   virtual std::optional<std::string> Result() const = 0;  // the latest RecordResult text
   // How many results were recorded, the latest included (0: none).

@@ -206,7 +206,7 @@ std::vector<DamagedCapture> SessionStore::DamagedCaptures() const {
   return detail::ReadCaptureRows(*db_).damaged;
 }
 
-std::map<std::string, std::map<std::string, std::string>> SessionStore::Inputs() const {
+SessionInputs SessionStore::Inputs() const {
   std::map<std::string, std::map<std::string, std::string>> out;
   SqliteStatement rows(*db_, "SELECT step_id, key, value FROM inputs");
   while (rows.Step()) out[rows.ColumnText(0)][rows.ColumnText(1)] = rows.ColumnText(2);

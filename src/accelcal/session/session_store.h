@@ -64,11 +64,11 @@ struct SessionInfo {
   bool has_result = false;
 };
 
-// The input keys that also fill the session's device and operator, at whichever step records
-// them ("session" by convention; the wizard asks at "welcome").
+// The input keys that also fill the session's device and operator (session_inputs.h), at
+// whichever step records them ("session" by convention; the wizard asks at "welcome").
 inline constexpr const char* kSessionStep = "session";
-inline constexpr const char* kDeviceKey = "device";
-inline constexpr const char* kOperatorKey = "operator";
+inline constexpr const char* kDeviceKey = welcome_key::kDevice;
+inline constexpr const char* kOperatorKey = welcome_key::kOperator;
 
 class SessionStore final : public SessionJournal {
  public:
@@ -90,7 +90,7 @@ class SessionStore final : public SessionJournal {
 
   std::vector<JournalCapture> Captures() const override;
   std::vector<DamagedCapture> DamagedCaptures() const override;
-  std::map<std::string, std::map<std::string, std::string>> Inputs() const override;
+  SessionInputs Inputs() const override;
   std::map<std::string, std::string> DoneSteps() const override;
   std::optional<std::string> Result() const override;
   int ResultCount() const override;

@@ -63,16 +63,6 @@ std::vector<NamedPose> PrismFaces() {
           {"+z", Eigen::Vector3d::UnitZ()},  {"-z", -Eigen::Vector3d::UnitZ()}};
 }
 
-std::string DescribeUp(const Eigen::Vector3d& up) {
-  const Eigen::Vector3d u = up.normalized();
-  const char* names[3] = {"x", "y", "z"};
-  for (int axis = 0; axis < 3; ++axis) {
-    if (std::fabs(std::fabs(u[axis]) - 1.0) < 1e-6)
-      return fmt::format("{}{}", u[axis] > 0 ? '+' : '-', names[axis]);
-  }
-  return fmt::format("({:.2f}, {:.2f}, {:.2f})", u.x(), u.y(), u.z());
-}
-
 double AngleBetweenDeg(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
   // atan2 of |a x b| and a.b stays accurate for small and near-180 deg angles (acos does not).
   return std::atan2(a.cross(b).norm(), a.dot(b)) * kRadToDeg;

@@ -58,8 +58,6 @@ struct OrientationVerdict {
 
 // The six faces of a prism as named poses: "+x" (x up), "-x", ..., "-z".
 std::vector<NamedPose> PrismFaces();
-// The name of a face ("+z") when `up` is within 1e-6 of one; else "(x, y, z)".
-std::string DescribeUp(const Eigen::Vector3d& up);
 
 // The check of the header comment. `expected` names the pose asked for; `known_poses` are the
 // procedure's other poses (may be empty; the six faces are always known).

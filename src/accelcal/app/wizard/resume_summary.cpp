@@ -2,6 +2,7 @@
 
 #include <fmt/core.h>
 
+#include "accelcal/app/wizard/step_registry.h"
 #include "accelcal/base/duration_text.h"
 
 namespace accelcal {
@@ -24,9 +25,8 @@ std::string CaptureStepState(const ProcedureStep& step, const SessionModel& mode
 }  // namespace
 
 std::string StepDisplayTitle(const ProcedureStep& step) {
-  if (step.kind == StepKind::kTurntable && step.title == step.pose_name)
-    return fmt::format("Turntable {} at {:g} mm", step.pose_name, step.radius_m * 1000.0);
-  return step.title;
+  const StepControllerKind& kind = ControllerKindOf(step.kind);
+  return kind.display_title != nullptr ? kind.display_title(step) : step.title;
 }
 
 std::vector<std::string> ResumeSummaryLines(const Procedure& procedure, const SessionModel& model,

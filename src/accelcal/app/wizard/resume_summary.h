@@ -11,8 +11,9 @@
 
 namespace accelcal {
 
-// The step's title as the technician reads it: a turntable step whose title is only its mounting
-// (several steps share it) gets "Turntable" and its radius ("Turntable x radial, z up at 100 mm").
+// The step's title as the technician reads it (its kind's display title, step_registry.h): a
+// turntable step whose title is only its mounting (several steps share it) gets "Turntable" and
+// its radius ("Turntable x radial, z up at 100 mm").
 std::string StepDisplayTitle(const ProcedureStep& step);
 
 // The summary's lines (indented by two spaces): the welcome, then each step of `procedure` that

@@ -5,15 +5,6 @@
 namespace accelcal {
 namespace {
 
-bool IsCaptureKind(StepKind kind) { return kind == StepKind::kStatic || kind == StepKind::kTurntable; }
-
-std::string Input(const SessionModel& model, const std::string& key) {
-  const auto welcome = model.inputs().find(kWelcomeStepId);
-  if (welcome == model.inputs().end()) return "";
-  const auto value = welcome->second.find(key);
-  return value == welcome->second.end() ? "" : value->second;
-}
-
 // Why a capture step has no usable capture: its captures' left-out reasons.
 std::string LeftOutWhy(const ProcedureStep& step, const SessionModel& model) {
   std::string why;
@@ -36,13 +27,14 @@ SessionGaps CollectSessionGaps(const Procedure& procedure, const SessionModel& m
       gaps.steps.push_back({s.id, s.title, "skipped", s.required});
       continue;
     }
-    if (!IsCaptureKind(s.kind) || model.CaptureOf(s.id) != nullptr) continue;
+    if (!KeepsCapture(s.kind) || model.CaptureOf(s.id) != nullptr) continue;
     const std::string left_out = LeftOutWhy(s, model);
     if (!left_out.empty()) gaps.steps.push_back({s.id, s.title, left_out, s.required});
   }
-  if (procedure.requirements.device_serial && Input(model, "device").empty())
+  const WelcomeAnswers welcome = ReadWelcomeAnswers(model.inputs());
+  if (procedure.requirements.device_serial && welcome.device.value_or("").empty())
     gaps.identification.push_back("device serial");
-  if (procedure.requirements.operator_name && Input(model, "operator").empty())
+  if (procedure.requirements.operator_name && welcome.operator_name.value_or("").empty())
     gaps.identification.push_back("operator");
   return gaps;
 }
@@ -50,7 +42,7 @@ SessionGaps CollectSessionGaps(const Procedure& procedure, const SessionModel& m
 void AddLeftOutByTheFit(const Procedure& procedure, const SessionModel& model, const Calibration& cal,
                         SessionGaps* gaps) {
   for (const ProcedureStep& s : procedure.steps) {
-    const JournalCapture* c = IsCaptureKind(s.kind) ? model.CaptureOf(s.id) : nullptr;
+    const JournalCapture* c = KeepsCapture(s.kind) ? model.CaptureOf(s.id) : nullptr;
     if (c == nullptr) continue;
     for (const CalibrationCapture& used : cal.captures) {
       if (used.id != c->capture.id || used.used) continue;

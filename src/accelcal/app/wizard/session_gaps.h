@@ -9,11 +9,9 @@
 #include "accelcal/calibration/calibration.h"
 #include "accelcal/session/procedure.h"
 #include "accelcal/session/session_gaps.h"
+#include "accelcal/session/session_inputs.h"  // kWelcomeStepId
 
 namespace accelcal {
-
-// The welcome's pseudo step: its inputs are the session's identification and gravity.
-inline constexpr const char* kWelcomeStepId = "welcome";
 
 SessionGaps CollectSessionGaps(const Procedure& procedure, const SessionModel& model);
 

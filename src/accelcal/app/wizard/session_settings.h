@@ -1,23 +1,23 @@
-// What a session recorded that its calibration depends on, read back one way by the wizard
-// (resuming) and by `accelcal refit` (app/refit_session.h): the welcome's gravity and
-// equipment, a noise floor lowered by the captures, and the diagnosis's decision.
+// What a session recorded that its calibration depends on, read back one way by the wizard's
+// steps (resuming: the welcome, the noise floor, the diagnosis) and by `accelcal refit`
+// (app/refit_session.h): the welcome's gravity and equipment, a noise floor lowered by the
+// captures, and the diagnosis's decision. The journal's keys are session/session_inputs.h's.
 #pragma once
 
 #include <optional>
 #include <string>
 #include <vector>
 
+#include <Eigen/Core>
+
 #include "accelcal/acquire/capture_engine/noise_floor.h"
 #include "accelcal/app/wizard/session_model.h"
 #include "accelcal/base/gravity.h"
 #include "accelcal/session/equipment.h"
 #include "accelcal/session/procedure.h"
+#include "accelcal/session/session_inputs.h"
 
 namespace accelcal {
-
-// The journal step of the noise floor's inputs ("std_counts"; "lowered_std_counts" and
-// "lowered" when a capture proved it too high).
-inline constexpr const char* kNoiseFloorStepId = "noise_floor";
 
 struct SessionSettings {
   std::optional<GravitySpec> gravity;  // the welcome's answer; nullopt: none recorded
@@ -29,6 +29,17 @@ struct SessionSettings {
 };
 
 SessionSettings ReadSessionSettings(const Procedure& procedure, const SessionModel& model);
+
+// The parts, for the step that owns each:
+// the welcome's gravity (nullopt: none recorded, or one that does not read);
+std::optional<GravitySpec> RecordedGravity(const WelcomeAnswers& answers);
+// the procedure's equipment with the welcome's answer applied (the procedure's when none);
+std::vector<EquipmentItem> RecordedEquipment(const WelcomeAnswers& answers, const Procedure& procedure);
+// a floor the captures lowered in an earlier run (they were judged again with it);
+std::optional<NoiseFloor> RecordedLoweredFloor(const SessionInputs& inputs);
+// the diagnosis decided in an earlier run: its outcome starts "adopted", "none" or "declined";
+// true (adopt) when no diagnosis is recorded.
+bool RecordedAdoptEffects(const Procedure& procedure, const SessionModel& model);
 
 // "x y z" of a noise floor as recorded, and back (false when it does not read).
 std::string TriadText(const Eigen::Vector3d& v);

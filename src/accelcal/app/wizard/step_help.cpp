@@ -1,31 +1,15 @@
 #include "accelcal/app/wizard/step_help.h"
 
+#include "accelcal/app/wizard/step_registry.h"
+#include "accelcal/app/wizard/steps/welcome_step.h"
+
 namespace accelcal {
 namespace {
 
-// A value asked for: what to type, in which units.
+// A value asked for: what to type, in which units (said by the step that asks it).
 std::string InputHelp(const std::string& key) {
-  if (key == "device")
-    return "Type the device's serial number, from its label; it goes in the report and the "
-           "calibration file. An empty answer takes the default shown in brackets.";
-  if (key == "operator") return "Type your name, for the report. An empty answer takes the default.";
-  if (key == "place")
-    return "Type where the bench is (lab, room, bench), for the report. An empty answer takes "
-           "the default.";
-  if (key == "gravity")
-    return "Type the local gravity: a measured value in m/s^2 with its uncertainty "
-           "(9.78030 +- 0.00002), the place to compute it from (lat -34.9 alt 43: latitude in "
-           "degrees, altitude in metres), or 'standard' (9.80665, a convention: a procedure that "
-           "needs the local value refuses it).";
-  if (key == "radius")
-    return "Type the distance from the turntable's spin axis to the sensor, with its unit: 120 mm, "
-           "12 cm or 0.12 m (a number alone is metres; a decimal comma works: 0,12). A speed typed "
-           "here (300 rpm) sets the speed instead. An empty answer takes the value in brackets.";
-  if (key == "rpm")
-    return "Type the table's speed: 120 (rpm), 120 rpm, 2 rps or 2 Hz, 12.57 rad/s. Before the "
-           "table turns the plan is checked against the accelerometer's range; when it is refused, "
-           "type a lower speed here, or a radius (5 cm) to correct the radius. An empty answer "
-           "takes the value in brackets.";
+  if (std::string help = WelcomeInputHelp(key); !help.empty()) return help;
+  if (std::string help = StepInputHelp(key); !help.empty()) return help;
   return "Type the value asked; an empty answer takes the default shown in brackets.";
 }
 

@@ -5,20 +5,13 @@
 
 #include <fmt/core.h>
 
+#include "accelcal/app/wizard/step_registry.h"
+
 namespace accelcal {
 
+// Each kind's controller knows its step's time (step_registry.h).
 double StepEstimateS(const ProcedureStep& step, const TimeAllowances& a) {
-  switch (step.kind) {
-    case StepKind::kStatic: return a.place_pose_s + a.settle_s + step.duration_s;
-    case StepKind::kTurntable: return a.mount_turntable_s + a.settle_s + step.duration_s;
-    case StepKind::kLevel: return a.level_s + 2.0 * (a.settle_s + step.duration_s);
-    case StepKind::kRecord: return a.place_pose_s + a.settle_s + step.duration_s;
-    case StepKind::kFit:
-    case StepKind::kDiagnosis:
-    case StepKind::kReport:
-    case StepKind::kAnalysis: return a.read_result_s;
-  }
-  return 0.0;
+  return ControllerKindOf(step.kind).estimate_s(step, a);
 }
 
 double RemainingEstimateS(const Procedure& procedure, int first,

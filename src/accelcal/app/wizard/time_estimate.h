@@ -26,7 +26,8 @@ struct TimeAllowances {
   double read_result_s = 20.0;     // fit, diagnosis, report, analysis
 };
 
-// One step from its start: its capture or record length plus its handling, s.
+// One step from its start: its capture or record length plus its handling, s (its kind's
+// estimate: step_registry.h).
 double StepEstimateS(const ProcedureStep& step, const TimeAllowances& allowances = {});
 
 // The steps from index `first` on (0-based; past the end: 0) that `done` does not say are done,

@@ -6,7 +6,7 @@
 #pragma once
 
 #include "accelcal/acquire/sim/scenario.h"
-#include "accelcal/app/wizard/wizard_engine.h"
+#include "accelcal/app/wizard/wizard_options.h"
 
 namespace accelcal {
 

@@ -1,0 +1,114 @@
+#include "accelcal/app/wizard/steps/noise_floor_step.h"
+
+#include <algorithm>
+
+#include <fmt/core.h>
+#include <fmt/format.h>
+
+#include "accelcal/app/wizard/session_settings.h"
+#include "accelcal/app/wizard/step_controller.h"
+#include "accelcal/app/wizard/wizard_session.h"
+#include "accelcal/session/session_inputs.h"
+
+namespace accelcal {
+namespace {
+
+// The capture engine's stillness check as the procedure sets it.
+StaticStabilityOptions ProcedureStability(const Procedure& p) {
+  StaticStabilityOptions o;
+  o.std_multiplier = p.std_multiplier;
+  o.trend_multiplier = p.trend_multiplier;
+  return o;
+}
+
+}  // namespace
+
+NoiseFloorStep::NoiseFloorStep(const Procedure& procedure, SessionModel& model, StepAcquisition& acq,
+                               ScreenMessages& screen, double quiet_period_s)
+    : procedure_(procedure), model_(model), acq_(acq), screen_(screen), quiet_period_s_(quiet_period_s),
+      guard_(procedure.expected_noise_counts, procedure.noise_floor_max_ratio, ProcedureStability(procedure)) {}
+
+// A floor lowered in an earlier run stays: the captures were judged again with it. Read as
+// `accelcal refit` reads it (session_settings.h).
+void NoiseFloorStep::Resume() {
+  if (std::optional<NoiseFloor> lowered = RecordedLoweredFloor(model_.inputs())) lowered_ = std::move(lowered);
+}
+
+void NoiseFloorStep::Measure(double timeout_s) {
+  acq_.MeasureNoiseFloor(SteadyNowS(), timeout_s);
+  measuring_ = true;
+}
+
+bool NoiseFloorStep::OnMeasured() {
+  measuring_ = false;
+  const NoiseFloorJudgement j = guard_.Judge(acq_.quiet_samples());
+  if (!j.ok) {
+    screen_.problem = j.reason;
+    screen_.hint = "keep hands off the bench and stop what shakes it, then Enter measures again";
+    return false;
+  }
+  // A lower floor of an earlier run (proved by its captures) wins over a new measurement above it.
+  if (lowered_) {
+    NoiseFloor f = *guard_.floor();
+    for (int a = 0; a < 3; ++a) f.std_counts[a] = std::min(f.std_counts[a], lowered_->std_counts[a]);
+    if (f.std_counts != guard_.floor()->std_counts) f.source += ", with the lower floor of an earlier run";
+    guard_.Restore(f);
+  }
+  screen_.problem.clear();
+  screen_.hint.clear();
+  model_.RecordInput(kNoiseFloorStepId, noise_floor_key::kStdCounts, TriadText(guard_.floor()->std_counts));
+  lines_ = {"Noise floor: " + guard_.Describe()};
+  return true;
+}
+
+void NoiseFloorStep::OnSilent() {
+  measuring_ = false;
+  screen_.problem = acq_.reason();
+  screen_.hint = "check the cable or the sample server; Enter measures again, q leaves";
+}
+
+void NoiseFloorStep::SetView(WizardView& v) const {
+  if (!measuring_) {
+    v.screen = WizardScreen::kPlacePose;
+    v.prompt = fmt::format(
+        "Noise floor: leave the sensor resting on the table, hands off, nothing shaking the bench "
+        "(turntable stopped); press Enter to measure it ({:g} s).", quiet_period_s_);
+    v.keys = WithNavigation({{"Enter", "measure"}});
+    return;
+  }
+  v.screen = WizardScreen::kCapturing;
+  v.prompt = fmt::format("Leave the sensor resting on the table: measuring the noise floor ({:g} s).",
+                         quiet_period_s_);
+  v.progress = acq_.quiet_progress();
+  v.keys = {{"q", "save and quit"}};
+}
+
+// After a static capture: the floor checked against it, lowered if it proves too high, and
+// the captures judged with the old floor judged again; those that fail are left out and their
+// steps captured again.
+void NoiseFloorStep::Recheck(const Capture& latest, std::vector<CapturedPose>& captured) {
+  std::vector<const Capture*> used;
+  for (const JournalCapture& c : model_.captures())
+    if (c.capture.kind == CaptureKind::kStatic && model_.LeftOutReason(c).empty() && !c.superseded())
+      used.push_back(&c.capture);
+  const NoiseFloorRecheck r = guard_.Recheck(latest, used);
+  if (!r.lowered) return;
+  model_.RecordInput(kNoiseFloorStepId, noise_floor_key::kLoweredStdCounts, TriadText(r.after.std_counts));
+  model_.RecordInput(kNoiseFloorStepId, noise_floor_key::kLowered, r.note);
+  lowered_ = r.after;
+  lines_ = {"Noise floor: " + guard_.Describe(), r.note};
+  std::vector<std::string> again;
+  for (const RejudgedCapture& f : r.failing) {
+    for (const JournalCapture& c : model_.captures()) {
+      if (c.capture.id != f.capture_id) continue;
+      model_.MarkLeftOut(c, f.reason + " (judged again against the lowered noise floor)");
+      again.push_back(c.capture.label);
+      std::erase_if(captured, [&](const CapturedPose& p) { return p.capture_id == c.capture.id; });
+    }
+  }
+  if (!again.empty())
+    lines_.push_back(fmt::format("Judged again with it, not still after all, left out and to be "
+                                 "captured again: {}.", fmt::join(again, ", ")));
+}
+
+}  // namespace accelcal

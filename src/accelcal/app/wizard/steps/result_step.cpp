@@ -1,0 +1,60 @@
+#include "accelcal/app/wizard/steps/result_step.h"
+
+#include "accelcal/app/wizard/time_estimate.h"
+
+namespace accelcal {
+
+// The steps that compute (calibration_steps.h); the step only shows what they say.
+void ResultStep::Enter() {
+  StepOutcome outcome = Run();
+  lines_ = std::move(outcome.lines);
+  details_ = std::move(outcome.details);
+  show_details_ = false;
+  session_.screen.problem = std::move(outcome.problem);
+  session_.screen.hint = std::move(outcome.hint);
+}
+
+void ResultStep::PrepareCalibration() {
+  session_.steps.set_gravity(session_.gravity);
+  session_.steps.set_noise_floor(session_.noise_floor.floor());
+}
+
+void ResultStep::Handle(const Intent& intent) {
+  if (intent.kind == IntentKind::kBack) return session_.sequence.GoBack();
+  if (intent.kind == IntentKind::kSkip) return session_.sequence.AskSkip();
+  if (intent.kind == IntentKind::kRetry) return session_.sequence.RestartStep();
+  if (intent.kind == IntentKind::kDetails) {
+    show_details_ = !show_details_ && !details_.empty();
+    return;
+  }
+  Answer(intent, intent.kind == IntentKind::kAccept || intent.kind == IntentKind::kSubmitText);
+}
+
+void ResultStep::SetHeader(WizardView& v) const {
+  v.step_title = step_.title;
+  v.pose_name = step_.pose_name;
+}
+
+void ResultStep::AddText(std::vector<std::string>& lines) const {
+  const std::vector<std::string>& text = show_details_ ? details_ : lines_;
+  lines.insert(lines.end(), text.begin(), text.end());
+}
+
+void ResultStep::SetView(WizardView& v) const {
+  v.screen = ResultScreen();
+  if (!session_.screen.problem.empty()) {
+    v.prompt = "The session cannot go on from here as it is.";
+    v.keys = WithNavigation({{"r", "retry"}});
+    return;
+  }
+  SetAnswerView(v);
+}
+
+void ResultStep::SetAnswerView(WizardView& v) const {
+  v.prompt = "Press Enter to continue.";
+  v.keys = WithNavigation({{"Enter", "continue"}, {"r", "retry"}});
+}
+
+double ResultEstimateS(const ProcedureStep&, const TimeAllowances& a) { return a.read_result_s; }
+
+}  // namespace accelcal

@@ -1,0 +1,57 @@
+// The welcome (the session's first screen, before the procedure's steps): the device's serial
+// number, the operator, the place, the local gravity (a measured value with its uncertainty, the
+// place's latitude and altitude, or "standard" said explicitly: gravity_input.h) and, when the
+// procedure lists some, the bench's equipment (equipment_input.h). Each answer is checked
+// (a procedure may require the serial, the operator, the local gravity) and recorded as it is
+// given; a welcome cut short resumes at its first unanswered question. b goes to the previous
+// question.
+#pragma once
+
+#include <string>
+#include <string_view>
+
+#include "accelcal/app/wizard/step_controller.h"
+#include "accelcal/app/wizard/wizard_session.h"
+#include "accelcal/session/session_inputs.h"
+
+namespace accelcal {
+
+class WelcomeStep final : public StepController {
+ public:
+  explicit WelcomeStep(WizardSession& session) : session_(session) {}
+
+  void Enter() override {}
+  void Handle(const Intent& intent) override;
+  void KeepAfterSkipDeclined() override {}
+  // The session's gravity and equipment as the welcome recorded them (else the options' and the
+  // procedure's), and the question to go on at when it was cut short.
+  void Resume() override;
+  void SetHeader(WizardView& v) const override { v.step_title = "Welcome"; }
+  void SetView(WizardView& v) const override;
+
+ private:
+  // A question: its input key, label and default answer.
+  struct Question {
+    const char* key;
+    std::string label;
+    std::string default_value;
+  };
+  // device, operator, place, gravity, and the equipment when the procedure lists some.
+  int Questions() const { return session_.procedure.equipment.empty() ? 4 : 5; }
+  Question QuestionAt(int index) const;
+  // Empty when `value` answers `key`; else why not.
+  std::string Check(const std::string& key, const std::string& value);
+  void ReadGravity(const WelcomeAnswers& answers);
+  void ReadEquipment(const WelcomeAnswers& answers);
+
+  WizardSession& session_;
+  int question_ = 0;
+  std::string input_error_;  // why the last answer was refused
+  std::string input_note_;   // said above the question (b at the first one)
+};
+
+// What to type at a question of the welcome (its input key), for the help on ?; empty for a key
+// it does not ask or says nothing more about (the equipment's question says it all).
+std::string WelcomeInputHelp(std::string_view key);
+
+}  // namespace accelcal

@@ -1,0 +1,70 @@
+// What the operator answered and the wizard noted, as the journal keeps it
+// (SessionJournal::RecordInput: a step id, a key, a text value), named here once: the welcome's
+// answers (typed: WelcomeAnswers), the noise floor's figures, a turntable run's radius, speed,
+// tilt and swing. Every reader and writer of these inputs takes the names from here.
+#pragma once
+
+#include <map>
+#include <optional>
+#include <string>
+
+namespace accelcal {
+
+// Step id -> key -> value, as the journal returns them.
+using SessionInputs = std::map<std::string, std::map<std::string, std::string>>;
+
+// ---- the welcome ----------------------------------------------------------------------------
+
+// The welcome's pseudo step: its inputs are the session's identification, gravity and equipment.
+inline constexpr const char* kWelcomeStepId = "welcome";
+
+// The welcome's questions' keys. The device and the operator also fill the session's row
+// (session_store.h), at whichever step records them.
+namespace welcome_key {
+inline constexpr const char* kDevice = "device";
+inline constexpr const char* kOperator = "operator";
+inline constexpr const char* kPlace = "place";
+inline constexpr const char* kGravity = "gravity";
+inline constexpr const char* kEquipment = "equipment";
+}  // namespace welcome_key
+
+// The welcome's answers as recorded; nullopt: not answered (yet).
+struct WelcomeAnswers {
+  std::optional<std::string> device;         // the device's serial number
+  std::optional<std::string> operator_name;
+  std::optional<std::string> place;          // the lab or bench, as typed
+  // The local gravity as it reads back (app/wizard/gravity_input.h parses it).
+  std::optional<std::string> gravity;
+  // The equipment as typed: "keep", or the items changed (app/wizard/equipment_input.h).
+  std::optional<std::string> equipment;
+
+  // The answer kept under `key` (a welcome_key); nullptr for another key.
+  const std::optional<std::string>* Find(const std::string& key) const;
+};
+
+// The welcome's answers among `inputs`.
+WelcomeAnswers ReadWelcomeAnswers(const SessionInputs& inputs);
+
+// ---- the noise floor ------------------------------------------------------------------------
+
+// The noise floor's pseudo step: the floor measured (per axis, counts: "x y z"), and a floor the
+// captures lowered with the note that says why.
+inline constexpr const char* kNoiseFloorStepId = "noise_floor";
+namespace noise_floor_key {
+inline constexpr const char* kStdCounts = "std_counts";
+inline constexpr const char* kLoweredStdCounts = "lowered_std_counts";
+inline constexpr const char* kLowered = "lowered";
+}  // namespace noise_floor_key
+
+// ---- a turntable run ------------------------------------------------------------------------
+
+// Recorded at the run's step id beside its capture: the radius (m) and speed (rpm) it was taken
+// at, the table's tilt (deg) and the once-per-revolution swing removed from its samples.
+namespace turntable_key {
+inline constexpr const char* kRadiusM = "radius_m";
+inline constexpr const char* kRpm = "rpm";
+inline constexpr const char* kTableTiltDeg = "table_tilt_deg";
+inline constexpr const char* kSwingRemovedCounts = "swing_removed_counts";
+}  // namespace turntable_key
+
+}  // namespace accelcal
