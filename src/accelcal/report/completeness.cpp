@@ -9,10 +9,17 @@
 namespace accelcal {
 namespace {
 
+// The required steps skipped in one line (a skipped mounting's three runs are one fact), the
+// others each with why.
 void AddSessionGaps(const std::optional<SessionGaps>& gaps, std::vector<std::string>* out) {
   if (!gaps) return;
+  std::vector<std::string> skipped;
   for (const SessionGaps::Step& s : gaps->steps)
-    if (s.required) out->push_back(fmt::format("required step '{}' {}", s.title, s.why));
+    if (s.required && s.why == "skipped") skipped.push_back(fmt::format("'{}'", s.title));
+  if (skipped.size() == 1) out->push_back(fmt::format("required step {} skipped", skipped.front()));
+  if (skipped.size() > 1) out->push_back(fmt::format("required steps skipped: {}", fmt::join(skipped, ", ")));
+  for (const SessionGaps::Step& s : gaps->steps)
+    if (s.required && s.why != "skipped") out->push_back(fmt::format("required step '{}' {}", s.title, s.why));
   for (const std::string& what : gaps->identification)
     out->push_back(fmt::format("no {} recorded (the procedure requires it)", what));
 }

@@ -4,6 +4,8 @@
 # Usage: python3 answer_when_asked.py SCRIPT OUTPUT -- COMMAND...
 # SCRIPT: one action per line:
 #   ask TEXT       wait until TEXT appears in the output after the previous `ask` (60 s at most)
+#   enter_until TEXT  Enter at every question (the output stopped at its "> ") until TEXT appears
+#                  (120 s at most); TEXT's question is left for the next action
 #   send TEXT      type TEXT and Enter ("send" alone: Enter)
 #   sleep S        wait S seconds
 #   write FILE T   write T into FILE (the bench's control: turn the sensor)
@@ -51,6 +53,28 @@ for line in open(script_path):
                 proc.kill()
                 sys.exit(3)
             time.sleep(0.05)
+    elif verb == "enter_until":
+        deadline = time.monotonic() + 120
+        last_size = -1
+        while True:
+            with lock:
+                tail = bytes(seen[cursor:])
+                size = len(seen)
+            at = tail.find(rest.encode())
+            if at >= 0:
+                cursor += at + len(rest)
+                break
+            # A question waits: the output ends with its "> " and has stopped growing.
+            if tail.endswith(b"> ") and size == last_size:
+                cursor = size
+                proc.stdin.write(b"\n")
+                proc.stdin.flush()
+            last_size = size
+            if time.monotonic() > deadline or (proc.poll() is not None and not reader.is_alive()):
+                out.write(("\n[answer_when_asked: never asked: %s]\n" % rest).encode())
+                proc.kill()
+                sys.exit(3)
+            time.sleep(0.03)
     elif verb == "send":
         proc.stdin.write((rest + "\n").encode())
         proc.stdin.flush()

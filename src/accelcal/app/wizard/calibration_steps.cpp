@@ -1,11 +1,13 @@
 #include "accelcal/app/wizard/calibration_steps.h"
 
+#include <algorithm>
 #include <sstream>
 
 #include <fmt/format.h>
 
 #include "accelcal/app/analyze_recording.h"
 #include "accelcal/app/wizard/diagnosis_words.h"
+#include "accelcal/app/wizard/next_steps.h"
 #include "accelcal/app/wizard/session_gaps.h"
 #include "accelcal/analysis/noise_analysis.h"
 #include "accelcal/app/noise_records.h"
@@ -158,9 +160,13 @@ StepOutcome CalibrationSteps::Diagnosis() {
 }
 
 SessionGaps CalibrationSteps::GapsOf(const CalibrationOutcome& o, const Calibration& cal,
-                                     const SessionGaps& session_gaps) const {
+                                     const SessionGaps& session_gaps) {
   SessionGaps gaps = session_gaps;
-  AddLeftOutByTheFit(procedure_, model_, cal, &gaps);
+  left_out_by_fit_.clear();
+  const std::vector<std::string> left_out = AddLeftOutByTheFit(procedure_, model_, cal, &gaps);
+  for (const ProcedureStep& s : procedure_.steps)
+    if (s.required && std::find(left_out.begin(), left_out.end(), s.id) != left_out.end())
+      left_out_by_fit_.push_back(s.id);
   gaps.gravity_ambiguity = GravityAmbiguityNote(gravity_, o.diagnosis.adopted_names());
   return gaps;
 }
@@ -195,24 +201,22 @@ StepOutcome CalibrationSteps::Report(bool adopt_effects, const ReportMeta& meta,
   const Calibration cal = o.MakeCalibration(adopt);
   const SessionGaps gaps = GapsOf(o, cal, session_gaps);
   model_.RecordResult(SessionResultJsonText(cal, gaps));
-  out.lines = SplitLines(FormatFitReport(cal, summary));
-  const std::vector<std::string> gravity = WrapWords("Gravity: " + gravity_.Describe(), 78);
-  out.lines.insert(out.lines.begin(), gravity.begin(), gravity.end());
-  out.lines.push_back(adopt ? fmt::format("Effects adopted: {}", fmt::join(o.diagnosis.adopted_names(), ", "))
-                            : "Model: the nine-parameter base model");
   const ReportInputs in = Inputs(cal, meta, gaps);
   const ReportModel verdict = BuildReportModel(in);
+  const std::vector<std::string> next = NextSteps(in, verdict, session_name_, left_out_by_fit_);
+  // The verdict first, on the step's first screen: what failed, what is missing, what to do,
+  // where the report is; then the fit behind it.
+  const auto add = [&](const std::string& text, size_t indent) {
+    for (std::string& line : WrapWords(std::string(indent, ' ') + text, 78)) out.lines.push_back(std::move(line));
+  };
   out.lines.push_back(fmt::format("Verdict: {}", VerdictToString(verdict.verdict)));
   for (const LimitCheck& c : verdict.checks)
-    if (!c.pass)
-      for (const std::string& line : WrapWords("  not met: " + (c.why.empty() ? c.what : c.why), 78))
-        out.lines.push_back(line);
+    if (!c.pass) add("not met: " + (c.why.empty() ? c.what : c.why), 2);
   for (const SessionGaps::Step& s : gaps.steps)
-    for (const std::string& line : WrapWords(fmt::format("  missing: {} ({}{}): {}", s.title, s.id,
-                                                         s.required ? ", required" : "", s.why), 78))
-      out.lines.push_back(line);
-  for (const std::string& why : verdict.incomplete)
-    for (const std::string& line : WrapWords("  INCOMPLETE: " + why, 78)) out.lines.push_back(line);
+    add(fmt::format("missing: {} ({}{}): {}", s.title, s.id, s.required ? ", required" : "", s.why), 2);
+  for (const std::string& why : verdict.incomplete) add("INCOMPLETE: " + why, 2);
+  if (!next.empty()) out.lines.push_back("Next:");
+  for (const std::string& step : next) add("- " + step, 2);
   std::vector<std::string> paths;
   if (outputs_ != nullptr) {
     try {
@@ -222,7 +226,12 @@ StepOutcome CalibrationSteps::Report(bool adopt_effects, const ReportMeta& meta,
       out.lines.push_back(std::string("The report was not written: ") + e.what());
     }
   }
-  final_summary_ = BuildFinalSummary(verdict, paths);
+  out.lines.push_back("");
+  add("Gravity: " + gravity_.Describe(), 0);
+  for (std::string& line : SplitLines(FormatFitReport(cal, summary))) out.lines.push_back(std::move(line));
+  out.lines.push_back(adopt ? fmt::format("Effects adopted: {}", fmt::join(o.diagnosis.adopted_names(), ", "))
+                            : "Model: the nine-parameter base model");
+  final_summary_ = BuildFinalSummary(verdict, paths, next);
   out.details = final_summary_->details;
   return out;
 }
@@ -232,9 +241,10 @@ void CalibrationSteps::Recap(bool adopt_effects, const ReportMeta& meta, const S
   const bool adopt = adopt_effects && !o.diagnosis.adopted.empty();
   if (!o.Fit(adopt).IsUsable()) return;  // the report step said so; nothing to recap
   const Calibration cal = o.MakeCalibration(adopt);
-  const ReportModel verdict = BuildReportModel(Inputs(cal, meta, GapsOf(o, cal, session_gaps)));
-  final_summary_ = BuildFinalSummary(verdict, outputs_ != nullptr ? outputs_->ReportPaths()
-                                                                 : std::vector<std::string>{});
+  const ReportInputs in = Inputs(cal, meta, GapsOf(o, cal, session_gaps));
+  const ReportModel verdict = BuildReportModel(in);
+  final_summary_ = BuildFinalSummary(verdict, outputs_ != nullptr ? outputs_->ReportPaths() : std::vector<std::string>{},
+                                     NextSteps(in, verdict, session_name_, left_out_by_fit_));
 }
 
 // The analysis of a record step: read back from the journal one chunk at a time (a 12-hour

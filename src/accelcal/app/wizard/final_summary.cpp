@@ -82,11 +82,40 @@ std::string LimitFailed(const LimitCheck& c) {
                      c.limit);
 }
 
+std::string Ending(Verdict verdict) {
+  switch (verdict) {
+    case Verdict::kPass: return "Calibration complete.";
+    case Verdict::kFail:
+      return "Calibration recorded, and it does not conform (FAIL): what failed and the next steps are above.";
+    case Verdict::kIncomplete:
+      return "Calibration recorded, but INCOMPLETE: not a certificate yet; what is missing and the next steps "
+             "are above.";
+    case Verdict::kNoLimits: break;
+  }
+  return "Calibration recorded: the procedure states no limits, so it was not judged.";
+}
+
 }  // namespace
 
-FinalSummary BuildFinalSummary(const ReportModel& r, const std::vector<std::string>& report_paths) {
+std::string EarlierEnding(Verdict verdict) {
+  switch (verdict) {
+    case Verdict::kPass: return "Calibration complete (in an earlier run): nothing left to do.";
+    case Verdict::kFail:
+      return "Calibration recorded in an earlier run; it does not conform (FAIL): what failed and the next "
+             "steps are above.";
+    case Verdict::kIncomplete:
+      return "Calibration recorded in an earlier run, but INCOMPLETE: what is missing and the next steps are "
+             "above.";
+    case Verdict::kNoLimits: break;
+  }
+  return "Calibration recorded in an earlier run: the procedure states no limits, so it was not judged.";
+}
+
+FinalSummary BuildFinalSummary(const ReportModel& r, const std::vector<std::string>& report_paths,
+                               const std::vector<std::string>& next_steps) {
   FinalSummary s;
   s.verdict = r.verdict;
+  s.ending = Ending(r.verdict);
   s.lines.push_back(fmt::format("Verdict: {}", VerdictToString(r.verdict)));
   for (const LimitCheck& c : r.checks) {
     if (c.pass) continue;
@@ -94,6 +123,8 @@ FinalSummary BuildFinalSummary(const ReportModel& r, const std::vector<std::stri
     if (!c.why.empty()) Add(&s.lines, Wrapped("    ", c.why));
   }
   for (const std::string& why : r.incomplete) Add(&s.lines, Wrapped("  incomplete: ", why));
+  if (!next_steps.empty()) s.lines.push_back("Next:");
+  for (const std::string& step : next_steps) Add(&s.lines, Wrapped("  - ", step));
   s.lines.push_back(r.budget ? "Values +- U (k = 2, about 95 %), as on the certificate:"
                              : "Values +- U = 2 x the fit's 1-sigma (no uncertainty budget):");
   AddParameters(r, false, &s.lines);

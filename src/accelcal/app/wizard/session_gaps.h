@@ -18,7 +18,8 @@ SessionGaps CollectSessionGaps(const Procedure& procedure, const SessionModel& m
 // The capture steps whose current capture the calibration `cal` leaves out (its screening, a
 // run that disagrees with the others: calibration_pipeline.h), added to `gaps`, each named by
 // what tells it apart from its like (a turntable run by its radius and speed, as entered).
-void AddLeftOutByTheFit(const Procedure& procedure, const SessionModel& model, const Calibration& cal,
-                        SessionGaps* gaps);
+// Returns their step ids, in the procedure's order.
+std::vector<std::string> AddLeftOutByTheFit(const Procedure& procedure, const SessionModel& model,
+                                            const Calibration& cal, SessionGaps* gaps);
 
 }  // namespace accelcal

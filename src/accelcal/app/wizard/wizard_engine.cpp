@@ -4,6 +4,7 @@
 #include "accelcal/app/wizard/wizard_engine.h"
 
 #include <algorithm>
+#include <utility>
 
 #include <fmt/core.h>
 
@@ -81,13 +82,29 @@ void WizardEngine::EnterStep(int index) {
   session_.screen.hint.clear();
   if (!InSteps(current_)) {
     flow_ = Flow::kDone;
-    // Resumed after the end: the summary, not a bare "complete".
-    if (!session_.progressed)
-      for (const std::unique_ptr<StepController>& c : controllers_) c->RecapAtEnd();
+    // Resumed after the end: the summary, not a bare "complete"; a step with something to offer
+    // again (a run the fit left out) is entered instead.
+    if (session_.progressed) return;
+    for (const std::unique_ptr<StepController>& c : controllers_) c->RecapAtEnd();
+    for (size_t i = 0; i < controllers_.size(); ++i)
+      if (controllers_[i]->OpensAgainAtEnd()) {
+        opened_again_ = true;
+        return EnterStep(static_cast<int>(i));
+      }
     return;
   }
   flow_ = Flow::kStep;
   controllers_[static_cast<size_t>(current_)]->Enter();
+}
+
+// After a retake asked by a step (the report), back to that step even when it was recorded in an
+// earlier run: it reports again with the run taken again.
+void WizardEngine::ContinueFromFirstOpenStep() {
+  const int back_to = std::exchange(retake_return_, -1);
+  int index = 0;
+  const int n = static_cast<int>(procedure_.steps.size());
+  while (index < n && model_.StepRecorded(procedure_.steps[static_cast<size_t>(index)].id)) ++index;
+  EnterStep(back_to >= 0 ? std::min(index, back_to) : index);
 }
 
 void WizardEngine::FinishStep(const std::string& outcome) {

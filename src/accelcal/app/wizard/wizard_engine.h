@@ -85,10 +85,11 @@ class WizardEngine final : public WizardDriver, private StepSequence {
 
   // StepSequence: what the steps ask of the engine.
   void FinishStep(const std::string& outcome) override;
-  void ContinueFromFirstOpenStep() override { AdvanceFrom(0); }
+  void ContinueFromFirstOpenStep() override;
   void RestartStep() override { EnterStep(current_); }
   void AskSkip() override;
   void GoBack() override;
+  void RetakeStep(const std::string& step_id) override;
   void RecordCapture(const Capture& capture) override;
   int ReplacedCaptureId() const override { return Redoing() ? redo_capture_id_ : 0; }
   double SessionLeftS(bool current_started) const override;
@@ -123,9 +124,11 @@ class WizardEngine final : public WizardDriver, private StepSequence {
   bool resumed_ = false;
   std::vector<std::string> resume_lines_;  // what the journal held at construction
   bool clock_noted_ = false;
+  bool opened_again_ = false;  // a finished session's step entered again (OpensAgainAtEnd)
   bool quit_ = false;
 
   int redo_target_ = -1;     // kConfirmRedo: the step offered to be taken again
+  int retake_return_ = -1;   // a retake asked by a step (RetakeStep): the step to come back to
   std::string redo_of_;      // a redo runs: the journal step id of the capture it supersedes
   int redo_capture_id_ = 0;  // ... and that capture's id
   std::string redo_note_;          // what the last redo did, shown until the next capture

@@ -5,6 +5,7 @@
 
 #include <fmt/core.h>
 
+#include "accelcal/app/wizard/resume_summary.h"
 #include "accelcal/app/wizard/time_estimate.h"
 #include "accelcal/app/wizard/wizard_engine.h"
 
@@ -23,8 +24,9 @@ WizardView WizardEngine::View() const {
     v.live_g = procedure_.nominal.Calibrate(session_.live_counts).norm() / session_.gravity.gravity_mps2;
   v.problem = session_.screen.problem;
   v.hint = session_.screen.hint;
-  // The resume summary is shown until this run has recorded something of its own.
-  if (resumed_ && !session_.progressed) v.lines = resume_lines_;
+  // The resume summary is shown until this run has recorded something of its own; a finished
+  // session's step opened again says only the flags this run does not use before its own text.
+  if (resumed_ && !session_.progressed) v.lines = opened_again_ ? options_.notes : resume_lines_;
   if (c != nullptr) c->AddText(v.lines);
   // What the noise floor's checks said, beside the steps that acquire.
   const bool result_shown = flow_ == Flow::kStep && c != nullptr && c->ShowsResult();
@@ -65,9 +67,9 @@ void WizardEngine::SetConfirmSkipView(WizardView& v) const {
   v.screen = WizardScreen::kPlacePose;
   v.prompt = step().required
                  ? fmt::format("Skip '{}'? The procedure requires it: without it the report's verdict "
-                               "is INCOMPLETE. Press s again to skip it, Enter to do it.", step().title)
+                               "is INCOMPLETE. Press s again to skip it, Enter to do it.", StepDisplayTitle(step()))
                  : fmt::format("Skip '{}'? The report will list it as skipped. Press s again to skip "
-                               "it, Enter to do it.", step().title);
+                               "it, Enter to do it.", StepDisplayTitle(step()));
   v.keys = {{"s", "skip it"}, {"Enter", "do it"}, {"q", "save and quit"}};
 }
 
@@ -85,8 +87,9 @@ void WizardEngine::SetDoneView(WizardView& v) const {
   // The verdict and the headline numbers of this run's report (final_summary.h).
   if (const FinalSummary* summary = session_.steps.final_summary()) {
     v.verdict = std::string(VerdictToString(summary->verdict));
-    // The verdict is the summary's first line; the prompt does not say it again.
-    if (resumed_ && !session_.progressed) v.prompt = "Calibration complete (in an earlier run): nothing left to do.";
+    // The verdict is the summary's first line; the prompt says what it means ("Calibration
+    // complete." only for a PASS) and where the next steps are.
+    v.prompt = resumed_ && !session_.progressed ? EarlierEnding(summary->verdict) : summary->ending;
     v.lines = summary->lines;
     // The flags this run did not use, and what would (a refit), before the summary.
     if (resumed_ && !session_.progressed) v.lines.insert(v.lines.begin(), options_.notes.begin(), options_.notes.end());

@@ -10,6 +10,7 @@
 
 #include "accelcal/acquire/source/bench_control.h"
 #include "accelcal/app/wizard/quantity_input.h"
+#include "accelcal/app/wizard/resume_summary.h"
 #include "accelcal/app/wizard/step_registry.h"
 #include "accelcal/app/wizard/steps/acquiring_step.h"
 #include "accelcal/session/session_inputs.h"
@@ -59,6 +60,7 @@ class TurntableStep final : public AcquiringStep {
 
   void SetHeader(WizardView& v) const override {
     AcquiringStep::SetHeader(v);
+    v.step_title = StepDisplayTitle(step_);  // the radius and speed tell the runs of a mounting apart
     v.expected_up = SensorAxisVector(step_.up_axis);
   }
 
@@ -229,9 +231,10 @@ double TurntableEstimateS(const ProcedureStep& step, const TimeAllowances& a) {
 // A turntable step whose title is only its mounting (several steps share it) gets "Turntable"
 // and its radius ("Turntable x radial, z up at 100 mm").
 std::string TurntableDisplayTitle(const ProcedureStep& step) {
-  if (step.title == step.pose_name)
-    return fmt::format("Turntable {} at {:g} mm", step.pose_name, step.radius_m * 1000.0);
-  return step.title;
+  if (step.title != step.pose_name) return step.title;
+  std::string title = fmt::format("{} at {:g} mm", step.pose_name, step.radius_m * 1000.0);
+  if (std::isfinite(step.rpm)) title += fmt::format(", {:g} rpm", step.rpm);
+  return title;
 }
 
 // What to type at the run's two questions.
