@@ -42,6 +42,7 @@ PY
 # The demo: Enter everywhere on the default bench.
 wizard bench_default.toml "$work/demo.db" ''
 said "Verdict: PASS"
+said "Calibration complete."
 said "Values +- U (k = 2, about 95 %), as on the certificate:"
 agrees_with_budget "$work/demo.db" > "$work/verdict"
 grep -qx PASS "$work/verdict" || fail "the demo's report is not PASS"
@@ -58,6 +59,11 @@ said "the radius (u 0.50 mm) gives"
 said "measure the radius to"
 said "limit failed: scale U (k = 2)"
 said "give the local gravity"
+# The ending says what FAIL means and the next steps (issue 27, item 7), never "complete".
+said "Calibration recorded, and it does not conform (FAIL)"
+said "Next:"
+said "accelcal refit $work/ex.db --equipment"
+! grep -q "Calibration complete" "$work/out" || fail "a FAIL session said 'Calibration complete'"
 agrees_with_budget "$work/ex.db" > "$work/verdict"
 grep -qx FAIL "$work/verdict" || fail "the report of the example bench is not FAIL"
 "$accelcal" report "$work/ex.db" > "$work/report"

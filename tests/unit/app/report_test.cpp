@@ -346,6 +346,13 @@ TEST(ReportModel, ASkippedRequiredStepOrAMissingOperatorMakesItIncomplete) {
   EXPECT_TRUE(Contains(RenderReportHtml(m), "INCOMPLETE:</b> required step &#39;-x up&#39; skipped") ||
               Contains(RenderReportHtml(m), "INCOMPLETE:</b> required step '-x up' skipped"));
   EXPECT_EQ(json::parse(ReportJsonText(m)).at("verdict"), "INCOMPLETE");
+  // Issue 27, item 8: a mounting's three runs skipped were three alike lines; now one.
+  in.gaps->steps.push_back({"tt_x_050", "+x radial, +z up at 50 mm, 120 rpm", "skipped", true});
+  in.gaps->steps.push_back({"tt_x_100", "+x radial, +z up at 100 mm, 120 rpm", "skipped", true});
+  m = BuildReportModel(in);
+  ASSERT_EQ(m.incomplete.size(), 1u);
+  EXPECT_EQ(m.incomplete[0], "required steps skipped: '-x up', '+x radial, +z up at 50 mm, 120 rpm', "
+                             "'+x radial, +z up at 100 mm, 120 rpm'");
   in.gaps->steps.clear();
   in.gaps->identification = {"operator"};
   EXPECT_EQ(BuildReportModel(in).verdict, Verdict::kIncomplete);
