@@ -92,8 +92,9 @@ class Printer {
     prompt_ = head;
     progress_quarter_ = quarter;
     out_ << "  " << v.prompt << '\n';
-    // The figures behind the words, and the time, under it.
-    if (!v.detail.empty()) out_ << "    detail: " << v.detail << '\n';
+    // The figures behind the words, and the time, under it; a normal wait (settling after the
+    // prism is let go) has nothing to explain: its figures are not printed (issue 27, item 9).
+    if (!v.detail.empty() && !v.waiting) out_ << "    detail: " << v.detail << '\n';
     if (!v.time_text.empty()) out_ << "    time: " << v.time_text << '\n';
   }
 

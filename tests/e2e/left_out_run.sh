@@ -32,7 +32,7 @@ timeout 120 python3 "$source_dir/tests/e2e/lib/answer_when_asked.py" "$work/tech
 code=$?
 set -e
 [ "$code" -eq 0 ] || { tail -30 "$work/out" >&2; fail "the declined session did not end (status $code)"; }
-said "capture 14 was left out: it disagrees with the other captures"
+said "Left out: capture 14 (+y radial, +z up at 100 mm, 120 rpm): disagrees with the other captures"
 said "Enter takes it again now (recommended"
 said "Verdict: INCOMPLETE"
 said "incomplete: required step '+y radial, +z up at 100 mm, 120 rpm' its capture 14 was left out by the fit"

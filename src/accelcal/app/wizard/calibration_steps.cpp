@@ -7,6 +7,7 @@
 
 #include "accelcal/app/analyze_recording.h"
 #include "accelcal/app/wizard/diagnosis_words.h"
+#include "accelcal/app/wizard/fit_words.h"
 #include "accelcal/app/wizard/next_steps.h"
 #include "accelcal/app/wizard/session_gaps.h"
 #include "accelcal/analysis/noise_analysis.h"
@@ -133,9 +134,12 @@ StepOutcome CalibrationSteps::Fit() {
     out.hint = "r runs the fit again; b goes back to a skipped step to capture it";
     return out;
   }
-  out.lines = SplitLines(FormatFitReport(o.MakeCalibration(false), fit));
-  const std::vector<std::string> gravity = WrapWords("Gravity: " + gravity_.Describe(), 78);
-  out.lines.insert(out.lines.begin(), gravity.begin(), gravity.end());
+  // Plain words on the screen (fit_words.h); the statistics one key away.
+  const Calibration cal = o.MakeCalibration(false);
+  out.lines = WrapWords("Gravity: " + gravity_.Describe(), 78);
+  out.details = out.lines;
+  for (std::string& line : FitInPlainWords(cal)) out.lines.push_back(std::move(line));
+  for (std::string& line : SplitLines(FormatFitReport(cal, fit))) out.details.push_back(std::move(line));
   return out;
 }
 
@@ -228,11 +232,12 @@ StepOutcome CalibrationSteps::Report(bool adopt_effects, const ReportMeta& meta,
   }
   out.lines.push_back("");
   add("Gravity: " + gravity_.Describe(), 0);
-  for (std::string& line : SplitLines(FormatFitReport(cal, summary))) out.lines.push_back(std::move(line));
+  for (std::string& line : FitInPlainWords(cal)) out.lines.push_back(std::move(line));
   out.lines.push_back(adopt ? fmt::format("Effects adopted: {}", fmt::join(o.diagnosis.adopted_names(), ", "))
                             : "Model: the nine-parameter base model");
   final_summary_ = BuildFinalSummary(verdict, paths, next);
   out.details = final_summary_->details;
+  for (std::string& line : SplitLines(FormatFitReport(cal, summary))) out.details.push_back(std::move(line));
   return out;
 }
 

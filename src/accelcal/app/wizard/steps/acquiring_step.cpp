@@ -176,7 +176,7 @@ void AcquiringStep::KeepCapture(const Capture& capture) {
 }
 
 void AcquiringStep::OnCaptureRejected() {
-  const CaptureMessage said = DescribeEnded(session_.acq.reason(), step_.timeout_s);
+  const CaptureMessage said = RejectedMessage();
   session_.screen.problem = said.text;
   session_.screen.detail = said.detail;
   phase_ = Phase::kProblem;
@@ -185,7 +185,12 @@ void AcquiringStep::OnCaptureRejected() {
                              : RejectedHint();
 }
 
+CaptureMessage AcquiringStep::RejectedMessage() const { return DescribeEnded(session_.acq.reason(), step_.timeout_s); }
+
+// A capture given up because the sensor was never still: what to do about the bench (placing the
+// prism again would not help); else how to place it.
 std::string AcquiringStep::RejectedHint() const {
+  if (const std::string bench = StillnessHint(session_.acq.reason()); !bench.empty()) return bench;
   return IsTiltedPose(step_.up)
              ? fmt::format("set the prism {} and let go; Enter tries again", PrismSetting(step_.up, step_.pose_name))
              : fmt::format("put the prism with {} and let go; Enter tries again", MakeRequest().expected.name);

@@ -79,7 +79,8 @@ class ReportStep final : public ResultStep {
   void SetAnswerView(WizardView& v) const override {
     if (offer_.empty()) {
       v.prompt = "Calibration recorded in the session; the verdict is above. Press Enter to finish.";
-      v.keys = {{"Enter", "finish"}, {"d", "statistics"}, {"b", "back"}, {"q", "save and quit"}};
+      v.keys = {{"Enter", "finish"}, {"d", ShowingDetails() ? "plain words" : "statistics"}, {"b", "back"},
+                {"q", "save and quit"}};
       return;
     }
     const JournalCapture* left_out = session_.model.CaptureOf(offer_);
@@ -90,8 +91,8 @@ class ReportStep final : public ResultStep {
             "it again now (recommended: mount it as asked; the other captures are kept); n finishes "
             "without it.",
             StepDisplayTitle(s), left_out != nullptr ? left_out->capture.id : 0);
-    v.keys = {{"Enter", "take it again"}, {"n", "finish INCOMPLETE"}, {"d", "statistics"}, {"b", "back"},
-              {"q", "save and quit"}};
+    v.keys = {{"Enter", "take it again"}, {"n", "finish INCOMPLETE"},
+              {"d", ShowingDetails() ? "plain words" : "statistics"}, {"b", "back"}, {"q", "save and quit"}};
   }
 
  private:
