@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include <fmt/core.h>
+#include <fmt/format.h>
 
 #include "accelcal/app/wizard/equipment_input.h"
 #include "accelcal/app/wizard/gravity_input.h"
@@ -58,7 +59,7 @@ std::string WelcomeStep::Check(const std::string& key, const std::string& value)
     return "this procedure needs the device's serial number (on its label): type it";
   if (key == welcome_key::kOperator && value.empty() && need.operator_name)
     return "this procedure needs the operator's name: type it";
-  if (key == welcome_key::kEquipment) return ApplyEquipmentAnswer(value, session_.procedure.equipment).error;
+  if (key == welcome_key::kEquipment) return CheckEquipment(value);
   if (key != welcome_key::kGravity) return "";
   const GravityAnswer g = ParseGravityAnswer(value);
   if (!g.ok()) return g.error;
@@ -67,6 +68,30 @@ std::string WelcomeStep::Check(const std::string& key, const std::string& value)
            "(9.78030 +- 0.00002) or the place (lat -34.9 alt 43)";
   session_.gravity = g.gravity;
   return "";
+}
+
+// A procedure that states limits issues a certificate: the bench's items must be its own. The
+// procedure's example ids are refused once, with what to type; the same answer again goes on
+// (the verdict then says INCOMPLETE: equipment not identified).
+std::string WelcomeStep::CheckEquipment(const std::string& value) {
+  const Procedure& p = session_.procedure;
+  if (std::string error = ApplyEquipmentAnswer(value, p.equipment).error; !error.empty()) return error;
+  const std::string recorded = EquipmentAnswerOver(QuestionAt(question_).default_value, value);
+  const std::vector<std::string> examples = UnidentifiedEquipment(ApplyEquipmentAnswer(recorded, p.equipment).items);
+  if (!p.limits.Any() || examples.empty() || value == examples_warned_) return "";
+  examples_warned_ = value;
+  return fmt::format("this procedure issues a certificate, and {} {} not your bench's own: type each "
+                     "item's id and calibration (ruler id RUL-07 cal C-2291; turntable id TT-3 cal T-118), "
+                     "or Enter again to go on without them (the verdict will be INCOMPLETE: equipment not "
+                     "identified)",
+                     fmt::join(examples, ", "), examples.size() == 1 ? "is" : "are");
+}
+
+// What Enter answers: the question's default; at the equipment after its example ids were
+// refused, the answer refused (Enter again goes on with it, not back to the default).
+std::string WelcomeStep::DefaultAnswer(const Question& question) const {
+  if (question.key == welcome_key::kEquipment && !examples_warned_.empty()) return examples_warned_;
+  return question.default_value;
 }
 
 void WelcomeStep::Handle(const Intent& intent) {
@@ -82,7 +107,7 @@ void WelcomeStep::Handle(const Intent& intent) {
   input_note_.clear();
   const Question question = QuestionAt(question_);
   std::string value = intent.kind == IntentKind::kSubmitText ? intent.text : "";
-  if (IsBlank(value)) value = question.default_value;  // blanks only: the default, as for ""
+  if (IsBlank(value)) value = DefaultAnswer(question);  // blanks only: the default, as for ""
   if (std::string why = Check(question.key, value); !why.empty()) {
     input_error_ = why;
     return;
@@ -108,7 +133,7 @@ void WelcomeStep::SetView(WizardView& v) const {
   v.screen = WizardScreen::kWelcome;
   v.prompt = fmt::format("Welcome to {}.", session_.procedure.title);
   if (!input_note_.empty()) v.prompt += " " + input_note_;
-  v.input = InputRequest{question.key, question.label, question.default_value, input_error_};
+  v.input = InputRequest{question.key, question.label, DefaultAnswer(question), input_error_};
   v.keys = {{"Enter", "accept"}, {"b", "back"}, {"q", "save and quit"}};
 }
 

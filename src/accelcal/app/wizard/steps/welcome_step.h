@@ -41,6 +41,8 @@ class WelcomeStep final : public StepController {
   Question QuestionAt(int index) const;
   // Empty when `value` answers `key`; else why not.
   std::string Check(const std::string& key, const std::string& value);
+  std::string CheckEquipment(const std::string& value);
+  std::string DefaultAnswer(const Question& question) const;
   void ReadGravity(const WelcomeAnswers& answers);
   void ReadEquipment(const WelcomeAnswers& answers);
 
@@ -48,6 +50,7 @@ class WelcomeStep final : public StepController {
   int question_ = 0;
   std::string input_error_;  // why the last answer was refused
   std::string input_note_;   // said above the question (b at the first one)
+  std::string examples_warned_;  // the equipment answer refused once for its example ids
 };
 
 // What to type at a question of the welcome (its input key), for the help on ?; empty for a key
