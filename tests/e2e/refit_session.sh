@@ -5,7 +5,9 @@
 # an earlier run): nothing left to do." Now the wizard names the flag it does not use and the
 # command that does, and `accelcal refit SESSION --gravity ...` fits the session again in one
 # command: the new calibration is the session's result, the earlier one is kept (never replaced
-# silently), the report is written again and `accelcal report` says what changed.
+# silently), the report is written again and `accelcal report` says what changed. The wizard
+# opened on the finished session asks "Refit it with new inputs?" and does the same (Enter
+# leaves the session as it is).
 # Usage: bash refit_session.sh ACCELCAL SOURCE_DIR DATA_DIR
 set -euo pipefail
 accelcal=$1
@@ -19,10 +21,18 @@ wizard clumsy_local_gravity.toml "$work/s.db" ''
 said "Verdict: FAIL"
 said "gravity not established"
 before=$(grep -o "ACC-s-[0-9A-F]\{8\}" "$work/s.report.txt" | head -1)
+# A copy, for the refit from the wizard below.
+python3 -c 'import sqlite3, sys; sqlite3.connect(sys.argv[1]).backup(sqlite3.connect(sys.argv[2]))' \
+  "$work/s.db" "$work/w.db"
 
-# The finished session run again with a gravity flag: the flag is named as not used.
+# The finished session run again with a gravity flag: the flag is named as not used, the refit
+# offered; Enter leaves it as it is.
 wizard clumsy_local_gravity.toml "$work/s.db" '' --latitude 0
 said "--latitude 0 ignored: this session's gravity was recorded at its welcome (standard); to calibrate it with another: accelcal refit $work/s.db --latitude 0"
+said "This session is finished: FAIL in an earlier run."
+said "Refit it with new inputs?"
+said "Calibration recorded in an earlier run; it does not conform (FAIL)"
+[ "$(results "$work/s.db")" -eq 1 ] || fail "Enter at the refit offer recorded a result"
 
 # The correction, in one command.
 expect 0 "$accelcal" refit "$work/s.db" --procedure "$work/short.toml" --gravity 9.7803+-0.00001
@@ -50,4 +60,16 @@ expect 1 "$accelcal" refit "$work/s.db" --procedure "$work/short.toml" --equipme
 grep -q "is not a piece of equipment" "$work/err" || fail "a wrong equipment answer was not refused with the reason"
 [ "$(results "$work/s.db")" -eq 2 ] || fail "a refused refit recorded a result"
 expect 1 "$accelcal" refit "$work/nothing.db"
+
+# The same from the wizard: the finished session opened again, the correction typed at its
+# offer (a wrong word refused first, with what to type).
+wizard clumsy_local_gravity.toml "$work/w.db" 'gravity at the equator\ngravity 9.7803 +- 0.00001\n'
+said "refused: gravity:"
+said "Refitted (refit 1), the captures fitted again with:"
+said "gravity: standard -> 9.7803 +- 1e-05"
+said "Verdict: PASS"
+said "Calibration complete."
+said "The earlier calibration is kept in the session"
+[ "$(results "$work/w.db")" -eq 2 ] || fail "the wizard's refit did not keep the earlier result"
+flat "$work/w.report.txt" "gravity: standard -> 9.7803 +- 1e-05" || fail "the wizard's refit did not write the report again"
 echo "refit_session: ok"

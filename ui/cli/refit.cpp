@@ -21,25 +21,25 @@ namespace {
 
 struct RefitCommandOptions {
   std::string session;         // path or name
-  std::string procedure_path;  // empty: the shipped seed procedure, when the session ran it
+  std::string procedure_path;  // empty: the shipped full procedure, when the session ran it
   std::optional<std::string> equipment, device, operator_name, place;
 };
 
-// The procedure the session ran: the one given, else the shipped seed procedure when its title
+// The procedure the session ran: the one given, else the shipped full procedure when its title
 // is the session's.
 Procedure SessionProcedure(const std::string& given, const SessionInfo& info) {
   if (!given.empty()) {
     Procedure p = LoadProcedure(given);
-    if (p.title != info.procedure)
+    if (!p.IsTitled(info.procedure))
       throw Error(fmt::format("session {} ran the procedure \"{}\", not \"{}\" ({})", info.path, info.procedure,
                               p.title, given));
     return p;
   }
-  Procedure seed = LoadProcedure(ShippedProcedurePath("seed_calibration.toml"));
-  if (seed.title != info.procedure)
+  Procedure shipped = LoadProcedure(ShippedProcedurePath("full_calibration.toml"));
+  if (!shipped.IsTitled(info.procedure))
     throw Error(fmt::format("session {} ran the procedure \"{}\": give its file with --procedure", info.path,
                             info.procedure));
-  return seed;
+  return shipped;
 }
 
 void RunRefit(const RefitCommandOptions& o, const GravityFlags& gravity) {

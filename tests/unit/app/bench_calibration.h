@@ -42,7 +42,7 @@ inline ReportInputs BenchInputs(const std::vector<EquipmentItem>& equipment,
   in.calibration = outcome.MakeCalibration(true);
   in.meta.session_name = "20261123T211200Z";
   in.meta.source = "sim";
-  in.meta.procedure = "Seed calibration";
+  in.meta.procedure = "Full calibration";
   in.equipment = equipment;
   in.nominal_bias_counts = Eigen::Vector3d::Constant(2048.0);
   in.nominal_scale_counts_per_mps2 = Eigen::Vector3d::Constant(34.8);

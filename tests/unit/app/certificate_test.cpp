@@ -73,8 +73,8 @@ TEST(Equipment, ReadFromTheProcedureInSiUnits) {
   }
 }
 
-TEST(Equipment, TheSeedProcedureListsTheBench) {
-  const Procedure p = LoadProcedure(std::string(ACCELCAL_SOURCE_DIR) + "/procedures/seed_calibration.toml");
+TEST(Equipment, TheFullProcedureListsTheBench) {
+  const Procedure p = LoadProcedure(std::string(ACCELCAL_SOURCE_DIR) + "/procedures/full_calibration.toml");
   EXPECT_EQ(p.equipment.size(), 4u);
   for (const EquipmentItem& e : p.equipment) {
     EXPECT_TRUE(std::isfinite(e.standard_uncertainty)) << InfoOf(e.role).key;
@@ -123,7 +123,7 @@ TEST(Certificate, BudgetTravelsThroughTheCalibrationFileAndTheNumberIsStable) {
 
 TEST(Certificate, TextAndHtmlStateWhatALabSigns) {
   ReportInputs in = BenchInputs(Bench());
-  in.limits = LoadProcedure(std::string(ACCELCAL_SOURCE_DIR) + "/procedures/seed_calibration.toml").limits;
+  in.limits = LoadProcedure(std::string(ACCELCAL_SOURCE_DIR) + "/procedures/full_calibration.toml").limits;
   const ReportModel m = BuildReportModel(in);
   const std::string text = RenderReportText(m), html = RenderReportHtml(m);
   for (const std::string& doc : {text, html}) {
@@ -131,7 +131,7 @@ TEST(Certificate, TextAndHtmlStateWhatALabSigns) {
     EXPECT_TRUE(Contains(doc, "SIMULATED"));
     EXPECT_TRUE(Contains(doc, "RUL-7"));
     EXPECT_TRUE(Contains(doc, "INTI-cert-4711"));
-    EXPECT_TRUE(Contains(doc, "guard band"));  // the seed procedure's rule
+    EXPECT_TRUE(Contains(doc, "guard band"));  // the shipped procedure's rule
     EXPECT_TRUE(Contains(doc, "4.2.2"));
     EXPECT_TRUE(Contains(doc, "mrad"));
     EXPECT_TRUE(Contains(doc, " mg"));

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "accelcal/app/refit_session.h"
+#include "accelcal/app/wizard/refit_answer.h"
 #include "accelcal/base/error.h"
 #include "accelcal/io/scenario_file.h"
 #include "test_support.h"
@@ -19,7 +20,7 @@ using testing::Contains;
 // A lab at the equator that took the standard gravity: the session ends FAIL.
 std::shared_ptr<SessionJournal> FinishedOnTheStandardGravity() {
   std::shared_ptr<SessionJournal> journal(MakeMemoryJournal());
-  testing::WizardRig rig(testing::ShortSeedProcedure(),
+  testing::WizardRig rig(testing::ShortFullProcedure(),
                          sim::LoadScenario(std::string(ACCELCAL_SOURCE_DIR) + "/scenarios/clumsy_local_gravity.toml"),
                          journal);
   testing::AcceptUntil(rig.engine, testing::Never);
@@ -41,7 +42,7 @@ TEST(RefitSession, ACorrectedGravityIsFittedAgainAndTheEarlierResultKept) {
   const std::string first = *journal->Result();
   RefitRequest r = BaseRefitRequest();
   r.gravity = GravitySpec::Given(9.7803, 1e-5);
-  const RefitOutcome out = RefitSession(*journal, testing::ShortSeedProcedure(), r);
+  const RefitOutcome out = RefitSession(*journal, testing::ShortFullProcedure(), r);
   EXPECT_EQ(out.refit_step, "refit 1");
   EXPECT_EQ(out.changes, std::vector<std::string>{"gravity: standard -> 9.7803 +- 1e-05"});
   EXPECT_EQ(out.earlier_results, 1);
@@ -84,14 +85,61 @@ TEST(RefitSession, ARefusedValueRecordsNothing) {
   const auto inputs = journal->Inputs();
   RefitRequest r = BaseRefitRequest();
   r.equipment_answer = "hammer id 3";
-  EXPECT_THROW(RefitSession(*journal, testing::ShortSeedProcedure(), r), Error);
+  EXPECT_THROW(RefitSession(*journal, testing::ShortFullProcedure(), r), Error);
   r = BaseRefitRequest();
   r.device = "";  // the seed procedure requires the serial
-  EXPECT_THROW(RefitSession(*journal, testing::ShortSeedProcedure(), r), Error);
+  EXPECT_THROW(RefitSession(*journal, testing::ShortFullProcedure(), r), Error);
   EXPECT_EQ(journal->ResultCount(), 1);
   EXPECT_EQ(journal->Inputs(), inputs);
   // Nothing to refit in a session without a calibration.
-  EXPECT_THROW(RefitSession(*MakeMemoryJournal(), testing::ShortSeedProcedure(), BaseRefitRequest()), Error);
+  EXPECT_THROW(RefitSession(*MakeMemoryJournal(), testing::ShortFullProcedure(), BaseRefitRequest()), Error);
+}
+
+// The wizard opened again on the finished session offers the refit ("refit with new inputs?"):
+// a wrong answer is refused with what to type; the corrected gravity refits it (the earlier
+// result kept) and the ending says the new verdict.
+TEST(RefitSession, TheWizardOnAFinishedSessionOffersTheRefit) {
+  const std::shared_ptr<SessionJournal> journal = FinishedOnTheStandardGravity();
+  testing::WizardRig again(testing::ShortFullProcedure(),
+                           sim::LoadScenario(std::string(ACCELCAL_SOURCE_DIR) + "/scenarios/clumsy_local_gravity.toml"),
+                           journal);
+  WizardView v = again.engine.View();
+  ASSERT_TRUE(v.input.has_value());
+  EXPECT_EQ(v.input->key, "refit");
+  EXPECT_FALSE(v.finished);
+  EXPECT_EQ(v.verdict, "FAIL");
+  EXPECT_TRUE(Contains(v.prompt, "Refit it with new inputs?")) << v.prompt;
+  again.engine.Handle({IntentKind::kSubmitText, "latitude 0"});
+  v = again.engine.View();
+  ASSERT_TRUE(v.input.has_value());
+  EXPECT_TRUE(Contains(v.input->error, "start each correction with what it corrects")) << v.input->error;
+  EXPECT_EQ(journal->ResultCount(), 1);
+  again.engine.Handle({IntentKind::kSubmitText, "gravity 9.7803 +- 0.00001"});
+  v = again.engine.View();
+  EXPECT_TRUE(v.finished);
+  EXPECT_TRUE(again.engine.completed());
+  EXPECT_EQ(v.verdict, "PASS");
+  EXPECT_EQ(v.prompt, "Calibration complete.");
+  EXPECT_TRUE(testing::AnyContains(v.lines, "gravity: standard -> 9.7803 +- 1e-05"));
+  EXPECT_TRUE(testing::AnyContains(v.lines, "The earlier calibration is kept in the session"));
+  EXPECT_EQ(journal->ResultCount(), 2);
+  EXPECT_EQ(journal->Inputs().at("welcome").at("gravity"), "9.7803 +- 1e-05");
+}
+
+TEST(RefitAnswer, EachCorrectionStartsWithWhatItCorrects) {
+  const RefitAnswer a = ParseRefitAnswer(
+      "gravity lat -34.9 alt 43; equipment ruler id RUL-07 cal C-2291; turntable cal T-118; device SN-42; "
+      "operator Ana Paz; place Lab 2, bench 3");
+  ASSERT_TRUE(a.ok()) << a.error;
+  ASSERT_TRUE(a.request.gravity.has_value());
+  EXPECT_NEAR(a.request.gravity->gravity_mps2, 9.797, 0.002);  // WGS84 at -34.9 deg, 43 m
+  EXPECT_EQ(a.request.equipment_answer, "ruler id RUL-07 cal C-2291; turntable cal T-118");
+  EXPECT_EQ(a.request.device, "SN-42");
+  EXPECT_EQ(a.request.operator_name, "Ana Paz");
+  EXPECT_EQ(a.request.place, "Lab 2, bench 3");
+  EXPECT_FALSE(ParseRefitAnswer("gravity sometimes").ok());
+  EXPECT_FALSE(ParseRefitAnswer("turntable cal T-118").ok());  // equipment must be said first
+  EXPECT_FALSE(ParseRefitAnswer(" ; ").ok());
 }
 
 }  // namespace

@@ -95,7 +95,7 @@ ReportInputs FixtureInputs() {
   in.meta.place = "Lab 2, bench 3";
   in.meta.session_name = "20250301T140509Z";
   in.meta.session_path = "/data/sessions/20250301T140509Z.db";
-  in.meta.procedure = "Seed calibration";
+  in.meta.procedure = "Full calibration";
   in.meta.source = "sim";
   in.limits = FixtureLimits();
   in.allan = ParseAllanJson(ReadJson("allan.json"), "allan.json");
@@ -369,8 +369,8 @@ TEST(ReportModel, ASpeedScaleOnTheStandardGravityIsIncomplete) {
   rpm.name = "rpm_scale";
   rpm.parameters.push_back({"rpm_scale", "", -0.0013, 0.0001});
   in.calibration.effects = {rpm};
-  // WGS84 gravity: still not PASS, the turntable not being verified (issue 27; README "The
-  // local gravity"); the report_test of a verified one is in verdict_test.cpp.
+  // WGS84 gravity: still not PASS, the turntable not being verified (issue 27;
+  // docs/guide.md, "The local gravity"); the report_test of a verified one is in verdict_test.cpp.
   EXPECT_EQ(BuildReportModel(in).verdict, Verdict::kIncomplete);
   in.calibration.gravity = GravitySpec::Standard();
   const ReportModel m = BuildReportModel(in);
@@ -678,7 +678,7 @@ TEST(ProcedureLimits, ParsedValidatedAndOptional) {
                    "negative");
   ExpectInputError([] { ParseProcedure(std::string(kProcedureHead) + "[limits]\nmin_captures = -3\n" + kProcedureSteps, "p.toml"); },
                    "negative count");
-  const Procedure seed = LoadProcedure(std::string(ACCELCAL_SOURCE_DIR) + "/procedures/seed_calibration.toml");
+  const Procedure seed = LoadProcedure(std::string(ACCELCAL_SOURCE_DIR) + "/procedures/full_calibration.toml");
   EXPECT_EQ(seed.limits.min_captures, 15);
   EXPECT_TRUE(seed.limits.Any());
 }

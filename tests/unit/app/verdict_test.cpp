@@ -23,12 +23,12 @@ using testing::Contains;
 using testing::ProcedureWithEquipment;
 
 ProcedureLimits SeedLimits() {
-  return LoadProcedure(std::string(ACCELCAL_SOURCE_DIR) + "/procedures/seed_calibration.toml").limits;
+  return LoadProcedure(std::string(ACCELCAL_SOURCE_DIR) + "/procedures/full_calibration.toml").limits;
 }
 
 // The shipped procedure's example equipment: the radius read to 0.5 mm, the speed to 0.2 %.
 std::vector<EquipmentItem> ExampleEquipment() {
-  return LoadProcedure(std::string(ACCELCAL_SOURCE_DIR) + "/procedures/seed_calibration.toml").equipment;
+  return LoadProcedure(std::string(ACCELCAL_SOURCE_DIR) + "/procedures/full_calibration.toml").equipment;
 }
 
 // What a good lab has: each item identified, radius and speed verified by calibrated instruments.

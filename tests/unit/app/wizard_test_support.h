@@ -19,13 +19,13 @@
 
 namespace accelcal::testing {
 
-inline Procedure SeedProcedure() {
-  return LoadProcedure(std::string(ACCELCAL_SOURCE_DIR) + "/procedures/seed_calibration.toml");
+inline Procedure FullProcedure() {
+  return LoadProcedure(std::string(ACCELCAL_SOURCE_DIR) + "/procedures/full_calibration.toml");
 }
 
-// The seed procedure with 3 s captures (the checks are the same; the test time is not).
-inline Procedure ShortSeedProcedure() {
-  Procedure p = SeedProcedure();
+// The shipped procedure with 3 s captures (the checks are the same; the test time is not).
+inline Procedure ShortFullProcedure() {
+  Procedure p = FullProcedure();
   for (ProcedureStep& s : p.steps)
     if (s.kind == StepKind::kStatic || s.kind == StepKind::kTurntable) s.duration_s = 3.0;
   return p;

@@ -41,7 +41,7 @@ bool OffersTheRetake(const WizardView& v) { return Contains(v.prompt, "The fit l
 // and the certificate said "Overall: PASS" and "Every step of the procedure was done." The
 // retake offered at the report (item 8) declined: n.
 TEST(WizardVerdict, ARequiredRunLeftOutByTheFitIsIncompleteAndNamedByItsRadius) {
-  testing::WizardRig rig(testing::ShortSeedProcedure(), MountedSixMillimetresOut());
+  testing::WizardRig rig(testing::ShortFullProcedure(), MountedSixMillimetresOut());
   testing::AcceptUntil(rig.engine, OffersTheRetake);
   ASSERT_TRUE(OffersTheRetake(rig.engine.View())) << rig.engine.View().prompt;
   rig.engine.Handle({IntentKind::kAnswerNo, ""});
@@ -59,7 +59,7 @@ TEST(WizardVerdict, ARequiredRunLeftOutByTheFitIsIncompleteAndNamedByItsRadius) 
   ASSERT_TRUE(in.gaps.has_value());
   ASSERT_EQ(in.gaps->steps.size(), 1u);
   EXPECT_EQ(in.gaps->steps[0].id, "tt_y_100");
-  const Procedure seed = testing::SeedProcedure();
+  const Procedure seed = testing::FullProcedure();
   in.limits = seed.limits;
   in.nominal_bias_counts = seed.nominal.bias_counts;
   in.nominal_scale_counts_per_mps2 = seed.nominal.scale_counts_per_mps2;
@@ -73,7 +73,7 @@ TEST(WizardVerdict, ARequiredRunLeftOutByTheFitIsIncompleteAndNamedByItsRadius) 
 // the session reports again and ends PASS, the capture left out superseded. The ending says
 // what the verdict means ("Calibration complete." only for a PASS: item 7).
 TEST(WizardVerdict, TheRunLeftOutIsOfferedAtTheReportAndTakenAgainOnEnter) {
-  testing::WizardRig rig(testing::ShortSeedProcedure(), MountedSixMillimetresOut());
+  testing::WizardRig rig(testing::ShortFullProcedure(), MountedSixMillimetresOut());
   testing::AcceptUntil(rig.engine, OffersTheRetake);
   const WizardView offer = rig.engine.View();
   ASSERT_TRUE(OffersTheRetake(offer)) << offer.prompt;
@@ -99,7 +99,7 @@ TEST(WizardVerdict, TheRunLeftOutIsOfferedAtTheReportAndTakenAgainOnEnter) {
 TEST(WizardVerdict, AnIncompleteEndingNamesTheNextStepAndTheSessionOffersTheRunAgain) {
   std::shared_ptr<SessionJournal> journal(MakeMemoryJournal());
   {
-    testing::WizardRig rig(testing::ShortSeedProcedure(), MountedSixMillimetresOut(), journal);
+    testing::WizardRig rig(testing::ShortFullProcedure(), MountedSixMillimetresOut(), journal);
     testing::AcceptUntil(rig.engine, OffersTheRetake);
     rig.engine.Handle({IntentKind::kAnswerNo, ""});
     const WizardView v = rig.engine.View();
@@ -112,7 +112,7 @@ TEST(WizardVerdict, AnIncompleteEndingNamesTheNextStepAndTheSessionOffersTheRunA
   }
   // Opened again (the technician mounts as asked now): the run offered first, taken on Enter,
   // and the session reports again: PASS.
-  testing::WizardRig again(testing::ShortSeedProcedure(), sim::DefaultScenario(), journal);
+  testing::WizardRig again(testing::ShortFullProcedure(), sim::DefaultScenario(), journal);
   const WizardView v = again.engine.View();
   ASSERT_FALSE(v.finished);
   EXPECT_TRUE(OffersTheRetake(v)) << v.prompt;
@@ -127,7 +127,7 @@ TEST(WizardVerdict, AnIncompleteEndingNamesTheNextStepAndTheSessionOffersTheRunA
 }
 
 TEST(WizardVerdict, TheFinalSummaryShowsTheCertificatesU) {
-  testing::WizardRig rig(testing::ShortSeedProcedure(), sim::DefaultScenario());
+  testing::WizardRig rig(testing::ShortFullProcedure(), sim::DefaultScenario());
   testing::AcceptUntil(rig.engine, testing::Never);
   const WizardView v = rig.engine.View();
   ASSERT_EQ(v.verdict, "PASS") << Joined(v.lines);

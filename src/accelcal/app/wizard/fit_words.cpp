@@ -10,13 +10,13 @@
 namespace accelcal {
 namespace {
 
-constexpr size_t kWidth = 78;
+constexpr size_t kFitLineWidth = 78;
 
 void AddWrapped(const std::string& text, std::vector<std::string>* out) {
   std::string line;
   std::istringstream words(text);
   for (std::string w; words >> w;) {
-    if (!line.empty() && line.size() + 1 + w.size() > kWidth) {
+    if (!line.empty() && line.size() + 1 + w.size() > kFitLineWidth) {
       out->push_back(line);
       line = "  ";
     }

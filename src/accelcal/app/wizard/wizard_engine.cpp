@@ -8,11 +8,14 @@
 
 #include <fmt/core.h>
 
+#include "accelcal/app/wizard/quantity_input.h"
+#include "accelcal/app/wizard/refit_answer.h"
 #include "accelcal/app/wizard/resume_summary.h"
 #include "accelcal/app/wizard/session_gaps.h"
 #include "accelcal/app/wizard/step_registry.h"
 #include "accelcal/app/wizard/time_estimate.h"
 #include "accelcal/base/error.h"
+#include "accelcal/base/utc_time.h"
 
 namespace accelcal {
 
@@ -91,6 +94,8 @@ void WizardEngine::EnterStep(int index) {
         opened_again_ = true;
         return EnterStep(static_cast<int>(i));
       }
+    // Finished with a calibration: its inputs may be corrected without a capture taken again.
+    if (resumed_ && session_.steps.final_summary() != nullptr) flow_ = Flow::kOfferRefit;
     return;
   }
   flow_ = Flow::kStep;
@@ -137,7 +142,36 @@ void WizardEngine::HandleConfirmSkip(const Intent& intent) {
 
 void WizardEngine::Quit() {
   session_.acq.Stop();
-  quit_ = true;
+  // Leaving a finished session's refit offer leaves it as it was: nothing to resume.
+  quit_ = flow_ != Flow::kOfferRefit;
+  flow_ = Flow::kDone;
+}
+
+// The answer to "Refit with new inputs?": Enter leaves the session as it is; corrections refit
+// it (the earlier calibration kept), or are refused with why and asked again.
+void WizardEngine::HandleOfferRefit(const Intent& intent) {
+  if (intent.kind == IntentKind::kAccept || (intent.kind == IntentKind::kSubmitText && IsBlank(intent.text))) {
+    flow_ = Flow::kDone;
+    return;
+  }
+  if (intent.kind != IntentKind::kSubmitText) return;
+  RefitAnswer answer = ParseRefitAnswer(intent.text);
+  if (!answer.ok()) {
+    refit_error_ = answer.error;
+    return;
+  }
+  RefitRequest& request = answer.request;
+  request.session_name = options_.session_name;
+  request.report_beside = options_.report_beside;
+  request.source = session_.source.Describe();
+  request.now_utc = UtcNowIso8601();
+  try {
+    refit_ = RefitSession(model_, procedure_, request);
+  } catch (const Error& e) {
+    refit_error_ = e.what();
+    return;
+  }
+  refit_error_.clear();
   flow_ = Flow::kDone;
 }
 
@@ -191,6 +225,7 @@ void WizardEngine::Handle(const Intent& intent) {
     case Flow::kStep: return Current()->Handle(intent);
     case Flow::kConfirmSkip: return HandleConfirmSkip(intent);
     case Flow::kConfirmRedo: return HandleConfirmRedo(intent);
+    case Flow::kOfferRefit: return HandleOfferRefit(intent);
     case Flow::kDone: return;
   }
 }
