@@ -60,6 +60,7 @@ int main(int argc, char** argv) {
   accelcal::cli::SetupExportCalCommand(app);
   accelcal::cli::SetupHistoryCommand(app);
   accelcal::cli::SetupReportCommand(app);
+  accelcal::cli::SetupRefitCommand(app);
   accelcal::cli::SetupWizardCommand(app);
   accelcal::cli::SetupAllanCommand(app);
   accelcal::cli::SetupNoiseCommand(app);

@@ -21,6 +21,7 @@ void SetupExportCommand(CLI::App& app);
 void SetupExportCalCommand(CLI::App& app);
 void SetupHistoryCommand(CLI::App& app);
 void SetupReportCommand(CLI::App& app);
+void SetupRefitCommand(CLI::App& app);
 void SetupWizardCommand(CLI::App& app);
 void SetupAllanCommand(CLI::App& app);
 void SetupNoiseCommand(CLI::App& app);

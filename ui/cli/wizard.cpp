@@ -20,6 +20,8 @@
 #include "accelcal/acquire/source/remote_bench.h"
 #include "accelcal/acquire/source/source_spec.h"
 #include "accelcal/session/procedure.h"
+#include "accelcal/app/refit_session.h"
+#include "accelcal/app/wizard/virtual_lab.h"
 #include "accelcal/app/wizard/wizard_engine.h"
 #include "cli/commands.h"
 #include "cli/output.h"
@@ -85,6 +87,7 @@ int RunWizard(const WizardCommandOptions& options) {
   SourceOptions source_options;
   source_options.sim.speed = options.speed;
   source_options.seed = options.seed;
+  const bool sim = options.source == "sim";
   if (!options.scenario_path.empty()) source_options.scenario = sim::LoadScenario(options.scenario_path);
   std::unique_ptr<SampleSource> source = OpenSource(options.source, source_options);
   PrepareVehicle(*source, options.vehicle_calibration, stdout);
@@ -97,23 +100,30 @@ int RunWizard(const WizardCommandOptions& options) {
 
   WizardOptions wizard;
   wizard.session_name = session;
-  wizard.default_operator = DefaultOperator(options.source == "sim");
-  wizard.default_device = options.source == "sim" ? "SIM-0001" : "";
+  wizard.default_operator = DefaultOperator(sim);
+  wizard.default_device = sim ? "SIM-0001" : "";
   wizard.default_place = options.place;
   wizard.gravity = options.gravity;
+  // The virtual bench's lab: its gravity and its identified, verified equipment (virtual_lab.h).
+  if (sim)
+    OfferVirtualLab(source_options.scenario ? *source_options.scenario : sim::DefaultScenario(),
+                    !options.gravity_flag.empty(), &wizard);
   wizard.report_beside = session;
   if (!options.no_lab) wizard.check_equipment = AnnouncedEquipmentCheck();
+  // A flag this run does not use (the session recorded its own at its welcome) is said, never
+  // silently ignored.
+  wizard.notes = UnusedResumeFlags(*journal, session, options.gravity_flag, options.place);
   WizardEngine engine(procedure, *source, *journal, wizard);
 
   const bool terminal = ::isatty(STDIN_FILENO) == 1 && ::isatty(STDOUT_FILENO) == 1;
   int status = 0;
   if (tty) {
-    status = ui::RunLineMode(engine, tty->in(), std::cout, tty->fd());  // stdin is the samples'
+    status = ui::RunLineModeOn(engine, tty->fd(), true, std::cout);  // stdin is the samples'
   } else if (terminal && !options.plain) {
     status = ui::RunTui(engine);
   } else {
     // On a terminal, q is read while the wizard captures; a pipe's lines wait for questions.
-    status = ui::RunLineMode(engine, std::cin, std::cout, ::isatty(STDIN_FILENO) == 1 ? STDIN_FILENO : -1);
+    status = ui::RunLineModeOn(engine, STDIN_FILENO, ::isatty(STDIN_FILENO) == 1, std::cout);
   }
   // Done only when the procedure ran to its end; a session left with q stays open to resume.
   if (status == 0 && engine.completed()) {
@@ -171,6 +181,7 @@ void SetupWizardCommand(CLI::App& app) {
       "'standard', said explicitly).");
   sub->callback([options, gravity] {
     options->gravity = gravity->Resolve();
+    options->gravity_flag = gravity->Given();
     if (RunWizard(*options) != 0) throw Error("the wizard stopped on a failure");
   });
 }

@@ -24,6 +24,7 @@ struct WizardCommandOptions {
   std::string bench_control;        // HOST:PORT of a remote virtual bench's controls (tests)
   std::string vehicle_calibration = "undo";  // mavlink: undo | as-is
   GravitySpec gravity;
+  std::string gravity_flag;         // the gravity flag as given ("--latitude 0"); empty: none
 };
 
 // Runs the wizard to its end or until the operator leaves; returns the exit status.

@@ -227,6 +227,10 @@ std::optional<std::string> SessionStore::Result() const {
   return row.ColumnText(0);
 }
 
+int SessionStore::ResultCount() const {
+  return static_cast<int>(db_->QueryInt("SELECT count(*) FROM results"));
+}
+
 SessionInfo SessionStore::Info() const {
   SessionInfo info;
   info.path = path_;

@@ -107,6 +107,7 @@ class SessionStore final : public SessionJournal {
   SessionInputs Inputs() const override;
   std::map<std::string, std::string> DoneSteps() const override;
   std::optional<std::string> Result() const override;
+  int ResultCount() const override;
   RecordSummary RecordSummaryOf(const std::string& step_id) const override;
   void VisitRecordChunks(const std::string& step_id,
                          const std::function<void(const RecordChunk&)>& visit) const override;

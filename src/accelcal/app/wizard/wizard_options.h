@@ -1,5 +1,6 @@
 // What a wizard session is started with (the command line's choices): its name, the defaults
-// the welcome offers, the quiet period of the noise floor, the clocks and where the report goes.
+// the welcome offers, the quiet period of the noise floor, the clocks, where the report goes and
+// what to say about the flags a resumed session does not use.
 #pragma once
 
 #include <functional>
@@ -41,6 +42,12 @@ struct WizardOptions {
   // procedure's items and again for the items the equipment answer names; a lab out of reach
   // is said there too (the session goes on, kept on the bench). Empty: no check.
   std::function<WelcomeLabCheck(const std::vector<EquipmentItem>&)> check_equipment = {};
+  // The equipment answer offered at the welcome (equipment_input.h); empty: "keep" (the
+  // procedure's). The virtual bench offers its lab's (virtual_lab.h).
+  std::string default_equipment = {};
+  // Said on the first screen of a session resumed (or already finished): the command line's
+  // flags this run does not use, with what to do instead (app/refit_session.h).
+  std::vector<std::string> notes = {};
 
   // Empty when the options are usable; else why not.
   std::string Validate() const {
