@@ -55,10 +55,18 @@ void WelcomeStep::ReadEquipment(const WelcomeAnswers& answers) {
   session_.steps.set_equipment(RecordedEquipment(answers, session_.procedure));
 }
 
-// The items as the session holds them (the procedure's, or as the equipment answer edited them).
+// The items as the session holds them (the procedure's, or as the equipment answer edited them);
+// before that answer, the items its default offers (a virtual bench's lab's), which Enter keeps.
 void WelcomeStep::CheckEquipmentWithLab() {
   if (!session_.options.check_equipment) return;
-  WelcomeLabCheck check = session_.options.check_equipment(session_.steps.equipment());
+  std::vector<EquipmentItem> items = session_.steps.equipment();
+  const auto welcome = session_.model.inputs().find(kWelcomeStepId);
+  const bool answered = welcome != session_.model.inputs().end() && welcome->second.count(welcome_key::kEquipment) != 0;
+  if (!answered && !session_.options.default_equipment.empty()) {
+    EquipmentAnswer offered = ApplyEquipmentAnswer(session_.options.default_equipment, items);
+    if (offered.ok()) items = std::move(offered.items);
+  }
+  WelcomeLabCheck check = session_.options.check_equipment(items);
   equipment_warnings_ = std::move(check.warnings);
   lab_unreachable_ = std::move(check.unreachable);
 }
