@@ -13,6 +13,7 @@
 #include "accelcal/io/procedure_file.h"
 #include "accelcal/io/scenario_file.h"
 #include "accelcal/session/session_paths.h"
+#include "accelcal/acquire/mavlink/mavlink_source.h"
 #include "accelcal/acquire/source/remote_bench.h"
 #include "accelcal/acquire/source/source_spec.h"
 #include "accelcal/session/procedure.h"
@@ -53,7 +54,10 @@ int RunWizard(const WizardCommandOptions& options) {
   source_options.seed = options.seed;
   if (!options.scenario_path.empty()) source_options.scenario = sim::LoadScenario(options.scenario_path);
   std::unique_ptr<SampleSource> source = OpenSource(options.source, source_options);
-  PrepareVehicle(*source, options.vehicle_calibration, stdout);
+  // The vehicle's calibration is said at the welcome (and recorded there); a refusal, here.
+  std::vector<std::string> device_lines = PrepareVehicle(*source, options.vehicle_calibration, nullptr, stdout);
+  // The vehicle, for the write-back step, before the source is wrapped.
+  MavlinkSource* vehicle = dynamic_cast<MavlinkSource*>(source.get());
   if (!options.bench_control.empty())
     source = WithRemoteBench(std::move(source), ParseHostPort(options.bench_control, options.bench_control,
                                                               "--bench-control HOST:PORT"));
@@ -66,6 +70,8 @@ int RunWizard(const WizardCommandOptions& options) {
   wizard.default_operator = DefaultOperator(options.source == "sim");
   wizard.default_device = options.source == "sim" ? "SIM-0001" : "";
   wizard.default_place = options.place;
+  wizard.device_lines = std::move(device_lines);
+  wizard.vehicle = vehicle;
   wizard.gravity = options.gravity;
   wizard.report_beside = session;
   WizardEngine engine(procedure, *source, *journal, wizard);

@@ -4,10 +4,13 @@
 
 #include <functional>
 #include <string>
+#include <vector>
 
 #include "accelcal/base/gravity.h"
 
 namespace accelcal {
+
+class MavlinkSource;
 
 struct WizardOptions {
   std::string session_name = "session";  // shown in the view and in the calibration's source
@@ -28,6 +31,15 @@ struct WizardOptions {
   std::string report_beside = {};
   // The lab or bench offered at the welcome (may be empty): the report's "place".
   std::string default_place = {};
+  // What the source's device already holds and what was done with it (a MAVLink vehicle's own
+  // accelerometer calibration: read, then taken out of the readings or left in; app/device/
+  // vehicle_session.h), one fact per line: shown at the welcome and recorded with its answers.
+  // Empty for a source without such a device.
+  std::vector<std::string> device_lines = {};
+  // The MAVLink vehicle behind the session's source (the source itself, or inside the remote
+  // bench's wrapper), borrowed: the write-back step (steps/write_back_step.cpp) writes the
+  // calibration into it through the source's own link. nullptr for any other source.
+  MavlinkSource* vehicle = nullptr;
 
   // Empty when the options are usable; else why not.
   std::string Validate() const {

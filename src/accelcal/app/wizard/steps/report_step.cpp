@@ -39,7 +39,10 @@ class ReportStep final : public ResultStep {
 
   void SetAnswerView(WizardView& v) const override {
     ResultStep::SetAnswerView(v);
-    v.prompt = "Calibration recorded in the session; press Enter to finish.";
+    // A step after the report (a write-back into the vehicle) is still to come.
+    const bool more = session_.sequence.SessionLeftS(true) > 0.0;
+    v.prompt = more ? "Calibration recorded in the session; press Enter to go on."
+                    : "Calibration recorded in the session; press Enter to finish.";
   }
 
  private:

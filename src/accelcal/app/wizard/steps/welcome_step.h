@@ -28,6 +28,11 @@ class WelcomeStep final : public StepController {
   void Resume() override;
   void SetHeader(WizardView& v) const override { v.step_title = "Welcome"; }
   void SetView(WizardView& v) const override;
+  // What the source's device holds (WizardOptions::device_lines), above the questions.
+  void AddText(std::vector<std::string>& lines) const override;
+  // A session resumed after its welcome: what the device holds now, and whether it is what the
+  // session recorded when it began (a vehicle calibrated again in between says so).
+  std::vector<std::string> DeviceResumeLines() const;
 
  private:
   // A question: its input key, label and default answer.
@@ -43,6 +48,8 @@ class WelcomeStep final : public StepController {
   std::string Check(const std::string& key, const std::string& value);
   void ReadGravity(const WelcomeAnswers& answers);
   void ReadEquipment(const WelcomeAnswers& answers);
+  // Records the device's lines with the answers (when there are some).
+  void RecordDeviceLines();
 
   WizardSession& session_;
   int question_ = 0;
