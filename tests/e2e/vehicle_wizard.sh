@@ -12,7 +12,9 @@
 #   - after the report the write-back shows its PARAM_SETs and asks; on yes it writes, every
 #     value echoed and read back; the vehicle then holds exactly the values shown (its own
 #     summary), the same as export-cal's dry run of the session computes; the step is recorded.
-# (A session answered by `yes ''` declines the write-back: device_sessions.sh.)
+# Then a vehicle that does not echo one PARAM_SET: the write-back stops, says which parameters
+# were written and which not, and is recorded as stopped. (A session answered by `yes ''`
+# declines the write-back: device_sessions.sh.)
 # Usage: bash vehicle_wizard.sh ACCELCAL SOURCE_DIR SHARED_DATA_DIR
 set -euo pipefail
 accelcal=$1
@@ -99,5 +101,39 @@ assert len(sets) == 6, sets
 for name, value in sets:
     v = float(value)
     assert abs(params[name] - v) <= 1e-6 * max(1.0, abs(v)), (name, params[name], v)
+PY
+# A vehicle that does not echo INS_ACCSCAL_X: the write-back stops there and says what was written
+# and what not; Enter leaves it so, and the step is recorded as stopped. (The static poses only:
+# the turntable adds nothing to what is checked here.)
+python3 - "$work/autopilot.toml" "$work/statics.toml" <<'PY'
+import sys
+text = open(sys.argv[1]).read()
+head, *steps = text.split("\n[[step]]")
+open(sys.argv[2], "w").write(head + "".join("\n[[step]]" + s for s in steps if 'kind = "turntable"' not in s))
+PY
+grep -q 'kind = "turntable"' "$work/statics.toml" && fail "statics procedure: a turntable step left"
+bench_scenario=  # the default bench
+start_bench 20 node "$source_dir/tests/peers/mavlink_vehicle.cjs" --tcp 0 --no-echo INS_ACCSCAL_X
+mav="mavlink:tcp:127.0.0.1:$peer_port"
+set +e
+python3 "$source_dir/tests/e2e/lib/answer_prompts.py" --first BENCH-9 --first tester \
+  --when "Write this calibration into the vehicle?=yes" -- \
+  "$accelcal" wizard --source "$mav" --bench-control "127.0.0.1:$bench_port" \
+  --procedure "$work/statics.toml" --session "$work/stop.db" --plain > "$work/out" 2> "$work/err"
+code=$?
+set -e
+stop_bench
+[ "$code" -eq 0 ] || { tail -40 "$work/out" >&2; cat "$work/err" >&2; fail "wizard (no echo) exited $code"; }
+said "problem: the write-back stopped: tcp:127.0.0.1:$peer_port: no PARAM_VALUE echoed the PARAM_SET of INS_ACCSCAL_X"
+said "written: INS_ACCOFFS_X, INS_ACCOFFS_Y, INS_ACCOFFS_Z"
+said "not written: INS_ACCSCAL_Y, INS_ACCSCAL_Z"
+said "The vehicle was not fully written: the lines above say what it holds now."
+python3 - "$work/stop.db" <<'PY' || fail "the stopped write-back not recorded as stopped"
+import sqlite3, sys
+db = sqlite3.connect(sys.argv[1])
+outcome = db.execute("SELECT outcome FROM steps_done WHERE step_id = 'write_back'").fetchall()[-1][0]
+assert outcome.startswith("stopped: ") and "INS_ACCSCAL_X" in outcome, outcome
+recorded = db.execute("SELECT value FROM inputs WHERE step_id = 'write_back' AND key = 'outcome'").fetchall()[-1][0]
+assert "not written: INS_ACCSCAL_Y, INS_ACCSCAL_Z" in recorded, recorded
 PY
 echo "vehicle_wizard: ok"
