@@ -29,13 +29,12 @@ sed -e 's/^capture_duration_s = 10 /capture_duration_s = 3 /' \
   "$source_dir/procedures/autopilot_imu.toml" > "$work/autopilot.toml"
 grep -q '^kind = "write_back"' "$work/autopilot.toml" || fail "the autopilot procedure has no write_back step"
 
-# A quiet sensor (0.3 counts of noise, about 0.9 mG): the vehicle's 1 mG steps are as coarse as
-# its noise, so the noise floor is the rounding's as much as the sensor's.
-sed -e 's/^noise_counts = .*/noise_counts = [0.3, 0.3, 0.3]/' "$source_dir/scenarios/bench_default.toml" \
-  > "$work/quiet.toml"
-grep -q '^noise_counts = \[0.3' "$work/quiet.toml" || fail "quiet scenario: no noise_counts"
+# A quiet sensor (about 0.9 mG of noise): the vehicle's 1 mG steps are as coarse as its noise, so
+# the noise floor is the rounding's as much as the sensor's.
+quiet_scenario "$work/quiet.toml"
 bench_scenario=$work/quiet.toml
 start_bench 20 node "$source_dir/tests/peers/mavlink_vehicle.cjs" --tcp 0 --msg scaled --drop 0.05 \
+  --scale 556.8 --bias 32768 \
   --summary "$work/vehicle.json" --param INS_ACCOFFS_X=0.3 --param INS_ACCSCAL_Y=1.03
 mav="mavlink:tcp:127.0.0.1:$peer_port"
 set +e
