@@ -27,6 +27,7 @@ enum class StepKind : int {
   kDiagnosis,  // the diagnosis; asks before adopting an effect
   kReport,     // the calibration report; the session's result is recorded
   kAnalysis,   // the noise or drift analysis of an earlier record step, shown
+  kWriteBack,  // the report's calibration offered to the MAVLink vehicle read, written on a yes
 };
 
 // What a step takes from the sensor.
@@ -86,8 +87,8 @@ struct StepKindInfo {
 
 // The kind's row; throws accelcal::Error for a value that is no kind.
 const StepKindInfo& InfoOf(StepKind kind);
-// "level", "static", "turntable", "record", "fit", "diagnosis", "report", "analysis", or a
-// registered kind's name; "?" for a value that is no kind.
+// "level", "static", "turntable", "record", "fit", "diagnosis", "report", "analysis",
+// "write_back", or a registered kind's name; "?" for a value that is no kind.
 std::string_view StepKindToString(StepKind kind);
 std::optional<StepKind> StringToStepKind(std::string_view text);
 // Every kind's name, the table's order then the registered ones'.

@@ -17,6 +17,7 @@ StepControllerKind FitStepKind();
 StepControllerKind DiagnosisStepKind();
 StepControllerKind ReportStepKind();
 StepControllerKind AnalysisStepKind();
+StepControllerKind WriteBackStepKind();
 
 namespace {
 
@@ -25,6 +26,7 @@ std::deque<StepControllerKind>& RegisteredControllers() {
   static std::deque<StepControllerKind> kinds = {
       LevelStepKind(), StaticStepKind(),    TurntableStepKind(), RecordStepKind(),
       FitStepKind(),   DiagnosisStepKind(), ReportStepKind(),    AnalysisStepKind(),
+      WriteBackStepKind(),
   };
   return kinds;
 }
