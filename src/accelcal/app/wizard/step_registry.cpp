@@ -54,6 +54,7 @@ std::string StepInputHelp(std::string_view key) {
 // The kinds defined beside their controllers, one line each: KIND(the function of the kind's
 // controller file that returns its StepKindDefinition). Adding a kind adds its line here.
 #define ACCELCAL_STEP_KINDS(KIND) \
+  KIND(RepeatStepKind)            \
   /* the list ends here */
 
 #define ACCELCAL_DECLARE_STEP_KIND(definition) StepKindDefinition definition();
