@@ -15,6 +15,7 @@
 #include <fmt/core.h>
 
 #include "accelcal/app/wizard/pose_setting.h"
+#include "accelcal/app/wizard/settling_wait.h"
 #include "accelcal/app/wizard/step_registry.h"
 #include "accelcal/app/wizard/steps/acquiring_step.h"
 #include "accelcal/calibration/pose_repeat.h"
@@ -62,6 +63,13 @@ class RepeatStep final : public AcquiringStep {
  protected:
   // The pose was captured before: taking it again is the point.
   bool ChecksDuplicates() const override { return false; }
+
+  // Before the capture starts: as long as the session's captures say the sensor needs to settle.
+  CaptureRequest MakeRequest() const override {
+    CaptureRequest r = AcquiringStep::MakeRequest();
+    AddSettlingWait(session_, r);
+    return r;
+  }
 
   void OnCaptureAccepted(Capture capture) override {
     KeepCapture(capture);
