@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "accelcal/base/gravity.h"
+#include "accelcal/report/limited_by_text.h"
 #include "accelcal/report/report_model.h"
 #include "accelcal/report/uncertainty_text.h"
 
@@ -176,6 +177,7 @@ Certificate MakeCertificate(const ReportInputs& in, const ReportModel& m) {
                  "1-sigma (type A alone, k = 2); the reference quantities' uncertainties are not "
                  "included.";
   }
+  c.limited_by = LimitedByStatement(in.calibration);
   c.traceability = Traceability(in);
   c.decision_rule = "Simple acceptance (ILAC-G8:09/2019, 4.2.1): each limit is compared with the "
                     "value as found; the value's uncertainty neither widens nor narrows the limit.";
