@@ -19,8 +19,8 @@ code=${PIPESTATUS[1]}
 set -e
 [[ $code -eq 0 ]] || fail "exit $code: $(cat "$work/err")"
 grep -q 'parameters (1-sigma):' "$work/out" || fail "no parameters in the report"
-grep -q 'fit converged: 18 captures' "$work/out" || fail "the fit did not converge on 18 captures"
-grep -q '^\[23/23\] Done' "$work/out" || fail "the wizard did not reach the end"
+grep -q 'fit converged: 19 captures' "$work/out" || fail "the fit did not converge on 19 captures"
+grep -q '^\[24/24\] Done' "$work/out" || fail "the wizard did not reach the end"
 grep -q 'Calibration complete' "$work/out" || fail "no completion message"
 grep -q 'a_zx' "$work/out" || fail "no misalignment in the report"
 grep -q 'Full calibration: level, 9 prism poses' "$work/out" || fail "the procedure is not named"

@@ -49,7 +49,7 @@ done
 
 # The final run completes and the session has its calibration.
 run_wizard >"$work/final" 2>&1 || { tail "$work/final" >&2; fail "final run failed"; }
-[ "$(captures_now)" -eq 18 ] || fail "expected 18 captures at the end, got $(captures_now)"
+[ "$(captures_now)" -eq 19 ] || fail "expected 19 captures at the end, got $(captures_now)"
 [ "$(sort "$work/ids" | uniq -d | wc -l)" -eq 0 ] || fail "a capture twice at the end"
 "$accelcal" sessions "$work/s.db" >"$work/list"
 grep -Eq ' 18 (open|done) +yes$' "$work/list" || { cat "$work/list"; fail "session not complete"; }

@@ -22,7 +22,7 @@ Calibration CalibrationOutcome::MakeCalibration(bool adopt_effects) const {
     for (const NearTie& t : near_ties) cal.limited_by.push_back({"near_tie", NearTieWords(t)});
   // A pose taken again (a repeat step) that moved beyond noise, which the fit does not explain.
   if (!diagnosis.consistent)
-    for (const PoseRepeat& r : FindPoseRepeats(captures))
+    for (const PoseRepeat& r : FindPoseRepeats(captures, cal.model))
       if (r.beyond_noise) cal.limited_by.push_back({"reference_drift", PoseRepeatLimitWords(r)});
   if (references)
     cal.budget = MakeCalibrationBudget(diagnosis, adopt_effects, captures, gravity.gravity_mps2, *references);

@@ -7,8 +7,8 @@
 namespace accelcal {
 namespace {
 
-// Chi-square's 0.999 quantile at 3 degrees of freedom.
-constexpr double kChi2Limit3Dof = 16.27;
+// |z| beyond this: one in a thousand, two-sided.
+constexpr double kLimitZ = 3.29;
 
 // The capture's reading and its standard error per axis, counts: its settled reading when it was
 // still settling (calibration/settling.h), else its mean.
@@ -33,7 +33,7 @@ std::string ElapsedWords(double s) {
 
 }  // namespace
 
-PoseRepeat ComparePoseRepeat(const Capture& first, const Capture& again) {
+PoseRepeat ComparePoseRepeat(const Capture& first, const Capture& again, const SensorModel& rough) {
   PoseRepeat r;
   r.label = again.label;
   r.first_id = first.id;
@@ -42,15 +42,17 @@ PoseRepeat ComparePoseRepeat(const Capture& first, const Capture& again) {
   Eigen::Vector3d m1, s1, m2, s2;
   ReadingOf(first, m1, s1);
   ReadingOf(again, m2, s2);
-  r.moved_counts = m2 - m1;
-  r.noise_counts = (s1.array().square() + s2.array().square()).sqrt().matrix();
-  for (int i = 0; i < 3; ++i)
-    if (r.noise_counts(i) > 0.0) r.chi2 += std::pow(r.moved_counts(i) / r.noise_counts(i), 2);
-  r.beyond_noise = r.chi2 > kChi2Limit3Dof;
+  const Eigen::Vector3d scale = rough.scale_counts_per_mps2;
+  const Eigen::Vector3d up = rough.Calibrate(m1).normalized();
+  // Per axis, counts of the mean scale per count of the axis: u_j K_mean / K_j.
+  const Eigen::Vector3d weight = up.cwiseProduct(scale.cwiseInverse()) * scale.mean();
+  r.moved_counts = weight.dot(m2 - m1);
+  r.noise_counts = std::sqrt(weight.cwiseAbs2().dot(s1.cwiseAbs2() + s2.cwiseAbs2()));
+  r.beyond_noise = r.noise_counts > 0.0 && std::abs(r.moved_counts) > kLimitZ * r.noise_counts;
   return r;
 }
 
-std::vector<PoseRepeat> FindPoseRepeats(const std::vector<Capture>& captures) {
+std::vector<PoseRepeat> FindPoseRepeats(const std::vector<Capture>& captures, const SensorModel& rough) {
   std::vector<PoseRepeat> repeats;
   for (size_t j = 0; j < captures.size(); ++j) {
     const Capture& again = captures[j];
@@ -63,19 +65,16 @@ std::vector<PoseRepeat> FindPoseRepeats(const std::vector<Capture>& captures) {
       if (i < j && first == nullptr) first = &c;
       if (i > j) later = &c;
     }
-    if (first != nullptr && later == nullptr) repeats.push_back(ComparePoseRepeat(*first, again));
+    if (first != nullptr && later == nullptr) repeats.push_back(ComparePoseRepeat(*first, again, rough));
   }
   return repeats;
 }
 
 std::string DescribePoseRepeat(const PoseRepeat& r) {
-  Eigen::Index axis = 0;
-  r.moved_counts.cwiseAbs().maxCoeff(&axis);
   const std::string elapsed = ElapsedWords(r.elapsed_s);
-  return fmt::format("moved {:.1f} counts{}{}, {} its noise ({:.1f} counts){}",
-                     std::abs(r.moved_counts(axis)), elapsed.empty() ? "" : " in ", elapsed,
-                     r.beyond_noise ? "more than" : "within", r.noise_counts(axis),
-                     r.beyond_noise ? " explains" : "");
+  return fmt::format("moved {:.1f} counts along gravity{}{}, {} its noise ({:.1f} counts){}", std::abs(r.moved_counts),
+                     elapsed.empty() ? "" : " in ", elapsed, r.beyond_noise ? "more than" : "within",
+                     r.noise_counts, r.beyond_noise ? " explains" : "");
 }
 
 std::string PoseRepeatLimitWords(const PoseRepeat& r) {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 #include <vector>
 
 #include <fmt/core.h>
@@ -55,7 +56,7 @@ std::string LimitedByStatement(const Calibration& cal) {
       if (d == sources.end()) d = sources.insert(sources.end(), Dominated{source, {}});
       const std::string family = FamilyOf(p.index);
       auto f = std::find_if(d->families.begin(), d->families.end(), [&](const auto& x) { return x.first == family; });
-      if (f == d->families.end()) f = d->families.insert(d->families.end(), {family, {}});
+      if (f == d->families.end()) f = d->families.insert(d->families.end(), std::make_pair(family, std::vector<std::string>{}));
       f->second.push_back(p.name);
     }
     std::vector<std::string> parts;

@@ -11,8 +11,10 @@
 namespace accelcal {
 namespace {
 
-constexpr double kLongestWaitS = 120.0;
-constexpr double kMostSettlingTimes = 4.0;
+// At most: 10 s captures tell a settling time of 10 s from one of a minute poorly (settling.h),
+// and the estimate leans long; a minute per pose at most keeps the bench moving.
+constexpr double kLongestWaitS = 60.0;
+constexpr double kMostSettlingTimes = 2.0;
 // What may be left of the change of pose when the capture begins: this many standard errors of
 // the capture's mean (the fit's settled readings take care of the rest).
 constexpr double kLeftInStandardErrors = 2.0;
@@ -33,8 +35,8 @@ SettlingWait PlanSettlingWait(std::vector<Capture> captured, const Eigen::Vector
   if (!(need > 1.0)) return {};
   const double wait_s = std::ceil(std::min({f.tau_s * std::log(need), kMostSettlingTimes * f.tau_s, kLongestWaitS}));
   return {wait_s, fmt::format("still settling after you set it down: the earlier poses were still moving "
-                              "{:.1f} counts as their capture began (it settles in about {:.0f} s)",
-                              f.largest_offset_counts, 3.0 * f.tau_s)};
+                              "{:.1f} counts as their capture began (settling time about {:.0f} s)",
+                              f.largest_offset_counts, f.tau_s)};
 }
 
 void AddSettlingWait(const WizardSession& session, CaptureRequest& request) {

@@ -75,7 +75,7 @@ class RepeatStep final : public AcquiringStep {
     KeepCapture(capture);
     if (const JournalCapture* first = session_.model.CaptureOf(RepeatOf(step_).of))
       session_.screen.notice += fmt::format("; since the first time the reading {}",
-                                            DescribePoseRepeat(ComparePoseRepeat(first->capture, capture)));
+                                            DescribePoseRepeat(ComparePoseRepeat(first->capture, capture, session_.procedure.nominal)));
     session_.captured.push_back({capture.id, capture.label, session_.MeasuredUp(capture)});
     session_.noise_floor.Recheck(capture, session_.captured);
     session_.next_capture_id = capture.id + 1;
