@@ -38,14 +38,14 @@ said "Resuming session"
 said "Welcome: done Level the table: done +z up: done (capture 1) -z up: skipped"
 grep -q "done: pose_\|done: welcome" "$work/out" && fail "the summary still shows internal ids"
 
-# 3. The diagnosis: welcome 5, noise floor 1, leveling 3, 9 poses, 9 runs x 3, fit 1 = 46
+# 3. The diagnosis: welcome 5, noise floor 1, leveling 3, 9 poses, 9 runs x 3, the repeat 1, fit 1 = 47
 #    answers, then d (statistics), d (plain again), Enter (the recommended choice).
 #    effects_demo's long radius and bent response put the uncalibrated centripetal reading near
 #    the capture check's 10 % (some runs refused, each refusal one more answer): 20 % here, since
 #    this part checks the diagnosis's words, not the capture check (clumsy_wrong_radius does).
 sed -i 's/^turntable_tolerance = 0.10 /turntable_tolerance = 0.20 /' "$work/short.toml"
 grep -q '^turntable_tolerance = 0.20 ' "$work/short.toml" || fail "short procedure: no turntable_tolerance"
-wizard effects_demo.toml "$work/fx.db" "$(printf '\\n%.0s' $(seq 46))d\\nd\\n\\n"
+wizard effects_demo.toml "$work/fx.db" "$(printf '\\n%.0s' $(seq 47))d\\nd\\n\\n"
 said "- the turntable radius seems"
 said "mm longer than entered"
 said "- the sensor's output is not quite a straight line: at 1 g it bends by"

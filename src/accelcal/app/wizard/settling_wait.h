@@ -25,7 +25,7 @@ struct SettlingWait {
 // The wait before a capture reading `expected_counts` (the new pose by the rough model), after
 // `captured` (the session's accepted captures so far, in time order; the last one is the pose
 // the sensor comes from). No wait while the captures show no settling (or are too few to tell);
-// at most two settling times and a minute.
+// at most four settling times and two minutes.
 SettlingWait PlanSettlingWait(std::vector<Capture> captured, const Eigen::Vector3d& expected_counts);
 
 // `request` (a static capture of the session's current step) given the wait the session's
