@@ -49,10 +49,11 @@ for report in "$work/s.report.txt" "$work/later.txt"; do
 done
 
 # The same session again: the run offered first, taken again on Enter (mounted as asked now); the
-# full procedure holds 19 captures (its closing repeat pose), so the retake is capture 20.
+# full procedure holds 21 captures (its reference pose taken again twice between the turntable
+# runs and once at the end), so the retake is capture 22.
 wizard bench_default.toml "$work/s.db" ''
 said "$offer"
-said "taken again: capture 20 replaces capture 14"
+said "taken again: capture 22 replaces capture 14"
 said "Verdict: PASS"
 said "Calibration complete."
 "$accelcal" report "$work/s.db" > "$work/report"
@@ -61,6 +62,6 @@ flat "$work/report" "Result: PASS" || fail "the session's report after the run w
 # A new session, Enter everywhere: taken again at once.
 wizard "$work/r106.toml" "$work/new.db" ''
 said "$offer"
-said "taken again: capture 20 replaces capture 14"
+said "taken again: capture 22 replaces capture 14"
 said "Verdict: PASS"
 echo "left_out_run: ok"

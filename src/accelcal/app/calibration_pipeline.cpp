@@ -1,5 +1,6 @@
 #include "accelcal/app/calibration_pipeline.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "accelcal/base/error.h"
@@ -20,10 +21,14 @@ Calibration CalibrationOutcome::MakeCalibration(bool adopt_effects) const {
   if (settling.detected) cal.limited_by.insert(cal.limited_by.begin(), {"settling", SettlingWords(settling)});
   if (adopt_effects && !diagnosis.adopted.empty())
     for (const NearTie& t : near_ties) cal.limited_by.push_back({"near_tie", NearTieWords(t)});
-  // A pose taken again (a repeat step) that moved beyond noise, which the fit does not explain.
+  // The poses taken again (repeat steps): each repeat's move since the first, for the report; a
+  // pose that moved beyond noise, which the fit does not explain, limits the calibration.
+  cal.pose_repeats = FindPoseRepeats(captures, cal.model);
   if (!diagnosis.consistent)
-    for (const PoseRepeat& r : FindPoseRepeats(captures, cal.model))
-      if (r.beyond_noise) cal.limited_by.push_back({"reference_drift", PoseRepeatLimitWords(r)});
+    for (const std::string& label : RepeatedPoseLabels(cal.pose_repeats))
+      if (std::any_of(cal.pose_repeats.begin(), cal.pose_repeats.end(),
+                      [&](const PoseRepeat& r) { return r.label == label && r.beyond_noise; }))
+        cal.limited_by.push_back({"reference_drift", PoseRepeatLimitWords(cal.pose_repeats, label)});
   if (references)
     cal.budget = MakeCalibrationBudget(diagnosis, adopt_effects, captures, gravity.gravity_mps2, *references);
   return cal;

@@ -19,6 +19,7 @@
 #include "accelcal/base/sample_format.h"
 #include "accelcal/base/sensor_model.h"
 #include "accelcal/calibration/fit/fit_summary.h"
+#include "accelcal/calibration/pose_repeat.h"
 #include "accelcal/calibration/uncertainty_budget.h"
 
 namespace accelcal {
@@ -147,6 +148,9 @@ struct Calibration {
   std::optional<UncertaintyBudget> budget;
   // What limits it beyond the captures' noise; empty when nothing does (issue 29).
   std::vector<UncertaintyLimit> limited_by;
+  // Each pose taken again against its first capture (repeat steps: a reference pose's path over
+  // the session); empty when no pose was taken twice.
+  std::vector<PoseRepeat> pose_repeats;
 
   // The adopted effect called `name`; nullptr when there is none.
   const CalibrationEffect* FindEffect(std::string_view name) const;

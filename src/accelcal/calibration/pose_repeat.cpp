@@ -1,5 +1,6 @@
 #include "accelcal/calibration/pose_repeat.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <fmt/core.h>
@@ -57,17 +58,44 @@ std::vector<PoseRepeat> FindPoseRepeats(const std::vector<Capture>& captures, co
   for (size_t j = 0; j < captures.size(); ++j) {
     const Capture& again = captures[j];
     if (again.kind != CaptureKind::kStatic || !again.used() || again.label.empty()) continue;
-    const Capture* first = nullptr;
-    const Capture* later = nullptr;  // a capture of the pose after this one: that one reports
-    for (size_t i = 0; i < captures.size(); ++i) {
-      const Capture& c = captures[i];
-      if (i == j || c.kind != CaptureKind::kStatic || !c.used() || c.label != again.label) continue;
-      if (i < j && first == nullptr) first = &c;
-      if (i > j) later = &c;
+    for (size_t i = 0; i < j; ++i) {
+      const Capture& first = captures[i];
+      if (first.kind != CaptureKind::kStatic || !first.used() || first.label != again.label) continue;
+      repeats.push_back(ComparePoseRepeat(first, again, rough));
+      break;
     }
-    if (first != nullptr && later == nullptr) repeats.push_back(ComparePoseRepeat(*first, again, rough));
   }
   return repeats;
+}
+
+std::vector<std::string> RepeatedPoseLabels(const std::vector<PoseRepeat>& repeats) {
+  std::vector<std::string> labels;
+  for (const PoseRepeat& r : repeats)
+    if (std::find(labels.begin(), labels.end(), r.label) == labels.end()) labels.push_back(r.label);
+  return labels;
+}
+
+std::string DescribePoseRepeatPath(const std::vector<PoseRepeat>& repeats, const std::string& label) {
+  std::vector<const PoseRepeat*> path;
+  for (const PoseRepeat& r : repeats)
+    if (r.label == label) path.push_back(&r);
+  if (path.empty()) return "";
+  if (path.size() == 1) return label + " taken again " + DescribePoseRepeat(*path.front());
+  std::string moves;
+  double noise2 = 0.0, largest = 0.0;
+  bool beyond = false;
+  for (const PoseRepeat* r : path) {
+    const std::string elapsed = ElapsedWords(r->elapsed_s);
+    moves += fmt::format("{}{:+.1f} counts{}{}", moves.empty() ? "" : ", ", r->moved_counts,
+                         elapsed.empty() ? "" : " after ", elapsed);
+    noise2 += r->noise_counts * r->noise_counts;
+    largest = std::max(largest, std::abs(r->moved_counts));
+    beyond = beyond || r->beyond_noise;
+  }
+  return fmt::format("{}, taken again {} times, moved along gravity since the first time: {} (noise of "
+                     "each move about {:.1f} counts); at most {:.1f} counts, {}",
+                     label, path.size(), moves, std::sqrt(noise2 / static_cast<double>(path.size())), largest,
+                     beyond ? "more than noise explains" : "within noise");
 }
 
 std::string DescribePoseRepeat(const PoseRepeat& r) {
@@ -81,6 +109,12 @@ std::string PoseRepeatLimitWords(const PoseRepeat& r) {
   return fmt::format("limited by a pose that read differently when taken again: {} {} (a drift, a "
                      "sensor still warming, the prism or its mount moved); the uncertainty covers the "
                      "scatter between the captures", r.label, DescribePoseRepeat(r));
+}
+
+std::string PoseRepeatLimitWords(const std::vector<PoseRepeat>& repeats, const std::string& label) {
+  return fmt::format("limited by a pose that read differently when taken again: {} (a drift, a "
+                     "sensor still warming, the prism or its mount moved); the uncertainty covers the "
+                     "scatter between the captures", DescribePoseRepeatPath(repeats, label));
 }
 
 }  // namespace accelcal

@@ -41,15 +41,27 @@ struct PoseRepeat {
 PoseRepeat ComparePoseRepeat(const Capture& first, const Capture& again, const SensorModel& rough);
 
 // Every pose a capture set holds more than once (static captures used by the fit, with the same
-// label): the latest capture of the pose against its first, in the order of the latest.
+// label): each later capture of the pose against its first, in the captures' order. A pose taken
+// again several times (between the turntable runs and at the end) gives its path over the
+// session: each repeat's move and time since the first.
 std::vector<PoseRepeat> FindPoseRepeats(const std::vector<Capture>& captures, const SensorModel& rough);
 
 // "moved 3.1 counts along gravity in 14 min, more than its noise (0.3 counts) explains" or
 // "moved 0.2 counts along gravity in 14 min, within its noise (0.3 counts)".
 std::string DescribePoseRepeat(const PoseRepeat& repeat);
 
+// The path of the pose of `repeats` labelled `label` (FindPoseRepeats' entries of one pose), for
+// the report: "+z up, taken again 3 times, moved along gravity since the first time: +0.4 counts
+// after 9 min, +3.1 counts after 18 min, +2.0 counts after 27 min (noise of each move about 0.3
+// counts); at most 3.1 counts, more than noise explains". Empty when the pose was not repeated.
+std::string DescribePoseRepeatPath(const std::vector<PoseRepeat>& repeats, const std::string& label);
+// The labels of the poses `repeats` hold, in the order of their first repeat.
+std::vector<std::string> RepeatedPoseLabels(const std::vector<PoseRepeat>& repeats);
+
 // The verdict's sentence when a pose taken again moved more than noise explains and the fit does
-// not explain it either: "limited by a pose that read differently when taken again: ...".
+// not explain it either: "limited by a pose that read differently when taken again: ..." (the
+// pose's whole path when it was taken again more than once).
 std::string PoseRepeatLimitWords(const PoseRepeat& repeat);
+std::string PoseRepeatLimitWords(const std::vector<PoseRepeat>& repeats, const std::string& label);
 
 }  // namespace accelcal

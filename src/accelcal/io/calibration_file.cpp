@@ -132,6 +132,21 @@ Eigen::Vector3d ReadTriad(const json& j, const std::string& key, const std::stri
 }
 
 // [x, y, z] with null entries as NaN; absent or null as all NaN.
+// One entry of "pose_repeats": a pose taken again against its first capture.
+PoseRepeat ReadPoseRepeat(const json& j, size_t i, const std::string& source) {
+  const std::string p = fmt::format("pose_repeats[{}].", i);
+  if (!j.is_object()) FailField(source, fmt::format("pose_repeats[{}]", i), "must be an object");
+  PoseRepeat r;
+  r.label = OptionalString(j, "label", p, source);
+  r.first_id = static_cast<int>(OptionalInteger(j, "first_id", p, source, 0));
+  r.again_id = static_cast<int>(OptionalInteger(j, "again_id", p, source, 0));
+  r.elapsed_s = OptionalFinite(j, "elapsed_s", p, source);
+  r.moved_counts = RequiredFinite(j, "moved_counts", p, source);
+  r.noise_counts = RequiredFinite(j, "noise_counts", p, source);
+  r.beyond_noise = OptionalBool(j, "beyond_noise", p, source, false);
+  return r;
+}
+
 Eigen::Vector3d OptionalTriad(const json& j, const std::string& key, const std::string& path,
                               const std::string& source) {
   Eigen::Vector3d out = Eigen::Vector3d::Constant(NAN);
@@ -415,6 +430,11 @@ Calibration CalibrationFromJson(const json& j, const std::string& source) {
       cal.limited_by.push_back({OptionalString(l[i], "kind", lp, source), OptionalString(l[i], "words", lp, source)});
     }
   }
+  if (j.contains("pose_repeats") && !j.at("pose_repeats").is_null()) {
+    const json& l = j.at("pose_repeats");
+    if (!l.is_array()) FailField(source, "pose_repeats", "must be an array");
+    for (size_t i = 0; i < l.size(); ++i) cal.pose_repeats.push_back(ReadPoseRepeat(l[i], i, source));
+  }
   return cal;
 }
 
@@ -451,6 +471,14 @@ json CalibrationToJson(const Calibration& cal) {
     json limits = json::array();
     for (const UncertaintyLimit& l : cal.limited_by) limits.push_back({{"kind", l.kind}, {"words", l.words}});
     out["limited_by"] = limits;
+  }
+  if (!cal.pose_repeats.empty()) {
+    json repeats = json::array();
+    for (const PoseRepeat& r : cal.pose_repeats)
+      repeats.push_back({{"label", r.label}, {"first_id", r.first_id}, {"again_id", r.again_id},
+                         {"elapsed_s", JsonNumber(r.elapsed_s)}, {"moved_counts", JsonNumber(r.moved_counts)},
+                         {"noise_counts", JsonNumber(r.noise_counts)}, {"beyond_noise", r.beyond_noise}});
+    out["pose_repeats"] = repeats;
   }
   return out;
 }

@@ -368,6 +368,9 @@ std::string NoiseAndDrift(const ReportModel& m) {
   out += fmt::format("<p>Temperature range covered: {}</p>\n",
                      std::isfinite(m.temp_min_c) ? fmt::format("{:.2f} &ndash; {:.2f} &deg;C", m.temp_min_c, m.temp_max_c)
                                                  : OrNot(""));
+  for (const std::string& path : m.pose_repeat_paths)
+    out += "<p>Reference pose taken again: " + E(path) +
+           " (counts of the mean scale; a drift or a wandering bias over the session)</p>\n";
   if (m.noise) {
     const std::string u = Unit(m.noise->unit);
     out += fmt::format("<p class=\"note\">Noise analysis ({}).</p>\n<table><tr><th>Axis</th><th class=\"n\">Std ({})</th>"

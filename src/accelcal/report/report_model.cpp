@@ -194,6 +194,8 @@ ReportModel BuildReportModel(const ReportInputs& in) {
 
   for (const CalibrationEffect& e : cal.effects) m.effects.push_back(MakeReportEffect(e));
   if (cal.diagnosis && cal.diagnosis->ran) m.diagnosis_conclusion = cal.diagnosis->conclusion;
+  for (const std::string& label : RepeatedPoseLabels(cal.pose_repeats))
+    m.pose_repeat_paths.push_back(DescribePoseRepeatPath(cal.pose_repeats, label));
   m.stages = Stages(cal, m.captures);
 
   m.noise = in.noise;

@@ -171,6 +171,10 @@ struct ReportModel {
   std::vector<ResidualStage> stages; // base first; only the final one from a file alone
   std::vector<ReportEffect> effects; // adopted, in order
   std::string diagnosis_conclusion;  // the diagnosis in a paragraph; empty when it did not run
+  // How far each pose taken again (a reference pose repeated between the turntable runs and at
+  // the end) moved since its first capture, one sentence per pose (pose_repeat.h's path); empty
+  // when no pose was taken twice.
+  std::vector<std::string> pose_repeat_paths;
   double temp_min_c = kNaN;          // over all samples of all captures; NaN: not recorded
   double temp_max_c = kNaN;
   std::optional<NoiseSection> noise;

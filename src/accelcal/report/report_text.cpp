@@ -185,6 +185,9 @@ std::string NoiseAndDrift(const ReportModel& m) {
   out += fmt::format("  {:<28}{}\n", "Temperature range covered:",
                      std::isfinite(m.temp_min_c) ? fmt::format("{:.2f} .. {:.2f} degC", m.temp_min_c, m.temp_max_c)
                                                  : std::string(kNotRecorded));
+  for (const std::string& path : m.pose_repeat_paths)
+    out += Wrap("  Reference pose taken again: ", Clean(path) + " (counts of the mean scale; a drift or a "
+                "wandering bias over the session)", 4);
   if (m.noise) {
     const std::string u = Clean(m.noise->unit);
     out += "\n" + Wrap("  Noise (", fmt::format("{}): std in {}, density in {}/sqrt(Hz)", Clean(m.noise->source), u, u), 4);

@@ -1,5 +1,5 @@
-// The closing repeat pose (kind "repeat", app/wizard/steps/repeat_step.cpp): the full procedure
-// takes its first pose again at the end, the capture goes into the fit, and the wizard says how
+// The repeat pose (kind "repeat", app/wizard/steps/repeat_step.cpp): the full procedure takes its
+// first pose again after the +x and the +y turntable runs (on the stopped table) and at the end, the capture goes into the fit, and the wizard says how
 // far the reading moved against the noise. The kind is defined only in its controller's file and
 // registered by one line (step_registry.cpp); the procedure reader knows it once registered
 // (test_main.cpp, as the program's main).
@@ -34,7 +34,7 @@ TEST(ProcedureTest, FullCalibrationLoads) {
   EXPECT_EQ(Count(p, "level"), 1);
   EXPECT_EQ(Count(p, "static"), 9);
   EXPECT_EQ(Count(p, "turntable"), 9);
-  EXPECT_EQ(Count(p, "repeat"), 1);
+  EXPECT_EQ(Count(p, "repeat"), 3);  // after the +x runs, after the +y runs, at the end
   EXPECT_EQ(Count(p, "fit"), 1);
   EXPECT_EQ(Count(p, "diagnosis"), 1);
   EXPECT_EQ(Count(p, "report"), 1);
@@ -73,6 +73,21 @@ TEST(RepeatStep, TakesTheEarlierPoseAndIsACaptureForTheFit) {
   EXPECT_EQ(StepKindToString((again + 1)->kind), "fit");
 }
 
+// Between the turntable runs: on the stopped table, right after the +x and the +y runs (each
+// mounted with +z up), so the sensor is not remounted.
+TEST(RepeatStep, BetweenTheTurntableRunsOnTheStoppedTable) {
+  const Procedure p = LoadProcedure(Shipped("full_calibration.toml"));
+  std::vector<std::string> after;
+  for (size_t i = 1; i < p.steps.size(); ++i)
+    if (p.steps[i].title == "+z up again, on the stopped turntable") {
+      EXPECT_EQ(p.steps[i - 1].kind, StepKind::kTurntable);
+      EXPECT_EQ(p.steps[i - 1].up_axis, SensorAxis::kPlusZ);
+      EXPECT_TRUE(p.steps[i].up.isApprox(Eigen::Vector3d::UnitZ()));
+      after.push_back(p.steps[i - 1].id);
+    }
+  EXPECT_EQ(after, (std::vector<std::string>{"tt_x_150", "tt_y_150"}));
+}
+
 constexpr const char* kTwoPoses = R"(
 title = "t"
 [sensor]
@@ -105,6 +120,40 @@ std::string Refusal(const std::string& of) {
   return "accepted";
 }
 
+// `on`: "prism" (the default) or "turntable", and on the turntable only right after a run that
+// holds the pose's up axis up.
+TEST(RepeatStep, OnTheTurntableOnlyRightAfterARunWithThePosesAxisUp) {
+  auto read = [](const std::string& on, const std::string& up_axis) -> std::string {
+    std::string text = kTwoPoses;
+    text.replace(text.find("OF"), 2, "pose_pz");
+    text += "on = \"" + on + "\"\n";
+    text.replace(text.find("rpm = 120"), 9, "rpm = 120\nradial = \"+x\"\nup_axis = \"" + up_axis + "\"");
+    try {
+      const Procedure p = ParseProcedure(text, "p.toml");
+      return p.steps.back().title;
+    } catch (const InputError& e) {
+      return e.what();
+    }
+  };
+  EXPECT_EQ(read("turntable", "+z"), "+z up again, on the stopped turntable");
+  EXPECT_EQ(read("prism", "+z"), "+z up again");
+  EXPECT_NE(read("turntable", "-y").find("step 3.on: the turntable run before holds another axis up than '+z up'"),
+            std::string::npos) << read("turntable", "-y");
+  EXPECT_NE(read("table", "+z").find("step 3.on: 'table' is neither \"prism\" nor \"turntable\""), std::string::npos)
+      << read("table", "+z");
+  // Right after a static pose: nothing is mounted on the table.
+  std::string text = kTwoPoses;
+  text.replace(text.find("OF"), 2, "pose_pz");
+  text += "[[step]]\nid = \"again2\"\nkind = \"repeat\"\nof = \"pose_pz\"\non = \"turntable\"\n";
+  try {
+    ParseProcedure(text, "p.toml");
+    FAIL() << "a repeat on the turntable after a static pose was read";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("step 4.on: \"turntable\" needs a turntable run right before the repeat"),
+              std::string::npos) << e.what();
+  }
+}
+
 TEST(RepeatStep, OfMustNameAnEarlierStaticPose) {
   EXPECT_EQ(Refusal("pose_pz"), "accepted");
   EXPECT_NE(Refusal("tt").find("step 3.of: 'tt' is not an earlier static pose"), std::string::npos) << Refusal("tt");
@@ -124,6 +173,7 @@ TEST(RepeatStep, OfMustNameAnEarlierStaticPose) {
 }
 
 bool AtRepeat(const WizardView& v) { return v.step_title == "+z up again"; }
+bool AtTableRepeat(const WizardView& v) { return v.step_title == "+z up again, on the stopped turntable"; }
 bool AtFit(const WizardView& v) { return v.step_title == "Fit the nine-parameter model"; }
 
 TEST(RepeatStep, AStillSensorReadsAsBeforeAndTheSessionPasses) {
@@ -139,8 +189,34 @@ TEST(RepeatStep, AStillSensorReadsAsBeforeAndTheSessionPasses) {
   EXPECT_NE(notice.find("; since the first time the reading moved "), std::string::npos) << notice;
   EXPECT_NE(notice.find("within its noise"), std::string::npos) << notice;
   testing::AcceptUntil(rig.engine, testing::Never);
-  EXPECT_EQ(rig.journal->Captures().size(), 19u);
+  EXPECT_EQ(rig.journal->Captures().size(), 21u);
   EXPECT_EQ(rig.engine.View().verdict, "PASS");
+}
+
+// On the stopped turntable (the virtual bench keeps the sensor seated as it was mounted for the
+// run, its seat's own placement error and the table's angle): the reading along gravity agrees
+// with the prism's first pose within noise, so the seat does not pass for a drift. Every repeat
+// is compared with the first; the report says the reference pose's path.
+TEST(RepeatStep, OnTheStoppedTurntableAStillSensorReadsAsOnThePrism) {
+  testing::WizardRig rig(testing::FullProcedure(), sim::DefaultScenario());
+  for (int k = 0; k < 2; ++k) {
+    testing::AcceptUntil(rig.engine, AtTableRepeat);
+    const WizardView place = rig.engine.View();
+    EXPECT_EQ(place.prompt, "The first pose again (+z up), on the turntable: stop the table and leave the sensor as "
+                            "it is mounted; what moved since the first time is measured. Press Enter to capture.");
+    rig.engine.Handle({IntentKind::kAccept, ""});
+    testing::AcceptUntil(rig.engine, [](const WizardView& v) { return !testing::Busy(v) && !AtTableRepeat(v); });
+    const std::string notice = rig.engine.View().notice;
+    EXPECT_NE(notice.find("+z up done:"), std::string::npos) << notice;
+    EXPECT_NE(notice.find("; since the first time the reading moved "), std::string::npos) << notice;
+    EXPECT_NE(notice.find("within its noise"), std::string::npos) << notice;
+  }
+  testing::AcceptUntil(rig.engine, [](const WizardView& v) { return v.screen == WizardScreen::kReport; });
+  const std::vector<std::string> lines = rig.engine.View().lines;
+  std::string all;
+  for (const std::string& l : lines) all += l + " ";
+  EXPECT_NE(all.find("+z up, taken again 3 times, moved along gravity since the first time:"), std::string::npos) << all;
+  EXPECT_NE(all.find("within noise"), std::string::npos) << all;
 }
 
 TEST(RepeatStep, ADriftIsMeasuredAndSaid) {

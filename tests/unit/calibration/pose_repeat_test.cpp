@@ -73,22 +73,38 @@ TEST(PoseRepeat, APrismSetDownAgainSlightlyOffHasNotMoved) {
   EXPECT_LT(std::abs(r.moved_counts), 0.2);
 }
 
-TEST(PoseRepeat, FoundInACaptureSetByLabelLatestAgainstFirst) {
+// Taken again between the turntable runs and at the end: each repeat against the first, a path.
+TEST(PoseRepeat, FoundInACaptureSetByLabelEveryRepeatAgainstTheFirst) {
   std::vector<Capture> set = {StillCapture(1, "+z up", 0.0, kUp, 1.5, 1),
                               StillCapture(2, "-z up", 30.0, kUp, 1.5, 2),
-                              StillCapture(3, "+z up", 60.0, kUp, 1.5, 3),
-                              StillCapture(4, "+z up", 90.0, kUp + Eigen::Vector3d(0, 0, 3), 1.5, 4)};
+                              StillCapture(3, "+z up", 300.0, kUp, 1.5, 3),
+                              StillCapture(4, "+z up", 600.0, kUp + Eigen::Vector3d(0, 0, 3), 1.5, 4)};
   std::vector<PoseRepeat> found = FindPoseRepeats(set, Rough());
-  ASSERT_EQ(found.size(), 1u);
+  ASSERT_EQ(found.size(), 2u);
   EXPECT_EQ(found[0].first_id, 1);
-  EXPECT_EQ(found[0].again_id, 4);
-  EXPECT_TRUE(found[0].beyond_noise);
-  // A capture left out of the fit is not compared.
+  EXPECT_EQ(found[0].again_id, 3);
+  EXPECT_FALSE(found[0].beyond_noise);
+  EXPECT_NEAR(found[0].elapsed_s, 300.0, 1e-6);
+  EXPECT_EQ(found[1].first_id, 1);
+  EXPECT_EQ(found[1].again_id, 4);
+  EXPECT_TRUE(found[1].beyond_noise);
+  EXPECT_NEAR(found[1].moved_counts, 3.0, 0.25);
+  // The path in words: each move signed, with its time since the first.
+  EXPECT_EQ(RepeatedPoseLabels(found), std::vector<std::string>{"+z up"});
+  const std::string path = DescribePoseRepeatPath(found, "+z up");
+  EXPECT_NE(path.find("+z up, taken again 2 times"), std::string::npos) << path;
+  EXPECT_NE(path.find("counts after 5 min, +3.0 counts after 10 min"), std::string::npos) << path;
+  EXPECT_NE(path.find("at most 3.0 counts, more than noise explains"), std::string::npos) << path;
+  EXPECT_TRUE(DescribePoseRepeatPath(found, "-z up").empty());
+  // A capture left out of the fit is not compared; the pose's first used capture is the reference.
   set[3].rejection_reason = "bumped";
   found = FindPoseRepeats(set, Rough());
   ASSERT_EQ(found.size(), 1u);
   EXPECT_EQ(found[0].again_id, 3);
   EXPECT_FALSE(found[0].beyond_noise);
+  set[0].rejection_reason = "bumped";
+  EXPECT_TRUE(FindPoseRepeats(set, Rough()).empty());
+  set[0].rejection_reason.clear();
   set[2].rejection_reason = "bumped";
   EXPECT_TRUE(FindPoseRepeats(set, Rough()).empty());
 }

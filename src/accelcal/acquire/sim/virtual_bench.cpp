@@ -130,6 +130,21 @@ Mounting VirtualBench::BeginCapture(const CapturePlan& plan, double start_s) {
   return m;
 }
 
+Mounting VirtualBench::StopTurntable(const Mounting& running, double t_s) const {
+  Mounting m;
+  m.kind = CaptureKind::kStatic;
+  m.start_s = t_s;
+  if (running.kind != CaptureKind::kTurntable) {
+    m.platform_rotation = running.platform_rotation;
+    return m;
+  }
+  // Platform to world as SpecificForceAt turns it: table to world after the seat.
+  const double angle = running.phase_rad + running.omega_rad_per_s * (t_s - running.start_s);
+  m.platform_rotation = Eigen::AngleAxisd(running.turntable_tilt_rad, Eigen::Vector3d::UnitX()) *
+                        Eigen::AngleAxisd(angle, Eigen::Vector3d::UnitZ()) * running.platform_rotation;
+  return m;
+}
+
 Mounting VirtualBench::BeginCapture(int plan_index, double start_s) {
   Mounting m = BeginCapture(scenario_.captures.at(static_cast<std::size_t>(plan_index)), start_s);
   for (const Bump& bump : scenario_.effects.bumps) {

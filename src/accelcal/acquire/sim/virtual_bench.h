@@ -88,6 +88,10 @@ class VirtualBench {
   // Same for a plan entry that is not in the scenario (no bumps apply).
   Mounting BeginCapture(const CapturePlan& plan, double start_s);
 
+  // The turntable of `running` stopped at session time t_s: a static mounting that keeps the
+  // sensor as it was mounted (its seat, the table's angle at t_s, the spin axis's tilt).
+  Mounting StopTurntable(const Mounting& running, double t_s) const;
+
   // Specific force at the nominal sensing point in the platform frame, m/s^2.
   Eigen::Vector3d SpecificForcePlatform(const Mounting& mounting, double t_s) const;
   // Column i: specific force in the platform frame at axis i's proof mass (size effect), m/s^2.

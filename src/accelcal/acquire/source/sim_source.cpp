@@ -117,7 +117,6 @@ void SimSource::PlaceTurntable(double radius_m, double rpm, sim::SensorAxis radi
 
 void SimSource::PlaceAsked(const sim::CapturePlan& asked) {
   const sim::Deed deed = technician_.Place(asked);
-  if (deed.placed.kind == CaptureKind::kTurntable) turntable_up_ = deed.placed.up_axis;
   Place(deed.placed, true);
   if (std::isfinite(deed.bump_at_s))
     ScheduleBump(settle_end_s_ + deed.bump_at_s, deed.bump_peak_mps2, deed.bump_duration_s);
@@ -125,11 +124,12 @@ void SimSource::PlaceAsked(const sim::CapturePlan& asked) {
 
 void SimSource::StopTurntable() {
   if (mounting_.kind != CaptureKind::kTurntable) return;
-  // The table stops with the sensor on it: not a request to the technician.
-  sim::CapturePlan rest;
-  rest.kind = CaptureKind::kStatic;
-  rest.up = sim::SensorAxisVector(turntable_up_);
-  Place(rest, true);
+  // The table stops with the sensor on it, seated as it was mounted: not a request to the
+  // technician. The stop shakes it like a hand letting go.
+  mounting_ = bench_.StopTurntable(mounting_, now_s());
+  turn_from_ = Eigen::Quaterniond(mounting_.platform_rotation);
+  ScheduleSettle(true);
+  MaybeScheduleBump();
 }
 
 void SimSource::AdjustTableFeet(const Eigen::Vector2d& tilt_deg) {

@@ -89,7 +89,6 @@ class SimSource final : public SampleSource, public BenchControl {
   double wall_origin_s_;           // wall time at which sample 0 (t = 0) was due, s
   double last_burst_wall_s_ = -1e300;  // wall time of the last paced delivery, s
   long bumps_scheduled_ = 0;
-  sim::SensorAxis turntable_up_ = sim::SensorAxis::kPlusZ;  // of the latest turntable mounting
 };
 
 }  // namespace accelcal

@@ -1,5 +1,8 @@
 // A pose of the prism taken again (kind "repeat", `of` = an earlier static step's id), at the end
-// of the session or between turntable runs: what moved since the first time is measured rather
+// of the session or between turntable runs (`on = "turntable"`: on the stopped turntable, the
+// sensor left as it was mounted for the run before, which must hold the pose's up axis up: no
+// remounting, the technician's time spent is the capture alone; the comparison is along gravity,
+// which a different seat does not move to first order, calibration/pose_repeat.h): what moved since the first time is measured rather
 // than guessed (a drift or a wandering bias, a sensor not yet warm, hysteresis after the
 // turntable, a prism or mount that moved). The step takes the earlier step's pose, capture length
 // and timeout. Its capture is kept for the fit like any pose: a disagreement between the two is
@@ -14,6 +17,7 @@
 
 #include <fmt/core.h>
 
+#include "accelcal/acquire/source/bench_control.h"
 #include "accelcal/app/wizard/pose_setting.h"
 #include "accelcal/app/wizard/settling_wait.h"
 #include "accelcal/app/wizard/step_registry.h"
@@ -27,6 +31,7 @@ namespace {
 
 struct RepeatFields final : StepOwnFields {
   std::string of;  // the earlier static step whose pose is taken again
+  bool on_turntable = false;  // on the stopped turntable, as mounted for the run before
 };
 
 const RepeatFields& RepeatOf(const ProcedureStep& step) {
@@ -36,7 +41,19 @@ const RepeatFields& RepeatOf(const ProcedureStep& step) {
 void ReadRepeatFields(StepFields& fields, ProcedureStep& step, const StepDefaults&) {
   auto own = std::make_shared<RepeatFields>();
   own->of = fields.Text("of", std::nullopt);
+  const std::string on = fields.Text("on", std::string("prism"));
+  if (on != "prism" && on != "turntable") fields.Fail("on", "'" + on + "' is neither \"prism\" nor \"turntable\"");
+  own->on_turntable = on == "turntable";
   step.own_fields = std::move(own);
+}
+
+// On the turntable: the step before is a turntable run whose up axis is the pose's up, so the
+// stopped table holds the sensor in the pose without remounting.
+void CheckTurntableSeat(const ProcedureStep& step, const std::vector<ProcedureStep>& earlier, StepFields& fields) {
+  if (earlier.empty() || earlier.back().kind != StepKind::kTurntable)
+    fields.Fail("on", "\"turntable\" needs a turntable run right before the repeat");
+  if (SensorAxisVector(earlier.back().up_axis).dot(step.up) < 1.0 - 1e-9)
+    fields.Fail("on", "the turntable run before holds another axis up than '" + step.pose_name + "'");
 }
 
 // `of` names an earlier static pose: the repeat takes its pose, its capture length and timeout,
@@ -51,7 +68,9 @@ void CompleteRepeat(ProcedureStep& step, const std::vector<ProcedureStep>& earli
   step.pose_name = first->pose_name;
   step.duration_s = first->duration_s;
   step.timeout_s = first->timeout_s;
-  if (!fields.Has("title")) step.title = first->pose_name + " again";
+  if (!fields.Has("title"))
+    step.title = first->pose_name + (RepeatOf(step).on_turntable ? " again, on the stopped turntable" : " again");
+  if (RepeatOf(step).on_turntable) CheckTurntableSeat(step, earlier, fields);
 }
 
 // ---- the controller -------------------------------------------------------------------------------
@@ -82,8 +101,21 @@ class RepeatStep final : public AcquiringStep {
     session_.sequence.ContinueFromFirstOpenStep();
   }
 
+  // On the turntable: the table stops with the sensor as mounted (the virtual bench's too).
+  void PlaceOnBench() override {
+    if (!RepeatOf(step_).on_turntable) return AcquiringStep::PlaceOnBench();
+    if (BenchControl* bench = session_.source.bench()) bench->StopTurntable();
+  }
+
   void SetPlaceView(WizardView& v) const override {
     v.screen = WizardScreen::kPlacePose;
+    if (RepeatOf(step_).on_turntable) {
+      v.prompt = fmt::format("The first pose again ({}), on the turntable: stop the table and leave the sensor "
+                             "as it is mounted; what moved since the first time is measured. Press Enter to capture.",
+                             step_.pose_name);
+      v.keys = WithNavigation({{"Enter", "capture"}});
+      return;
+    }
     const std::string how = IsTiltedPose(step_.up) ? "Set the prism " + PrismSetting(step_.up, step_.pose_name)
                                                    : "Put the prism on the table with " + step_.pose_name;
     v.prompt = fmt::format("{} again, as for the first pose, and let go: what moved since is measured. "
@@ -92,11 +124,16 @@ class RepeatStep final : public AcquiringStep {
   }
 };
 
+// On the stopped turntable nothing is placed: the settle window and the capture.
+double RepeatEstimateS(const ProcedureStep& step, const TimeAllowances& a) {
+  return RepeatOf(step).on_turntable ? a.settle_s + step.duration_s : PlacedStepEstimateS(step, a);
+}
+
 }  // namespace
 
 StepKindDefinition RepeatStepKind() {
   return {{"repeat", StepAcquires::kStaticCapture, true, false, "", &ReadRepeatFields, &CompleteRepeat},
-          {StepKind{}, &MakeStepController<RepeatStep>, &PlacedStepEstimateS, nullptr, nullptr}};
+          {StepKind{}, &MakeStepController<RepeatStep>, &RepeatEstimateS, nullptr, nullptr}};
 }
 
 }  // namespace accelcal
