@@ -21,7 +21,7 @@ short_procedure
 # The clumsy bench's wrong radius, 106 mm instead of 150: asked for +y radial at 0.10 m.
 sed -e 's/^radius_m = 0.15 .*/radius_m = 0.106/' "$source_dir/scenarios/clumsy_wrong_radius.toml" > "$work/r106.toml"
 grep -q '^radius_m = 0.106' "$work/r106.toml" || fail "no mounting to change"
-offer="The fit left out '+y radial, +z up at 100 mm, 120 rpm' (capture 14)"
+offer="The fit left out '+y radial, +z up at 100 mm, 120 rpm' (capture 15)"
 
 # Declined.
 printf 'enter_until %s\nsend n\n' "$offer" > "$work/technician"
@@ -32,10 +32,10 @@ timeout 120 python3 "$source_dir/tests/e2e/lib/answer_when_asked.py" "$work/tech
 code=$?
 set -e
 [ "$code" -eq 0 ] || { tail -30 "$work/out" >&2; fail "the declined session did not end (status $code)"; }
-said "Left out: capture 14 (+y radial, +z up at 100 mm, 120 rpm): disagrees with the other captures"
+said "Left out: capture 15 (+y radial, +z up at 100 mm, 120 rpm): disagrees with the other captures"
 said "Enter takes it again now (recommended"
 said "Verdict: INCOMPLETE"
-said "incomplete: required step '+y radial, +z up at 100 mm, 120 rpm' its capture 14 was left out by the fit"
+said "incomplete: required step '+y radial, +z up at 100 mm, 120 rpm' its capture 15 was left out by the fit"
 said "take '+y radial, +z up at 100 mm, 120 rpm' again, mounted as asked"
 said "Calibration recorded, but INCOMPLETE"
 ! grep -q "Calibration complete" "$work/out" || fail "an INCOMPLETE session said 'Calibration complete'"
@@ -43,7 +43,7 @@ said "Calibration recorded, but INCOMPLETE"
 for report in "$work/s.report.txt" "$work/later.txt"; do
   cp "$report" "$work/report"
   flat "$work/report" "Result: INCOMPLETE" || fail "the report is not INCOMPLETE"
-  flat "$work/report" "+y radial, +z up at 100 mm, 120 rpm (tt_y_100, required): its capture 14 was left out by the fit" ||
+  flat "$work/report" "+y radial, +z up at 100 mm, 120 rpm (tt_y_100, required): its capture 15 was left out by the fit" ||
     fail "the report does not name the run left out"
   ! grep -q "Every step of the procedure was done" "$work/report" || fail "the report says every step was done"
 done
@@ -53,7 +53,7 @@ done
 # runs and once at the end), so the retake is capture 22.
 wizard bench_default.toml "$work/s.db" ''
 said "$offer"
-said "taken again: capture 22 replaces capture 14"
+said "taken again: capture 22 replaces capture 15"
 said "Verdict: PASS"
 said "Calibration complete."
 "$accelcal" report "$work/s.db" > "$work/report"
@@ -62,6 +62,6 @@ flat "$work/report" "Result: PASS" || fail "the session's report after the run w
 # A new session, Enter everywhere: taken again at once.
 wizard "$work/r106.toml" "$work/new.db" ''
 said "$offer"
-said "taken again: capture 22 replaces capture 14"
+said "taken again: capture 22 replaces capture 15"
 said "Verdict: PASS"
 echo "left_out_run: ok"

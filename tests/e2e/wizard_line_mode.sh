@@ -19,8 +19,11 @@ code=${PIPESTATUS[1]}
 set -e
 [[ $code -eq 0 ]] || fail "exit $code: $(cat "$work/err")"
 grep -q '21 captures fitted: they agree with one calibration' "$work/out" || fail "the fit did not use 21 captures"
-grep -q '^\[24/24\] Done' "$work/out" || fail "the wizard did not reach the end"
+grep -q '^\[26/26\] Done' "$work/out" || fail "the wizard did not reach the end"
 grep -q 'Calibration complete' "$work/out" || fail "no completion message"
+# The reference pose taken again after the +x and the +y runs and at the end: its path in the report.
+tr -s ' \n' ' ' < "$work/s.report.txt" | grep -q 'Reference pose taken again: +z up, taken again 3 times, moved along gravity since the first time:' ||
+  fail "the report does not state how far the reference pose moved"
 grep -q 'misalignment (mrad)  yz ' "$work/out" || fail "no misalignment in the summary"
 # The statistics are one key away, not on the technician's screens (issue 27, item 9).
 ! grep -q 'chi2/dof\|NLopt\|condition number' "$work/out" || fail "the fit's statistics on a plain screen"

@@ -9,6 +9,7 @@
 
 #include "accelcal/acquire/sim/scenario.h"
 #include "accelcal/base/error.h"
+#include "accelcal/io/calibration_file.h"
 #include "accelcal/io/procedure_file.h"
 #include "wizard_test_support.h"
 
@@ -211,12 +212,14 @@ TEST(RepeatStep, OnTheStoppedTurntableAStillSensorReadsAsOnThePrism) {
     EXPECT_NE(notice.find("; since the first time the reading moved "), std::string::npos) << notice;
     EXPECT_NE(notice.find("within its noise"), std::string::npos) << notice;
   }
-  testing::AcceptUntil(rig.engine, [](const WizardView& v) { return v.screen == WizardScreen::kReport; });
-  const std::vector<std::string> lines = rig.engine.View().lines;
-  std::string all;
-  for (const std::string& l : lines) all += l + " ";
-  EXPECT_NE(all.find("+z up, taken again 3 times, moved along gravity since the first time:"), std::string::npos) << all;
-  EXPECT_NE(all.find("within noise"), std::string::npos) << all;
+  testing::AcceptUntil(rig.engine, testing::Never);
+  ASSERT_TRUE(rig.journal->Result().has_value());
+  const Calibration cal = CalibrationFromJsonText(*rig.journal->Result(), "result");
+  ASSERT_EQ(cal.pose_repeats.size(), 3u);
+  for (const PoseRepeat& r : cal.pose_repeats) EXPECT_FALSE(r.beyond_noise) << DescribePoseRepeat(r);
+  const std::string path = DescribePoseRepeatPath(cal.pose_repeats, "+z up");
+  EXPECT_NE(path.find("+z up, taken again 3 times, moved along gravity since the first time:"), std::string::npos) << path;
+  EXPECT_NE(path.find("within noise"), std::string::npos) << path;
 }
 
 TEST(RepeatStep, ADriftIsMeasuredAndSaid) {
@@ -227,6 +230,16 @@ TEST(RepeatStep, ADriftIsMeasuredAndSaid) {
   const std::string notice = rig.engine.View().notice;
   EXPECT_NE(notice.find("; since the first time the reading moved "), std::string::npos) << notice;
   EXPECT_NE(notice.find("more than its noise"), std::string::npos) << notice;
+  // The fit uses the repeats: the diagnosis finds the drift over the session's time (the
+  // reference pose's three repeats span it), and the calibration keeps the path.
+  testing::AcceptUntil(rig.engine, testing::Never);
+  ASSERT_TRUE(rig.journal->Result().has_value());
+  const Calibration cal = CalibrationFromJsonText(*rig.journal->Result(), "result");
+  EXPECT_EQ(cal.EffectNames(), std::vector<std::string>{"bias_drift"});
+  ASSERT_EQ(cal.pose_repeats.size(), 3u);
+  for (const PoseRepeat& r : cal.pose_repeats) EXPECT_EQ(r.label, "+z up");
+  EXPECT_LT(cal.pose_repeats[0].elapsed_s, cal.pose_repeats[1].elapsed_s);
+  EXPECT_LT(cal.pose_repeats[1].elapsed_s, cal.pose_repeats[2].elapsed_s);
 }
 
 }  // namespace

@@ -90,6 +90,39 @@ TEST(CalibrationFile, GravityAndItsUncertaintyRoundTrip) {
   EXPECT_NE(Expect(j).find("gravity_source.sigma_mps2"), std::string::npos) << Expect(j);
 }
 
+// The reference pose's path (pose_repeats): each repeat against the first, read back as written;
+// a file without it (written before) has none; a move that is not a number is refused.
+TEST(CalibrationFile, PoseRepeatsRoundTrip) {
+  Calibration cal = Example();
+  EXPECT_FALSE(CalibrationToJson(cal).contains("pose_repeats"));
+  PoseRepeat r;
+  r.label = "+z up";
+  r.first_id = 1;
+  r.again_id = 13;
+  r.elapsed_s = 512.5;
+  r.moved_counts = -0.625;
+  r.noise_counts = 0.0625;
+  r.beyond_noise = true;
+  cal.pose_repeats = {r, r};
+  cal.pose_repeats[1].again_id = 21;
+  cal.pose_repeats[1].beyond_noise = false;
+  const Calibration back = CalibrationFromJson(CalibrationToJson(cal), "cal.json");
+  ASSERT_EQ(back.pose_repeats.size(), 2u);
+  EXPECT_EQ(back.pose_repeats[0].label, "+z up");
+  EXPECT_EQ(back.pose_repeats[0].first_id, 1);
+  EXPECT_EQ(back.pose_repeats[0].again_id, 13);
+  EXPECT_DOUBLE_EQ(back.pose_repeats[0].elapsed_s, 512.5);
+  EXPECT_DOUBLE_EQ(back.pose_repeats[0].moved_counts, -0.625);
+  EXPECT_DOUBLE_EQ(back.pose_repeats[0].noise_counts, 0.0625);
+  EXPECT_TRUE(back.pose_repeats[0].beyond_noise);
+  EXPECT_EQ(back.pose_repeats[1].again_id, 21);
+  EXPECT_FALSE(back.pose_repeats[1].beyond_noise);
+  EXPECT_TRUE(CalibrationFromJson(CalibrationToJson(Example()), "cal.json").pose_repeats.empty());
+  json j = CalibrationToJson(cal);
+  j["pose_repeats"][1]["moved_counts"] = "far";
+  EXPECT_NE(Expect(j).find("pose_repeats[1].moved_counts"), std::string::npos) << Expect(j);
+}
+
 TEST(CalibrationFile, ASessionResultCarriesItsGaps) {
   SessionGaps gaps;
   gaps.steps.push_back({"pose_mx", "-x up", "skipped", true});
