@@ -77,7 +77,7 @@ TEST(WizardVerdict, TheRunLeftOutIsOfferedAtTheReportAndTakenAgainOnEnter) {
   testing::AcceptUntil(rig.engine, OffersTheRetake);
   const WizardView offer = rig.engine.View();
   ASSERT_TRUE(OffersTheRetake(offer)) << offer.prompt;
-  EXPECT_TRUE(Contains(offer.prompt, "'+y radial, +z up at 100 mm, 120 rpm' (capture 14)")) << offer.prompt;
+  EXPECT_TRUE(Contains(offer.prompt, "'+y radial, +z up at 100 mm, 120 rpm' (capture 15)")) << offer.prompt;
   EXPECT_TRUE(Contains(offer.prompt, "Enter takes it again now (recommended")) << offer.prompt;
   // The report's first screen starts with the verdict and says what to do.
   ASSERT_FALSE(offer.lines.empty());
