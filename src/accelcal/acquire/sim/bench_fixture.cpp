@@ -95,7 +95,9 @@ BenchFixture RowOfBoards(int n) {
   for (int i = 0; i < n; ++i) {
     FixtureBoard b;
     b.declared.serial = fmt::format("SIM{:02}", i + 1);
-    b.declared.offset_m = Eigen::Vector3d((i - 0.5 * (n - 1)) * kRowPitchM, 0.0, 0.0);
+    // Board (n + 1) / 2 at the reference point (the one whose turntable radius is the
+    // procedure's: the wizard's lead), the others either side.
+    b.declared.offset_m = Eigen::Vector3d((i - (n - 1) / 2) * kRowPitchM, 0.0, 0.0);
     f.boards.push_back(b);
   }
   return f;

@@ -61,8 +61,9 @@ struct BenchFixture {
 std::vector<SensorModel> FixtureTruths(const BenchFixture& fixture, const SensorModel& base,
                                        std::uint64_t seed);
 
-// What `--sensors N` makes: N healthy boards square to the plate, in a row 30 mm apart centred
-// on its reference point (along its x), serials SIM01, SIM02, ... Throws accelcal::Error for
+// What `--sensors N` makes: N healthy boards square to the plate, in a row 30 mm apart along
+// its x, board (N + 1) / 2 (integer division) at its reference point (centred for odd N; one
+// pitch further on +x for even N), serials SIM01, SIM02, ... Throws accelcal::Error for
 // n < 1 or n > 64.
 BenchFixture RowOfBoards(int n);
 
