@@ -12,9 +12,15 @@
 //              superseded_by (version 5: the step id of the capture that replaced this one when
 //              it was taken again; NULL: current. A mark set after the row was written, so it
 //              is outside the checksum)
+//              sensor (version 6: which of the session's sensors, 0 the first; UNIQUE
+//              (step_id, sensor) replaces step_id UNIQUE; covered by the checksum)
+//   sensors    (version 6) sensor PRIMARY KEY, serial UNIQUE, sensor_to_plate (9 numbers, row
+//              by row), offset_m (3 numbers), source, fixture_name, recorded_utc: the session's
+//              sensors (issue 31); no row: one sensor, the session's device
 //   inputs     (step_id, key) PRIMARY KEY, value, recorded_utc
 //   steps_done step_id PRIMARY KEY, outcome, recorded_utc
-//   results    seq, calibration_json (the calibration file's JSON text), recorded_utc
+//   results    seq, calibration_json (the calibration file's JSON text), recorded_utc, sensor
+//              (version 6: whose calibration; 0 the first)
 //   record_chunks  (step_id, chunk_index) PRIMARY KEY, n, t_first_s, t_last_s, wall_end_s,
 //              samples (BLOB, see sample_blob.h), recorded_utc, checksum (version 4): a record
 //              step's samples, one row per chunk (version 2)
@@ -25,7 +31,10 @@
 // the two record tables; versions 1 and 2 get the co-moment columns' names (they were called
 // cov_*, for values that were always the co-moment); versions 1 to 3 get the checksum columns,
 // filled for the rows they hold (row_checksum.h); versions 1 to 4 get captures.superseded_by
-// (NULL: no capture of theirs was ever taken again). A read-only open of an older file reads it
+// (NULL: no capture of theirs was ever taken again); versions 1 to 5 get captures.sensor and results.sensor (0:
+// every capture and result is the one sensor's) and the sensors table, the captures table rebuilt for its
+// UNIQUE (step_id, sensor) and its checksums computed anew (session_schema.cpp says how damage
+// is kept). A read-only open of an older file reads it
 // as it is (a version-1 file has no records; rows
 // of a file older than version 4 have no checksum to verify).
 //
@@ -38,7 +47,7 @@
 
 namespace accelcal::detail {
 
-inline constexpr int kSessionSchemaVersion = 5;
+inline constexpr int kSessionSchemaVersion = 6;
 inline constexpr int kSessionApplicationId = 0x41434331;  // "ACC1"
 
 // Creates the tables and the session row in a new, empty database (one transaction).
