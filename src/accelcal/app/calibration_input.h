@@ -47,7 +47,9 @@ struct SessionWithResult {
   SessionInfo info;
   std::string result_text;  // the calibration file's JSON, with the session's gaps beside it
 };
-SessionWithResult OpenSessionResult(const std::string& path);
+// `sensor`: which of a several-sensor session's sensors (0: the first, a one-sensor session's
+// only; Error naming the count when the session has no such sensor).
+SessionWithResult OpenSessionResult(const std::string& path, int sensor = 0);
 
 // The calibration of `input` and what is known of its origin.
 struct CalibrationInput {
@@ -57,7 +59,7 @@ struct CalibrationInput {
   Calibration calibration;             // strictly read (InputError naming the file or session)
   std::optional<SessionInfo> session;  // from a session: its device, operator, dates, procedure
 };
-CalibrationInput ReadCalibrationInput(const std::string& input);
-CalibrationInput ReadCalibrationInput(const LocatedCalibrationInput& at);
+CalibrationInput ReadCalibrationInput(const std::string& input, int sensor = 0);
+CalibrationInput ReadCalibrationInput(const LocatedCalibrationInput& at, int sensor = 0);
 
 }  // namespace accelcal
