@@ -22,6 +22,7 @@
 #include "cli/source_preflight.h"
 #include "cli/terminal_answers.h"
 #include "cli/gravity_options.h"
+#include "cli/wizard_fixture.h"
 #include "cli/wizard_journal.h"
 #include "cli/shipped_files.h"
 #include "frontend.h"
@@ -42,8 +43,9 @@ std::string DefaultOperator(bool sim) {
 
 int RunWizard(const WizardCommandOptions& options) {
   RefuseAbsentSerialPort(options.source);  // before the session file is created
-  const Procedure procedure = LoadProcedure(
-      options.procedure_path.empty() ? ShippedProcedurePath("full_calibration.toml") : options.procedure_path);
+  const std::string procedure_path =
+      options.procedure_path.empty() ? ShippedProcedurePath("full_calibration.toml") : options.procedure_path;
+  const Procedure procedure = LoadProcedure(procedure_path);
   // `--source -`: stdin carries the samples, so the answers come from the terminal (refused
   // here, before anything is opened or written, when there is none).
   std::unique_ptr<TerminalAnswers> tty;
@@ -52,23 +54,37 @@ int RunWizard(const WizardCommandOptions& options) {
   source_options.sim.speed = options.speed;
   source_options.seed = options.seed;
   if (!options.scenario_path.empty()) source_options.scenario = sim::LoadScenario(options.scenario_path);
-  std::unique_ptr<SampleSource> source = OpenSource(options.source, source_options);
-  PrepareVehicle(*source, options.vehicle_calibration, stdout);
-  if (!options.bench_control.empty())
+  // Several sensors at once (cli/wizard_fixture.h): asked for, or the scenario's plate.
+  const bool several = WantsFixture(options) || (source_options.scenario && source_options.scenario->fixture);
+  std::unique_ptr<SampleSource> source;
+  if (!several) source = OpenSource(options.source, source_options);
+  if (source) PrepareVehicle(*source, options.vehicle_calibration, stdout);
+  if (source && !options.bench_control.empty())
     source = WithRemoteBench(std::move(source), ParseHostPort(options.bench_control, options.bench_control,
                                                               "--bench-control HOST:PORT"));
   // A new session goes to the default session directory, where `accelcal sessions` looks.
   const std::string session = options.session_path.empty() ? NewSessionPath() : options.session_path;
   const std::unique_ptr<SessionJournal> journal = OpenWizardJournal(session, procedure.title, options.source);
+  FixtureWizard fixture;
+  if (several) {
+    // Line mode names a sensor left out of a pose as it happens; the TUI keeps the screen.
+    const bool line_mode = tty || options.plain || ::isatty(STDOUT_FILENO) != 1;
+    fixture = OpenFixtureWizard(options, source_options, procedure, *journal,
+                                [line_mode](const std::string& note) {
+                                  if (line_mode) std::cout << "  note: " << note << "\n";
+                                });
+  }
+  SampleSource& samples = several ? *fixture.source : *source;
+  SessionJournal& record = several ? static_cast<SessionJournal&>(*fixture.journal) : *journal;
 
   WizardOptions wizard;
   wizard.session_name = session;
   wizard.default_operator = DefaultOperator(options.source == "sim");
-  wizard.default_device = options.source == "sim" ? "SIM-0001" : "";
+  wizard.default_device = several ? "fixture" : options.source == "sim" ? "SIM-0001" : "";
   wizard.default_place = options.place;
   wizard.gravity = options.gravity;
   wizard.report_beside = session;
-  WizardEngine engine(procedure, *source, *journal, wizard);
+  WizardEngine engine(procedure, samples, record, wizard);
 
   const bool terminal = ::isatty(STDIN_FILENO) == 1 && ::isatty(STDOUT_FILENO) == 1;
   int status = 0;
@@ -81,6 +97,8 @@ int RunWizard(const WizardCommandOptions& options) {
     status = ui::RunLineMode(engine, std::cin, std::cout, ::isatty(STDIN_FILENO) == 1 ? STDIN_FILENO : -1);
   }
   // Done only when the procedure ran to its end; a session left with q stays open to resume.
+  if (status == 0 && engine.completed() && several)
+    FinishFixtureWizard(fixture, *journal, procedure, procedure_path, session, std::cout);
   if (status == 0 && engine.completed()) journal->MarkDone();
   return status;
 }
@@ -119,6 +137,15 @@ void SetupWizardCommand(CLI::App& app) {
   sub->add_option("--bench-control", options->bench_control,
                   "The virtual bench behind --source is another process's (accelcal record "
                   "--bench-listen): its controls at HOST:PORT place the sensor (tests)");
+  sub->add_option("--sensors", options->sensors,
+                  "sim: a plate of N boards calibrated at once, each on its own (docs/fixtures.md)")
+      ->check(CLI::Range(1, 64));
+  sub->add_option("--fixture", options->fixture_path,
+                  "Several sensors at once: the fixture file (serials, mountings, offsets; "
+                  "docs/fixtures.md)");
+  sub->add_option("--columns", options->columns,
+                  "A text source carrying several sensors: its columns, one ax,ay,az triple per "
+                  "sensor (t,ax,ay,az,ax,ay,az,...)");
   gravity->Bind(*sub);
   sub->footer(
       "Examples:\n"
