@@ -103,8 +103,8 @@ TEST(FixtureCapture, EverySensorsCaptureOfTheLeadsMomentsJudgedOnItsOwn) {
   EXPECT_TRUE(session->SensorCaptures(0).empty());   // loose: still rocking
   EXPECT_TRUE(session->SensorCaptures(3).empty());   // dead
   EXPECT_EQ(journal.Captures().size(), 1u);          // what the engine sees: the lead's
-  const Capture& board3 = session->SensorCaptures(2)[0].capture;
-  const Capture& board2 = session->SensorCaptures(1)[0].capture;
+  const Capture board3 = session->SensorCaptures(2)[0].capture;
+  const Capture board2 = session->SensorCaptures(1)[0].capture;
   EXPECT_EQ(board3.samples.front().t_s, board2.samples.front().t_s);  // the same moments
   EXPECT_EQ(board3.samples.size(), board2.samples.size());
   EXPECT_NE(board3.samples.front().raw_counts, board2.samples.front().raw_counts);  // its own

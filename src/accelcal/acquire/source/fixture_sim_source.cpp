@@ -56,7 +56,7 @@ struct FixtureSimSource::Board {
   StatusTracker tracker;
   std::mt19937_64 loose_rng;
   Eigen::Matrix3d tilt = Eigen::Matrix3d::Identity();  // loose: on the plate, this placement
-  Eigen::Vector3d rock_axis = Eigen::Vector3d::UnitX();
+  double rock_phase_rad = 0.0;  // loose: its rocking's phase, this placement
   std::vector<Sample> pending;  // measured during the plate's Read, not yet delivered
   bool ended = false;
 };
@@ -153,9 +153,7 @@ void FixtureSimSource::SettleLooseBoards(double /*t_s*/) {
                                                            ? rotation_vector.normalized()
                                                            : Eigen::Vector3d::UnitX())
                  .toRotationMatrix();
-    std::normal_distribution<double> unit;
-    Eigen::Vector3d axis(unit(b.loose_rng), unit(b.loose_rng), 0.0);
-    b.rock_axis = axis.norm() > 0.0 ? axis.normalized() : Eigen::Vector3d::UnitX();
+    b.rock_phase_rad = std::uniform_real_distribution<double>(0.0, 2.0 * M_PI)(b.loose_rng);
   }
 }
 
@@ -174,9 +172,20 @@ Eigen::Matrix3d FixtureSimSource::BoardForce(const Board& b, double t_s,
   Eigen::Matrix3d board_to_plate = b.spec.mounted_to_plate;
   if (b.spec.fault == sim::BoardFault::kLoose) {
     const double age_s = t_s - last_placement_s_;
-    const double rock_rad = 0.25 * b.spec.loose_deg * kDegToRad * std::exp(-age_s / kLooseRockS) *
-                            std::sin(2.0 * M_PI * kLooseRockHz * age_s);
-    board_to_plate = board_to_plate * b.tilt * Eigen::AngleAxisd(rock_rad, b.rock_axis);
+    // It rocks about all three of its axes at once (three frequencies), so that gravity moves in
+    // it whichever face is up.
+    const double amplitude_rad =
+        0.25 * b.spec.loose_deg * kDegToRad * std::exp(-age_s / kLooseRockS);
+    const Eigen::Vector3d phase(0.0, 1.0, 2.0);
+    Eigen::Vector3d rock_rad;
+    for (int i = 0; i < 3; ++i)
+      rock_rad(i) = amplitude_rad * std::sin(2.0 * M_PI * kLooseRockHz * (1.0 + 0.25 * i) * age_s +
+                                             phase(i) + b.rock_phase_rad);
+    const double angle_rad = rock_rad.norm();
+    if (angle_rad > 0.0)
+      board_to_plate = board_to_plate * b.tilt * Eigen::AngleAxisd(angle_rad, rock_rad / angle_rad);
+    else
+      board_to_plate = board_to_plate * b.tilt;
   }
   return board_to_plate.transpose() * f;
 }
