@@ -18,10 +18,10 @@ namespace {
 
 using source_detail::WallNowS;
 
-constexpr size_t kReadChunkBytes = 64 * 1024;
-constexpr size_t kMaxBytesPerCall = 1024 * 1024;
+constexpr size_t kSetReadChunkBytes = 64 * 1024;
+constexpr size_t kSetMaxBytesPerCall = 1024 * 1024;
 
-int PollTimeoutMs(double deadline_s) {
+int SetPollTimeoutMs(double deadline_s) {
   const double left_s = deadline_s - WallNowS();
   if (left_s <= 0.0) return 0;
   return static_cast<int>(std::ceil(std::min(left_s, 3600.0) * 1000.0));
@@ -35,7 +35,7 @@ ColumnsSensorSet::ColumnsSensorSet(std::unique_ptr<ByteLink> link, Fixture fixtu
     : link_(std::move(link)),
       fixture_(std::move(fixture)),
       backoff_(options.reconnect_initial_s, options.reconnect_max_s),
-      buffer_(kReadChunkBytes) {
+      buffer_(kSetReadChunkBytes) {
   if (columns.size() != fixture_.sensors.size() || columns.empty()) {
     throw Error(fmt::format("--columns names {} sensors, the fixture has {}", columns.size(),
                             fixture_.sensors.size()));
@@ -88,7 +88,7 @@ void ColumnsSensorSet::Fill(double deadline_s, SensorSetSamples* out) {
     return;
   }
   pollfd p{link_->fd(), POLLIN, 0};
-  const int rc = poll(&p, 1, PollTimeoutMs(deadline_s));
+  const int rc = poll(&p, 1, SetPollTimeoutMs(deadline_s));
   if (rc < 0 && errno != EINTR) {
     EndOfData(std::string("poll: ") + std::strerror(errno), true, out);
   } else if (rc > 0) {
@@ -119,7 +119,7 @@ bool ColumnsSensorSet::TryOpen(double deadline_s) {
 
 void ColumnsSensorSet::ReadAvailable(SensorSetSamples* out) {
   size_t taken = 0;
-  while (open_ && taken < kMaxBytesPerCall) {
+  while (open_ && taken < kSetMaxBytesPerCall) {
     const ssize_t n = read(link_->fd(), buffer_.data(), buffer_.size());
     if (n > 0) {
       taken += static_cast<size_t>(n);

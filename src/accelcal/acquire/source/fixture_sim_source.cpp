@@ -11,7 +11,7 @@
 namespace accelcal {
 namespace {
 
-constexpr double kDegToRad = M_PI / 180.0;
+constexpr double kBoardDegToRad = M_PI / 180.0;
 // A loose board rocks on after each placement for about this long (e-folding time), s, at
 // kLooseRockHz with a quarter of its loose_deg: clearly motion to a stillness check, then quiet.
 constexpr double kLooseRockS = 3.0;
@@ -146,7 +146,7 @@ void FixtureSimSource::SettleLooseBoards(double /*t_s*/) {
   for (const std::unique_ptr<Board>& board : boards_) {
     Board& b = *board;
     if (b.spec.fault != sim::BoardFault::kLoose) continue;
-    std::normal_distribution<double> tilt_rad(0.0, b.spec.loose_deg * kDegToRad);
+    std::normal_distribution<double> tilt_rad(0.0, b.spec.loose_deg * kBoardDegToRad);
     const Eigen::Vector3d rotation_vector(tilt_rad(b.loose_rng), tilt_rad(b.loose_rng),
                                           tilt_rad(b.loose_rng));
     b.tilt = Eigen::AngleAxisd(rotation_vector.norm(), rotation_vector.norm() > 0.0
@@ -175,7 +175,7 @@ Eigen::Matrix3d FixtureSimSource::BoardForce(const Board& b, double t_s,
     // It rocks about all three of its axes at once (three frequencies), so that gravity moves in
     // it whichever face is up.
     const double amplitude_rad =
-        0.25 * b.spec.loose_deg * kDegToRad * std::exp(-age_s / kLooseRockS);
+        0.25 * b.spec.loose_deg * kBoardDegToRad * std::exp(-age_s / kLooseRockS);
     const Eigen::Vector3d phase(0.0, 1.0, 2.0);
     Eigen::Vector3d rock_rad;
     for (int i = 0; i < 3; ++i)
