@@ -85,10 +85,15 @@ class MemoryJournal final : public SessionJournal {
   void RecordResult(const std::string& calibration_json) override { RecordSensorResult(0, calibration_json); }
   void RecordSensorResult(int sensor, const std::string& calibration_json) override {
     results_[sensor] = calibration_json;
+    ++result_counts_[sensor];
   }
   std::optional<std::string> SensorResult(int sensor) const override {
     if (auto r = results_.find(sensor); r != results_.end()) return r->second;
     return std::nullopt;
+  }
+  int SensorResultCount(int sensor) const override {
+    auto n = result_counts_.find(sensor);
+    return n == result_counts_.end() ? 0 : n->second;
   }
   void AppendRecordChunk(const std::string& step_id, const RecordChunk& chunk) override {
     CheckRecordChunk(step_id, chunk, RecordSummaryOf(step_id));
@@ -100,6 +105,7 @@ class MemoryJournal final : public SessionJournal {
   SessionInputs Inputs() const override { return inputs_; }
   std::map<std::string, std::string> DoneSteps() const override { return done_; }
   std::optional<std::string> Result() const override { return SensorResult(0); }
+  int ResultCount() const override { return SensorResultCount(0); }
   RecordSummary RecordSummaryOf(const std::string& step_id) const override {
     RecordSummary s;
     if (auto r = records_.find(step_id); r != records_.end())
@@ -119,6 +125,7 @@ class MemoryJournal final : public SessionJournal {
   std::map<std::string, std::map<std::string, std::string>> inputs_;
   std::map<std::string, std::string> done_;
   std::map<int, std::string> results_;  // each sensor's latest
+  std::map<int, int> result_counts_;     // how many each sensor has had
   std::map<std::string, std::vector<RecordChunk>> records_;
   std::vector<std::string> record_order_;
   bool done_session_ = false;

@@ -42,6 +42,7 @@ class SensorJournalView final : public SessionJournal {
   SessionInputs Inputs() const override;
   std::map<std::string, std::string> DoneSteps() const override { return session_.DoneSteps(); }
   std::optional<std::string> Result() const override { return session_.SensorResult(sensor_); }
+  int ResultCount() const override { return session_.SensorResultCount(sensor_); }
   RecordSummary RecordSummaryOf(const std::string& step_id) const override;
   void VisitRecordChunks(const std::string& step_id,
                          const std::function<void(const RecordChunk&)>& visit) const override;

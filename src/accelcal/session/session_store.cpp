@@ -274,7 +274,7 @@ std::map<std::string, std::string> SessionStore::DoneSteps() const {
 std::optional<std::string> SessionStore::Result() const { return SensorResult(0); }
 
 std::optional<std::string> SessionStore::SensorResult(int sensor) const {
-  // A file older than version 6 read as it is: its results are its one sensor's.
+  // A file older than version 7 read as it is: its results are its one sensor's.
   const bool by_sensor = detail::HasColumn(*db_, "results", "sensor");
   if (!by_sensor && sensor != 0) return std::nullopt;
   SqliteStatement row(*db_, by_sensor ? "SELECT calibration_json FROM results WHERE sensor = ? "
@@ -283,6 +283,18 @@ std::optional<std::string> SessionStore::SensorResult(int sensor) const {
   if (by_sensor) row.Bind(1, sensor);
   if (!row.Step()) return std::nullopt;
   return row.ColumnText(0);
+}
+
+int SessionStore::ResultCount() const { return SensorResultCount(0); }
+
+int SessionStore::SensorResultCount(int sensor) const {
+  // A file older than version 7 read as it is: its results are its one sensor's.
+  if (!detail::HasColumn(*db_, "results", "sensor"))
+    return sensor == 0 ? static_cast<int>(db_->QueryInt("SELECT count(*) FROM results")) : 0;
+  SqliteStatement count(*db_, "SELECT count(*) FROM results WHERE sensor = ?");
+  count.Bind(1, sensor);
+  count.Step();
+  return static_cast<int>(count.ColumnInt(0));
 }
 
 SessionInfo SessionStore::Info() const {
@@ -299,11 +311,47 @@ SessionInfo SessionStore::Info() const {
   info.created_utc = row.ColumnText(5);
   info.updated_utc = row.ColumnText(6);
   info.state = StringToSessionState(row.ColumnText(7)).value_or(SessionState::kOpen);
+  // (A file older than version 6, read as it is, has neither.)
+  if (detail::HasColumn(*db_, "session", "uuid")) {
+    SqliteStatement uuid(*db_, "SELECT coalesce(uuid, '') FROM session WHERE id = 1");
+    if (uuid.Step()) info.uuid = uuid.ColumnText(0);
+  }
+  if (detail::HasTable(*db_, "lab_certificates"))
+    info.num_lab_certificates = static_cast<long>(db_->QueryInt("SELECT count(*) FROM lab_certificates"));
   info.num_captures = static_cast<long>(db_->QueryInt("SELECT count(DISTINCT step_id) FROM captures"));
   info.num_inputs = static_cast<long>(db_->QueryInt("SELECT count(*) FROM inputs"));
   info.num_done_steps = static_cast<long>(db_->QueryInt("SELECT count(*) FROM steps_done"));
   info.has_result = db_->QueryInt("SELECT count(*) FROM results") > 0;
   return info;
+}
+
+std::vector<LabCertificateMark> SessionStore::LabCertificates() const {
+  std::vector<LabCertificateMark> marks;
+  if (!detail::HasTable(*db_, "lab_certificates")) return marks;  // older than version 6
+  SqliteStatement rows(*db_, "SELECT sensor_index, certificate_number, lab, published_utc "
+                             "FROM lab_certificates ORDER BY sensor_index");
+  while (rows.Step())
+    marks.push_back({static_cast<int>(rows.ColumnInt(0)), rows.ColumnText(1), rows.ColumnText(2),
+                     rows.ColumnText(3)});
+  return marks;
+}
+
+void SessionStore::RecordLabCertificate(const LabCertificateMark& mark) {
+  RequireWritable();
+  SqliteTransaction transaction(*db_);
+  SqliteStatement held(*db_, "SELECT certificate_number, lab FROM lab_certificates WHERE sensor_index = ?");
+  held.Bind(1, mark.sensor_index);
+  if (held.Step()) {
+    if (held.ColumnText(0) == mark.certificate_number) return;  // rolled back: nothing to write
+    throw Error(fmt::format("session {} already holds certificate {} from {} for sensor {}; it is "
+                            "not replaced by {}", path_, held.ColumnText(0), held.ColumnText(1),
+                            mark.sensor_index, mark.certificate_number));
+  }
+  SqliteStatement(*db_, "INSERT INTO lab_certificates (sensor_index, certificate_number, lab, "
+                        "published_utc) VALUES (?, ?, ?, ?)")
+      .Bind(1, mark.sensor_index).Bind(2, mark.certificate_number).Bind(3, mark.lab)
+      .Bind(4, mark.published_utc).Run();
+  transaction.Commit();
 }
 
 }  // namespace accelcal

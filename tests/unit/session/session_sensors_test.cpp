@@ -1,4 +1,4 @@
-// Several sensors in one session (schema version 6, issue 31): each capture names its sensor,
+// Several sensors in one session (schema version 7, issue 31): each capture names its sensor,
 // a pose's captures of every sensor are one transaction (kill -9 keeps all or none), the
 // session's sensors round-trip, and older one-sensor sessions open as they were and migrate
 // (their captures sensor 0's, their checksums holding, a damaged row still damaged).
@@ -12,6 +12,7 @@
 
 #include "accelcal/base/error.h"
 #include "accelcal/base/fixture.h"
+#include "accelcal/session/sensor_journal_view.h"
 #include "accelcal/session/session_store.h"
 #include "session_test_support.h"
 #include "test_support.h"
@@ -160,7 +161,7 @@ std::int64_t UserVersion(const std::string& path) {
 }
 
 // A version-4 session written by an older accelcal (tests/data/session/README.md): read as it
-// is, then migrated by a writer into version 6; its captures are sensor 0's, its checksums
+// is, then migrated by a writer into version 7; its captures are sensor 0's, its checksums
 // hold, and it takes a second sensor only after its sensors are recorded.
 TEST_F(SessionSensorsTest, AnOlderOneSensorSessionOpensAndMigrates) {
   fs::copy_file(std::string(ACCELCAL_SOURCE_DIR) + "/tests/data/session/v4_two_poses.db", path_);
@@ -191,11 +192,70 @@ TEST_F(SessionSensorsTest, AnOlderOneSensorSessionOpensAndMigrates) {
     store->RecordSensors(two);
     store->RecordSensorCaptures("pose_pz", {{1, Pose(7, 1)}});  // the step again, sensor 2
   }
-  EXPECT_EQ(UserVersion(path_), 6);
+  EXPECT_EQ(UserVersion(path_), 7);
   auto store = SessionStore::Open(path_, Reader());
   EXPECT_EQ(store->Captures().size(), 2u);
   EXPECT_EQ(store->SensorCaptures(1).size(), 1u);
   EXPECT_TRUE(store->DamagedCaptures().empty());
+}
+
+// A version-6 session as lab-store's accelcal leaves it (its UUID, its lab number; captures with
+// step_id UNIQUE and no sensor): the v4 file taken through that build's own version-6 steps, as
+// SQL, with a result and a published number. Read as it is, then migrated to 7 by a writer:
+// its identity, its number, its captures (sensor 0's, checksums holding) and its result kept.
+TEST_F(SessionSensorsTest, ALabStoreVersionSixSessionOpensAndMigratesKeepingItsIdentity) {
+  fs::copy_file(std::string(ACCELCAL_SOURCE_DIR) + "/tests/data/session/v4_two_poses.db", path_);
+  const std::string uuid = "3f2b8c1e-9d4a-4e6b-8f0c-2a5d7e9b1c34";
+  {
+    sqlite3* db = nullptr;
+    ASSERT_EQ(sqlite3_open(path_.c_str(), &db), SQLITE_OK);
+    const std::string lab_v6 =
+        "BEGIN; ALTER TABLE captures ADD COLUMN superseded_by TEXT; "
+        "ALTER TABLE session ADD COLUMN uuid TEXT; UPDATE session SET uuid = '" + uuid + "'; "
+        "CREATE TABLE lab_certificates (sensor_index INTEGER PRIMARY KEY CHECK (sensor_index >= 0), "
+        "certificate_number TEXT NOT NULL, lab TEXT NOT NULL, published_utc TEXT NOT NULL); "
+        "INSERT INTO lab_certificates VALUES (0, 'LAB-000007', 'lab 1234 (database lab)', "
+        "'2026-11-27T08:00:00.000Z'); "
+        "INSERT INTO results (calibration_json, recorded_utc) VALUES ('{\"a\":1}', '2026-11-27T07:00:00.000Z'); "
+        "PRAGMA user_version = 6; COMMIT;";
+    char* error = nullptr;
+    ASSERT_EQ(sqlite3_exec(db, lab_v6.c_str(), nullptr, nullptr, &error), SQLITE_OK) << (error ? error : "");
+    sqlite3_close(db);
+  }
+  ASSERT_EQ(UserVersion(path_), 6);
+  std::vector<JournalCapture> before;
+  {
+    auto reader = SessionStore::Open(path_, Reader());  // as it is
+    before = reader->Captures();
+    ASSERT_EQ(before.size(), 2u);
+    EXPECT_TRUE(reader->DamagedCaptures().empty());
+    EXPECT_EQ(reader->Info().uuid, uuid);
+    EXPECT_EQ(reader->Info().num_lab_certificates, 1);
+    EXPECT_FALSE(reader->Sensors().has_value());
+    EXPECT_EQ(reader->ResultCount(), 1);
+    EXPECT_EQ(reader->SensorResultCount(1), 0);
+  }
+  EXPECT_EQ(UserVersion(path_), 6);  // a reader changes nothing
+  {
+    auto store = SessionStore::Open(path_, Writer());  // migrates
+    EXPECT_EQ(store->Info().uuid, uuid);
+    store->RecordSensorResult(0, "{\"a\":2}");
+  }
+  EXPECT_EQ(UserVersion(path_), 7);
+  auto store = SessionStore::Open(path_, Reader());
+  EXPECT_EQ(store->Info().uuid, uuid);
+  ASSERT_EQ(store->LabCertificates().size(), 1u);
+  EXPECT_EQ(store->LabCertificates()[0].certificate_number, "LAB-000007");
+  const std::vector<JournalCapture> after = store->Captures();
+  ASSERT_EQ(after.size(), before.size());
+  for (size_t i = 0; i < after.size(); ++i) {
+    EXPECT_EQ(after[i].step_id, before[i].step_id);
+    EXPECT_EQ(after[i].sensor, 0);
+    EXPECT_EQ(after[i].capture.samples.size(), before[i].capture.samples.size());
+  }
+  EXPECT_TRUE(store->DamagedCaptures().empty());
+  EXPECT_EQ(store->ResultCount(), 2);  // the lab build's result is sensor 0's
+  EXPECT_EQ(*store->Result(), "{\"a\":2}");
 }
 
 // A row damaged before the migration stays damaged after it (the new checksum never blesses it).
@@ -234,6 +294,25 @@ TEST(MemoryJournalSensors, HoldsEachSensorsCapturesAsTheStoreDoes) {
   EXPECT_EQ(journal->SensorCaptures(1).size(), 0u);  // nothing of the refused pose
   EXPECT_EQ(journal->Captures().size(), 1u);
   EXPECT_EQ(journal->SensorCaptures(2).size(), 1u);
+}
+
+// Each fit round records one result per sensor: a sensor's count of results (its history, what
+// its report's "earlier calibrations" says) is its own, in the store, the memory journal and a
+// sensor's view alike.
+TEST_F(SessionSensorsTest, EachSensorCountsItsOwnResults) {
+  std::unique_ptr<SessionJournal> memory = MakeMemoryJournal();
+  std::unique_ptr<SessionStore> store = SessionStore::Open(path_, Writer());
+  for (SessionJournal* j : {memory.get(), static_cast<SessionJournal*>(store.get())}) {
+    j->RecordSensors(ThreeBoards());
+    for (int round = 0; round < 2; ++round)
+      for (int sensor = 0; sensor < 3; ++sensor) j->RecordSensorResult(sensor, "{}");
+    j->RecordSensorResult(2, "{\"again\":1}");
+    EXPECT_EQ(j->ResultCount(), 2);
+    EXPECT_EQ(j->SensorResultCount(1), 2);
+    EXPECT_EQ(j->SensorResultCount(2), 3);
+    EXPECT_EQ(SensorJournalView(*j, 2).ResultCount(), 3);
+    EXPECT_EQ(*SensorJournalView(*j, 2).Result(), "{\"again\":1}");
+  }
 }
 
 }  // namespace

@@ -95,8 +95,8 @@ TEST_F(SessionStoreTest, AVersionTwoSessionGetsTheCoMomentColumnsRenamedByAWrite
   sqlite3_finalize(st);
   ASSERT_EQ(sqlite3_prepare_v2(db, "PRAGMA user_version", -1, &st, nullptr), SQLITE_OK);
   ASSERT_EQ(sqlite3_step(st), SQLITE_ROW);
-  // The current version (4 added checksums, 5 redo, 6 several sensors).
-  EXPECT_EQ(sqlite3_column_int64(st, 0), 6);
+  // The current version (4 added checksums, 5 redo, 6 lab identity, 7 several sensors).
+  EXPECT_EQ(sqlite3_column_int64(st, 0), 7);
   sqlite3_finalize(st);
   sqlite3_close(db);
   ExpectSameCapture(SessionStore::Open(path_, Reader())->Captures().at(0).capture, capture);
@@ -132,7 +132,7 @@ TEST_F(SessionStoreTest, AVersionFourSessionIsMigratedAndTakesARedo) {
     auto store = SessionStore::Open(path_, Writer());  // migrates
     store->RecordRedoCapture("pose_pz#2", redo, "pose_pz");
   }
-  EXPECT_EQ(UserVersion(path_), 6);
+  EXPECT_EQ(UserVersion(path_), 7);
   auto store = SessionStore::Open(path_, Reader());
   EXPECT_TRUE(store->DamagedCaptures().empty());
   const std::vector<JournalCapture> all = store->Captures();

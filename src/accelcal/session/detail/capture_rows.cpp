@@ -18,7 +18,7 @@ constexpr const char* kInsert =
     "VALUES (?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?,?)";
 
 // Column 0 is seq, columns 1..24 those of kCaptureChecksumColumns (24: the sensor), column 25
-// the checksum, 26 superseded_by. A file older than version 6 (read read-only, as it is) has no
+// the checksum, 26 superseded_by. A file older than version 7 (read read-only, as it is) has no
 // sensor (its select gives 0: its one sensor) and a checksum over the first 23; one older than
 // version 4 has no checksum, and versions 1 and 2 named the co-moments otherwise: its select
 // fills the columns it does not read with NULL.

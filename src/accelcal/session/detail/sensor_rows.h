@@ -1,4 +1,4 @@
-// The session's sensors as rows of the `sensors` table (schema version 6, issue 31): one per
+// The session's sensors as rows of the `sensors` table (schema version 7, issue 31): one per
 // sensor, its index the captures' `sensor`. The rotation is stored as its 9 numbers row by row,
 // the offset as 3 numbers (m), separated by blanks, each in the shortest form that reads back
 // exactly.

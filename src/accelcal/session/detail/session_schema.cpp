@@ -9,6 +9,7 @@
 
 #include "accelcal/base/error.h"
 #include "accelcal/base/utc_time.h"
+#include "accelcal/base/uuid.h"
 #include "accelcal/session/detail/row_checksum.h"
 
 namespace accelcal::detail {
@@ -20,7 +21,7 @@ CREATE TABLE session (
   name TEXT NOT NULL, procedure TEXT NOT NULL, source TEXT NOT NULL,
   device TEXT NOT NULL DEFAULT '', operator TEXT NOT NULL DEFAULT '',
   created_utc TEXT NOT NULL, updated_utc TEXT NOT NULL,
-  state TEXT NOT NULL CHECK (state IN ('open', 'done')));
+  state TEXT NOT NULL CHECK (state IN ('open', 'done')), uuid TEXT);
 CREATE TABLE devices (serial TEXT PRIMARY KEY, first_seen_utc TEXT NOT NULL);
 CREATE TABLE captures (
   seq INTEGER PRIMARY KEY AUTOINCREMENT,
@@ -60,6 +61,13 @@ CREATE TABLE record_gaps (
   PRIMARY KEY (step_id, before_chunk));
 )sql";
 
+// Added in version 6: what a lab's store assigned when the session was published there.
+constexpr const char* kLabCertificatesTable = R"sql(
+CREATE TABLE lab_certificates (
+  sensor_index INTEGER PRIMARY KEY CHECK (sensor_index >= 0),
+  certificate_number TEXT NOT NULL, lab TEXT NOT NULL, published_utc TEXT NOT NULL);
+)sql";
+
 // Version 3: the capture statistics' second moments are named for what they hold, the co-moment
 // sum (x - mean)(y - mean) (versions 1 and 2 called it cov_*; the values are unchanged).
 constexpr const char* kRenameComoments = R"sql(
@@ -75,7 +83,7 @@ ALTER TABLE captures RENAME COLUMN cov_zz_counts2 TO comoment_zz_counts2;
 // the rows an older accelcal wrote. (Tables created by this build's migration from version 1
 // already have the column.)
 void MigrateToChecksums(SqliteDb& db) {
-  // A captures table made by this build already has the sensor (version 6), whose checksum
+  // A captures table made by this build already has the sensor (version 7), whose checksum
   // covers it.
   const char* capture_columns =
       HasColumn(db, "captures", "sensor") ? kCaptureChecksumColumns : kCaptureChecksumColumnsV4;
@@ -94,15 +102,23 @@ void MigrateToSuperseded(SqliteDb& db) {
     db.Exec("ALTER TABLE captures ADD COLUMN superseded_by TEXT");
 }
 
-// Version 6 (issue 31): a session holds several sensors. Each capture names its sensor (0: the
+// Version 6: the session's identity (a random UUID: a session made before has none, so it gets
+// one now, once: every later open reads the same) and the lab's certificate numbers.
+void MigrateToLabIdentity(SqliteDb& db) {
+  if (!HasColumn(db, "session", "uuid")) db.Exec("ALTER TABLE session ADD COLUMN uuid TEXT");
+  SqliteStatement(db, "UPDATE session SET uuid = ? WHERE uuid IS NULL").Bind(1, NewRandomUuid()).Run();
+  if (!HasTable(db, "lab_certificates")) db.Exec(kLabCertificatesTable);
+}
+
+// Version 7 (issue 31): a session holds several sensors. Each capture names its sensor (0: the
 // first; every capture of an older file is its one sensor's), the step's uniqueness becomes
 // (step_id, sensor), and the table `sensors` lists them (empty: one sensor, the session's
 // device). SQLite cannot change a UNIQUE constraint in place: the table is rebuilt, in the
 // migration's transaction. The checksum now covers the sensor too: it is computed anew for the
 // rows whose version-4 checksum holds, and a row that was already damaged keeps no checksum
 // (read as damaged, as before), so the migration never blesses damage.
-constexpr const char* kCapturesV6 = R"sql(
-CREATE TABLE captures_v6 (
+constexpr const char* kCapturesV7 = R"sql(
+CREATE TABLE captures_v7 (
   seq INTEGER PRIMARY KEY AUTOINCREMENT,
   step_id TEXT NOT NULL,
   capture_id INTEGER NOT NULL, kind TEXT NOT NULL CHECK (kind IN ('static', 'turntable')),
@@ -133,11 +149,11 @@ void MigrateToSensors(SqliteDb& db) {
                            1 + kCaptureChecksumColumnCountV4).empty())
         damaged.push_back(rows.ColumnInt(0));
   }
-  db.Exec(kCapturesV6);
-  db.Exec(fmt::format("INSERT INTO captures_v6 (seq, {0}, checksum, superseded_by, sensor) "
+  db.Exec(kCapturesV7);
+  db.Exec(fmt::format("INSERT INTO captures_v7 (seq, {0}, checksum, superseded_by, sensor) "
                       "SELECT seq, {0}, checksum, superseded_by, 0 FROM captures",
                       kCaptureChecksumColumnsV4));
-  db.Exec("DROP TABLE captures; ALTER TABLE captures_v6 RENAME TO captures");
+  db.Exec("DROP TABLE captures; ALTER TABLE captures_v7 RENAME TO captures");
   StoreAllRowChecksums(db, "captures", kCaptureChecksumColumns);
   for (const std::int64_t seq : damaged)
     SqliteStatement(db, "UPDATE captures SET checksum = NULL WHERE seq = ?").Bind(1, seq).Run();
@@ -159,11 +175,13 @@ void CreateSessionSchema(SqliteDb& db, const std::string& name, const std::strin
   SqliteTransaction transaction(db);
   db.Exec(kTables);
   db.Exec(kRecordTables);
+  db.Exec(kLabCertificatesTable);
   const std::string now = UtcNowIso8601();
   SqliteStatement insert(db,
                          "INSERT INTO session (id, name, procedure, source, created_utc, "
-                         "updated_utc, state) VALUES (1, ?, ?, ?, ?, ?, 'open')");
-  insert.Bind(1, name).Bind(2, procedure).Bind(3, source).Bind(4, now).Bind(5, now).Run();
+                         "updated_utc, state, uuid) VALUES (1, ?, ?, ?, ?, ?, 'open', ?)");
+  insert.Bind(1, name).Bind(2, procedure).Bind(3, source).Bind(4, now).Bind(5, now)
+      .Bind(6, NewRandomUuid()).Run();
   db.Exec(fmt::format("PRAGMA application_id = {}; PRAGMA user_version = {}",
                       kSessionApplicationId, kSessionSchemaVersion));
   transaction.Commit();
@@ -221,7 +239,8 @@ void MigrateSessionSchema(SqliteDb& db) {
   if (version < 3) db.Exec(kRenameComoments);
   if (version < 4) MigrateToChecksums(db);
   if (version < 5) MigrateToSuperseded(db);
-  if (version < 6) MigrateToSensors(db);
+  if (version < 6) MigrateToLabIdentity(db);
+  if (version < 7) MigrateToSensors(db);
   db.Exec(fmt::format("PRAGMA user_version = {}", kSessionSchemaVersion));
   transaction.Commit();
 }
