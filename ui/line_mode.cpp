@@ -69,6 +69,12 @@ class Printer {
       notice_ = v.notice;
       if (!v.notice.empty()) out_ << "  " << v.notice << '\n';
     }
+    // What the source noticed, in words, with its figures on a detail line under it.
+    if (v.source_notice != source_notice_) {
+      source_notice_ = v.source_notice;
+      if (!v.source_notice.empty()) out_ << "  source: " << v.source_notice << '\n';
+      if (!v.source_notice.empty() && !v.source_detail.empty()) out_ << "    detail: " << v.source_detail << '\n';
+    }
     if (v.problem != problem_) {
       problem_ = v.problem;
       if (!v.problem.empty()) out_ << "  problem: " << v.problem << '\n';
@@ -139,6 +145,7 @@ class Printer {
   std::string error_;
   std::string problem_;
   std::string notice_;
+  std::string source_notice_;
   std::vector<std::string> lines_;
   int progress_quarter_ = -1;
   long record_minute_ = -1;

@@ -43,6 +43,14 @@ WizardOptions WithLab(StandInLab& lab) {
   return o;
 }
 
+// A bench whose lab offers no equipment answer: the procedure's items (its example ids), as a
+// real bench's welcome has them. The virtual bench's lab offers its own (sim::LabSpec).
+sim::Scenario BenchWithTheProceduresItems() {
+  sim::Scenario scenario = sim::DefaultScenario();
+  scenario.lab.equipment = "keep";
+  return scenario;
+}
+
 void AnswerUpToEquipment(WizardEngine& e) {
   for (int i = 0; i < 4; ++i) e.Handle({IntentKind::kAccept, ""});
   ASSERT_TRUE(e.View().input.has_value());
@@ -51,7 +59,7 @@ void AnswerUpToEquipment(WizardEngine& e) {
 
 TEST(WizardLabHooks, TheWelcomeShowsWhatTheLabSaysOfTheProceduresEquipment) {
   StandInLab lab;
-  WizardRig rig(FullProcedure(), sim::DefaultScenario(), nullptr, WithLab(lab));
+  WizardRig rig(FullProcedure(), BenchWithTheProceduresItems(), nullptr, WithLab(lab));
   ASSERT_EQ(lab.asked.size(), 1u);
   EXPECT_EQ(lab.asked[0],
             (std::vector<std::string>{"RUL-01 (example)", "TT-01 (example)", "LVL-01 (example)", "PR-01 (example)"}));
@@ -64,6 +72,12 @@ TEST(WizardLabHooks, TheWelcomeShowsWhatTheLabSaysOfTheProceduresEquipment) {
   EXPECT_TRUE(AnyContains(rig.engine.View().lines, "RUL-01 (example): not in the register"));
 
   // The answer names other items: checked again, as edited.
+  rig.engine.Handle({IntentKind::kSubmitText, "turntable id TT-01; ruler id RUL-02"});
+  // The procedure issues a certificate: an answer that leaves example ids is refused once, before
+  // the lab is asked; the same answer again goes on.
+  ASSERT_EQ(lab.asked.size(), 1u);
+  ASSERT_TRUE(rig.engine.View().input.has_value());
+  EXPECT_NE(rig.engine.View().input->error.find("not your bench's own"), std::string::npos);
   rig.engine.Handle({IntentKind::kSubmitText, "turntable id TT-01; ruler id RUL-02"});
   ASSERT_EQ(lab.asked.size(), 2u);
   EXPECT_EQ(lab.asked[1], (std::vector<std::string>{"RUL-02", "TT-01", "LVL-01 (example)", "PR-01 (example)"}));
@@ -81,12 +95,26 @@ TEST(WizardLabHooks, ValidEquipmentLeavesTheWelcomeAsItWas) {
   StandInLab lab;
   Procedure procedure = FullProcedure();
   for (EquipmentItem& item : procedure.equipment) item.identification = "RUL-02";
-  WizardRig rig(procedure, sim::DefaultScenario(), nullptr, WithLab(lab));
+  WizardRig rig(procedure, BenchWithTheProceduresItems(), nullptr, WithLab(lab));
   EXPECT_FALSE(AnyContains(rig.engine.View().lines, "equipment register"));
   AnswerUpToEquipment(rig.engine);
   rig.engine.Handle({IntentKind::kAccept, ""});
   EXPECT_EQ(lab.asked.size(), 2u);
   EXPECT_EQ(rig.engine.View().notice, "");
+}
+
+// The virtual bench's lab offers its own identified items at the equipment question: the lab
+// checks those when the welcome opens (Enter keeps them), not the procedure's example ids.
+TEST(WizardLabHooks, TheItemsTheEquipmentQuestionOffersAreTheOnesChecked) {
+  StandInLab lab;
+  WizardRig rig(FullProcedure(), sim::DefaultScenario(), nullptr, WithLab(lab));
+  ASSERT_EQ(lab.asked.size(), 1u);
+  EXPECT_EQ(lab.asked[0], (std::vector<std::string>{"SIM-RUL-01", "SIM-TT-01", "SIM-LVL-01", "SIM-PR-01"}));
+  EXPECT_FALSE(AnyContains(rig.engine.View().lines, "(example)")) << ::testing::PrintToString(rig.engine.View().lines);
+  AnswerUpToEquipment(rig.engine);
+  rig.engine.Handle({IntentKind::kAccept, ""});
+  ASSERT_EQ(lab.asked.size(), 2u);
+  EXPECT_EQ(lab.asked[1], lab.asked[0]);
 }
 
 // A lab out of reach: every question of the welcome says so in plain words (nothing checked, the

@@ -258,7 +258,7 @@ TEST_F(SessionStoreTest, RefusesANewerSchemaAndForeignFiles) {
     SessionStore::Open(path_, Reader());
     FAIL() << "no error";
   } catch (const Error& e) {
-    EXPECT_TRUE(Contains(e.what(), "schema version 99, newer than this accelcal reads (6)")) << e.what();
+    EXPECT_TRUE(Contains(e.what(), "schema version 99, newer than this accelcal reads (7)")) << e.what();
   }
   const std::string text_file = (dir_ / "notes.db").string();
   { std::ofstream(text_file) << "this is not a database, just text long enough to be read\n"; }

@@ -17,6 +17,7 @@ StepControllerKind FitStepKind();
 StepControllerKind DiagnosisStepKind();
 StepControllerKind ReportStepKind();
 StepControllerKind AnalysisStepKind();
+StepControllerKind WriteBackStepKind();
 
 namespace {
 
@@ -25,6 +26,7 @@ std::deque<StepControllerKind>& RegisteredControllers() {
   static std::deque<StepControllerKind> kinds = {
       LevelStepKind(), StaticStepKind(),    TurntableStepKind(), RecordStepKind(),
       FitStepKind(),   DiagnosisStepKind(), ReportStepKind(),    AnalysisStepKind(),
+      WriteBackStepKind(),
   };
   return kinds;
 }
@@ -49,6 +51,27 @@ std::string StepInputHelp(std::string_view key) {
     if (c.input_help != nullptr)
       if (std::string help = c.input_help(key); !help.empty()) return help;
   return "";
+}
+
+// The kinds defined beside their controllers, one line each: KIND(the function of the kind's
+// controller file that returns its StepKindDefinition). Adding a kind adds its line here.
+#define ACCELCAL_STEP_KINDS(KIND) \
+  KIND(RepeatStepKind)            \
+  /* the list ends here */
+
+#define ACCELCAL_DECLARE_STEP_KIND(definition) StepKindDefinition definition();
+ACCELCAL_STEP_KINDS(ACCELCAL_DECLARE_STEP_KIND)
+#undef ACCELCAL_DECLARE_STEP_KIND
+
+void RegisterStepKinds() {
+  static const bool registered = [] {
+#define ACCELCAL_REGISTER_STEP_KIND(definition) \
+  RegisterWizardStepKind(definition().info, definition().controller);
+    ACCELCAL_STEP_KINDS(ACCELCAL_REGISTER_STEP_KIND)
+#undef ACCELCAL_REGISTER_STEP_KIND
+    return true;
+  }();
+  (void)registered;
 }
 
 StepKind RegisterWizardStepKind(const StepKindInfo& info, StepControllerKind controller) {
