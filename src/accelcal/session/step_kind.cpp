@@ -85,14 +85,6 @@ void CheckAnalysisOrder(ProcedureStep& s, const std::vector<ProcedureStep>& earl
   if (!earlier_record) f.Fail("record", "'" + s.record_step + "' is not an earlier record step");
 }
 
-// A write-back writes the calibration an earlier report step recorded.
-void CheckWriteBackOrder(const ProcedureStep&, const std::vector<ProcedureStep>& earlier, StepFields& f) {
-  const bool earlier_report = std::any_of(earlier.begin(), earlier.end(),
-                                          [](const ProcedureStep& e) { return InfoOf(e.kind).calibrates; });
-  if (!earlier_report)
-    f.Fail("kind", "a write_back step comes after the report step: it writes the calibration the report records");
-}
-
 // ---- the table ------------------------------------------------------------------------------
 
 // In StepKind's order: a kind's value is its row.
@@ -106,7 +98,6 @@ std::deque<StepKindInfo>& StepKindTable() {
       {"diagnosis", StepAcquires::kNothing, true, false, "", nullptr, nullptr},
       {"report", StepAcquires::kNothing, false, true, "", nullptr, nullptr},
       {"analysis", StepAcquires::kNothing, true, false, "", &ReadAnalysisFields, &CheckAnalysisOrder},
-      {"write_back", StepAcquires::kNothing, true, false, "", nullptr, &CheckWriteBackOrder},
   };
   return table;
 }

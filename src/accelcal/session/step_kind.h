@@ -29,7 +29,6 @@ enum class StepKind : int {
   kDiagnosis,  // the diagnosis; asks before adopting an effect
   kReport,     // the calibration report; the session's result is recorded
   kAnalysis,   // the noise or drift analysis of an earlier record step, shown
-  kWriteBack,  // the report's calibration offered to the MAVLink vehicle read, written on a yes
 };
 
 // What a step takes from the sensor.

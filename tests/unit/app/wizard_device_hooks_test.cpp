@@ -90,7 +90,7 @@ Procedure StaticsThenWriteBack() {
     if (s.kind == StepKind::kStatic || s.kind == StepKind::kFit || s.kind == StepKind::kReport) steps.push_back(s);
   ProcedureStep write_back;
   write_back.id = "write_back";
-  write_back.kind = StepKind::kWriteBack;
+  write_back.kind = *StringToStepKind("write_back");
   write_back.title = "Write the calibration into the vehicle";
   write_back.required = false;
   steps.push_back(write_back);
@@ -271,7 +271,7 @@ TEST(WizardDeviceHooks, AWriteBackStepComesAfterTheReport) {
         << e.what();
   }
   const Procedure shipped = LoadProcedure(std::string(ACCELCAL_SOURCE_DIR) + "/procedures/autopilot_imu.toml");
-  EXPECT_EQ(shipped.steps.back().kind, StepKind::kWriteBack);
+  EXPECT_EQ(shipped.steps.back().kind, *StringToStepKind("write_back"));
   EXPECT_FALSE(shipped.steps.back().required);
 }
 

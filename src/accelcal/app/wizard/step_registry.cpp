@@ -17,7 +17,6 @@ StepControllerKind FitStepKind();
 StepControllerKind DiagnosisStepKind();
 StepControllerKind ReportStepKind();
 StepControllerKind AnalysisStepKind();
-StepControllerKind WriteBackStepKind();
 
 namespace {
 
@@ -26,7 +25,6 @@ std::deque<StepControllerKind>& RegisteredControllers() {
   static std::deque<StepControllerKind> kinds = {
       LevelStepKind(), StaticStepKind(),    TurntableStepKind(), RecordStepKind(),
       FitStepKind(),   DiagnosisStepKind(), ReportStepKind(),    AnalysisStepKind(),
-      WriteBackStepKind(),
   };
   return kinds;
 }
@@ -57,6 +55,7 @@ std::string StepInputHelp(std::string_view key) {
 // controller file that returns its StepKindDefinition). Adding a kind adds its line here.
 #define ACCELCAL_STEP_KINDS(KIND) \
   KIND(RepeatStepKind)            \
+  KIND(WriteBackStepKind)         \
   /* the list ends here */
 
 #define ACCELCAL_DECLARE_STEP_KIND(definition) StepKindDefinition definition();

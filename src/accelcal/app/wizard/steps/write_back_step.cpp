@@ -196,10 +196,20 @@ std::string WriteBackInputHelp(std::string_view key) {
          "writes them later.";
 }
 
+// A write-back writes the calibration an earlier report step recorded.
+void CheckWriteBackOrder(ProcedureStep&, const std::vector<ProcedureStep>& earlier, StepFields& f) {
+  const bool earlier_report = std::any_of(earlier.begin(), earlier.end(),
+                                          [](const ProcedureStep& e) { return InfoOf(e.kind).calibrates; });
+  if (!earlier_report)
+    f.Fail("kind", "a write_back step comes after the report step: it writes the calibration the report records");
+}
+
 }  // namespace
 
-StepControllerKind WriteBackStepKind() {
-  return {StepKind::kWriteBack, &MakeStepController<WriteBackStep>, &ResultEstimateS, nullptr, &WriteBackInputHelp};
+// The report's calibration offered to the MAVLink vehicle read, written on a yes.
+StepKindDefinition WriteBackStepKind() {
+  return {{"write_back", StepAcquires::kNothing, true, false, "", nullptr, &CheckWriteBackOrder},
+          {StepKind{}, &MakeStepController<WriteBackStep>, &ResultEstimateS, nullptr, &WriteBackInputHelp}};
 }
 
 }  // namespace accelcal
