@@ -3,8 +3,8 @@
 # and again: the store never holds part of a session (every session row has its sensor,
 # calibration, certificate and documents), the session files are never marked with a number the
 # store does not hold, and the next publish finishes the backlog with no session twice.
-# Kills are aimed (the moment the publisher's transaction has drawn a number, seen from the
-# server) and at random instants; a kill inside a transaction is proven by the sequence: a number
+# Kills are aimed (the publisher held, by a lock the test takes, inside its transaction after it
+# drew a number) and at random instants; a kill inside a transaction is proven by the sequence: a number
 # drawn and never used (the drawing transaction died with the process).
 # Called by ctest as: e2e_killed_publisher.sh ACCELCAL SOURCE_DIR
 set -euo pipefail
@@ -34,41 +34,58 @@ whole() {  # nothing partial in the store
   echo "$s"
 }
 
-# Waits (server side, as the superuser who sees every backend's last statement) until the
-# publisher's connection sits in a transaction whose last statement drew a certificate number:
-# the certificate is being rendered, the session's rows are written but not committed. Fails when
-# the publisher's connection closes first.
-wait_inside_transaction() {
+# Holds the publisher inside its transaction after it drew a number: a superuser's transaction
+# takes certificate_documents, which the publisher writes after drawing the number and rendering
+# the certificate, so its INSERT waits on the lock with the number drawn and nothing committed.
+# (Watching for that instant instead, as a first version did, misses it on an idle machine: the
+# publisher is through it in well under a millisecond.)
+hold_documents() {
+  PGUSER=postgres "$PG_BIN/psql" -q -X -At -c "BEGIN; LOCK TABLE accelcal.certificate_documents IN ACCESS EXCLUSIVE MODE;
+    SELECT pg_sleep(120); COMMIT;" >/dev/null 2>&1 &
+  holder=$!
+  local tries=0
+  until [ "$(sql "SELECT count(*) FROM pg_locks l JOIN pg_class c ON c.oid = l.relation
+                  WHERE c.relname = 'certificate_documents' AND l.mode = 'AccessExclusiveLock' AND l.granted")" -ge 1 ]; do
+    tries=$((tries + 1)); [ "$tries" -lt 600 ] || fail "the lock on certificate_documents was never taken"
+    sleep 0.05
+  done
+}
+# Waits until the publisher's connection waits on that lock; fails when it closes first.
+wait_blocked_on_documents() {
   pg_sql "SET statement_timeout = '60s'; DO \$\$
-    DECLARE seen boolean := false; started timestamptz := clock_timestamp();
     BEGIN
       LOOP
         PERFORM pg_stat_clear_snapshot();
-        IF EXISTS (SELECT 1 FROM pg_stat_activity WHERE usename = 'bench_k' AND state = 'idle in transaction'
-                   AND query LIKE '%draw_certificate_number%') THEN RETURN; END IF;
-        IF EXISTS (SELECT 1 FROM pg_stat_activity WHERE usename = 'bench_k') THEN seen := true;
-        ELSIF seen OR clock_timestamp() - started > interval '30 s' THEN RAISE EXCEPTION 'not caught'; END IF;
-        PERFORM pg_sleep(0.001);
+        IF EXISTS (SELECT 1 FROM pg_stat_activity WHERE usename = 'bench_k' AND wait_event_type = 'Lock'
+                   AND query LIKE '%certificate_documents%') THEN RETURN; END IF;
+        PERFORM pg_sleep(0.01);
       END LOOP;
     END \$\$" >/dev/null 2>&1
 }
+release_documents() {
+  pg_sql "SELECT pg_terminate_backend(pid) FROM pg_stat_activity
+          WHERE query LIKE '%pg_sleep(120)%' AND pid <> pg_backend_pid()" >/dev/null
+  wait "$holder" 2>/dev/null || true
+}
 
-# Odd attempts kill the publisher the moment it is inside a transaction (after drawing a number);
+# Odd attempts kill the publisher while it is held inside a transaction (after drawing a number);
 # even ones at a random instant (inside a transaction, between sessions, while writing a number
 # back into a session file).
 cut_inside=0
 for attempt in $(seq 1 8); do
   before=$(whole)
   [ "$before" -lt "$sessions" ] || break
+  [ $((attempt % 2)) -eq 0 ] || hold_documents
   "$accelcal" lab publish >"$work/publish.out" 2>&1 &
   pid=$!
   if [ $((attempt % 2)) -eq 1 ]; then
-    wait_inside_transaction || true
+    wait_blocked_on_documents || true
   else
     sleep "0.$((RANDOM % 5))$((RANDOM % 10))"
   fi
   kill -9 "$pid" 2>/dev/null || true
   wait "$pid" 2>/dev/null || true
+  [ $((attempt % 2)) -eq 0 ] || release_documents
   after=$(whole)
   drawn=$(sql "SELECT CASE WHEN is_called THEN last_value ELSE 0 END FROM accelcal.certificate_seq")
   [ "$drawn" -gt "$after" ] && cut_inside=1

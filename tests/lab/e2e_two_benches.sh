@@ -218,7 +218,9 @@ grep -q "^equipment .*TT-01 .*overdue by 35 day(s)" "$work/out" || fail "equipme
   >"$work/wizard-a.log" 2>&1 || { tail "$work/wizard-a.log"; fail "wizard on bench A"; }
 grep -q "Equipment: turntable TT-01: its calibration expired on" "$work/wizard-a.log" \
   || fail "no warning of the expired turntable: $(head -30 "$work/wizard-a.log")"
-! grep -q "RUL-01:" "$work/wizard-a.log" || fail "the ruler in date was warned of"
+# (The virtual bench's own items, SIM-RUL-01 and the rest, offered before the answer, are unknown
+# to this lab and said so: only the ruler named RUL-01 is in date.)
+! grep -qE '(^|[ (])RUL-01:' "$work/wizard-a.log" || fail "the ruler in date was warned of"
 grep -q "^The lab's register: wizard-a: published as certificate LAB-[0-9]\{6\}$" "$work/wizard-a.log" \
   || fail "the wizard's end: $(tail -5 "$work/wizard-a.log")"
 expect 0 bench_a "$accelcal" lab history WIZ-0002 --format json

@@ -60,9 +60,9 @@ void WelcomeStep::ReadEquipment(const WelcomeAnswers& answers) {
 void WelcomeStep::CheckEquipmentWithLab() {
   if (!session_.options.check_equipment) return;
   std::vector<EquipmentItem> items = session_.steps.equipment();
-  const auto welcome = session_.model.inputs().find(kWelcomeStepId);
-  const bool answered = welcome != session_.model.inputs().end() && welcome->second.count(welcome_key::kEquipment) != 0;
-  if (!answered && !session_.options.default_equipment.empty()) {
+  const WelcomeAnswers answers = ReadWelcomeAnswers(session_.model.inputs());
+  const std::optional<std::string>* answered = answers.Find(welcome_key::kEquipment);
+  if ((answered == nullptr || !answered->has_value()) && !session_.options.default_equipment.empty()) {
     EquipmentAnswer offered = ApplyEquipmentAnswer(session_.options.default_equipment, items);
     if (offered.ok()) items = std::move(offered.items);
   }
