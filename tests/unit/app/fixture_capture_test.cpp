@@ -4,6 +4,9 @@
 // named with why, the others recorded in one transaction with their own turntable radius.
 #include "accelcal/app/fixture/fixture_capture.h"
 
+#include <cmath>
+
+#include <fmt/core.h>
 #include <gtest/gtest.h>
 
 #include "accelcal/acquire/sim/bench_fixture.h"
@@ -11,6 +14,7 @@
 #include "accelcal/acquire/source/bench_control.h"
 #include "accelcal/acquire/source/fixture_sim_source.h"
 #include "accelcal/app/fixture/sensor_batch.h"
+#include "accelcal/app/wizard/session_clock.h"
 #include "accelcal/base/error.h"
 
 namespace accelcal::fixture_capture_test {
@@ -136,6 +140,43 @@ TEST(FixtureCapture, EverySensorsCaptureOfTheLeadsMomentsJudgedOnItsOwn) {
   EXPECT_NEAR(session->SensorCaptures(1).back().capture.radius_m, 0.10, 1e-12);
   EXPECT_NEAR(session->SensorCaptures(2).back().capture.radius_m, 0.13, 1e-12);
   EXPECT_NEAR(session->SensorCaptures(0).back().capture.radius_m, 0.07, 1e-12);
+}
+
+
+// A resumed run: the wizard puts the lead's samples on the session clock (a constant added to
+// the source's t, recorded as the clock's "resume 1"), and a turntable run's accepted samples
+// have the table's swing taken out (their readings are not the source's). The others' samples
+// of the same moments are found by the clock's shift all the same.
+TEST(FixtureCapture, AResumedRunsTurntableCaptureOnTheSessionClock) {
+  const Procedure procedure = OnePoseAndATurntable();
+  FixtureLeadSource lead(Plate(), 30.0, 1.0);
+  std::unique_ptr<SessionJournal> session = MakeMemoryJournal();
+  FixtureJournal journal(*session, lead, procedure);
+  lead.bench()->PlaceTurntable(0.10, 120.0, SensorAxis::kPlusX, SensorAxis::kPlusZ);
+  Capture first = LeadCapture(lead, 1.0, 0, "spinning up");
+  ASSERT_TRUE(std::isfinite(lead.first_delivered_t_s()));
+  EXPECT_DOUBLE_EQ(lead.first_delivered_t_s(), first.samples.front().t_s);
+
+  const double offset_s = 1234.5;  // the session clock's shift of this run
+  journal.RecordInput(SessionClock::kClockStep, "resume 1",
+                      fmt::format("t 1200.000000 s -> {:.6f} s, a gap of 34.500 s on the computer's clock",
+                                  lead.first_delivered_t_s() + offset_s));
+  Capture run = LeadCapture(lead, 3.0, 3, "r = 0.10 m");
+  const double source_t0_s = run.samples.front().t_s;
+  for (Sample& s : run.samples) {
+    s.t_s += offset_s;
+    s.raw_counts += Eigen::Vector3d(0.37, -0.21, 0.05);  // a swing taken out
+  }
+  run.kind = CaptureKind::kTurntable;
+  run.radius_m = 0.10;
+  run.rpm = 120.0;
+  run.up_axis = SensorAxis::kPlusZ;
+  journal.RecordCapture("table_10", run);
+  ASSERT_EQ(session->SensorCaptures(2).size(), 1u) << "board 3 lacks the run";
+  const Capture board3 = session->SensorCaptures(2)[0].capture;
+  EXPECT_NEAR(board3.samples.front().t_s, source_t0_s + offset_s, 1e-9);  // on the session clock
+  EXPECT_EQ(board3.samples.size(), run.samples.size());
+  EXPECT_EQ(session->SensorCaptures(1).size(), 1u);  // the lead's own
 }
 
 }  // namespace

@@ -33,7 +33,7 @@ SessionClock::SessionClock(const SessionModel& model, std::function<double()> wa
   const auto clock = model.inputs().find(kClockStep);
   if (clock == model.inputs().end()) return;
   for (const auto& [key, value] : clock->second) {
-    if (key.rfind("resume ", 0) == 0) ++resumes_;
+    if (key.rfind(kResumeKeyPrefix, 0) == 0) ++resumes_;
     if (key != "last_capture") continue;
     std::istringstream in(value);
     double t = kNaN, wall = kNaN;
@@ -53,13 +53,24 @@ void SessionClock::Shift(std::vector<Sample>* chunk, SessionModel& model) {
       note_ = fmt::format("The session clock goes on at t = {:.2f} s, {:.1f} s after the last "
                           "sample recorded (t = {:.2f} s; the gap measured on the computer's clock).",
                           first_t_s + offset_s_, gap_s, last_t_s_);
-      model.RecordInput(kClockStep, fmt::format("resume {}", resumes_ + 1),
+      model.RecordInput(kClockStep, fmt::format("{}{}", kResumeKeyPrefix, resumes_ + 1),
                         fmt::format("t {:.6f} s -> {:.6f} s, a gap of {:.3f} s on the computer's clock",
                                     last_t_s_, first_t_s + offset_s_, gap_s));
     }
   }
   if (offset_s_ == 0.0) return;
   for (Sample& s : *chunk) s.t_s += offset_s_;
+}
+
+std::optional<double> SessionClock::ResumedAtS(const std::string& resume_value) {
+  // "t 1017.210000 s -> 1059.300000 s, a gap of ..." (Shift's words)
+  std::istringstream in(resume_value);
+  std::string t, s_before, arrow;
+  double before_s = kNaN, after_s = kNaN;
+  if (!(in >> t >> before_s >> s_before >> arrow >> after_s) || t != "t" || arrow != "->" ||
+      !std::isfinite(after_s))
+    return std::nullopt;
+  return after_s;
 }
 
 void SessionClock::MarkCapture(double t_last_s, SessionModel& model) {

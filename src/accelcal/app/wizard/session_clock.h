@@ -20,6 +20,7 @@
 #pragma once
 
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -32,6 +33,13 @@ class SessionClock {
  public:
   static constexpr const char* kClockStep = "session_clock";
   static constexpr double kMinGapS = 1.0;
+  static constexpr const char* kResumeKeyPrefix = "resume ";  // "resume 1", "resume 2", ...
+
+  // The session time at which a resumed run's clock goes on, from its "resume N" input as
+  // recorded (t_first_source_s + offset_s(): the run's first sample); nullopt when it does not
+  // read. With the source's own t of that first sample it gives the run's offset to whoever
+  // sees the source's samples before the clock does (app/fixture: the other sensors').
+  static std::optional<double> ResumedAtS(const std::string& resume_value);
 
   // Reads what the session holds. `wall_now_s`: the computer's clock (s since the epoch).
   SessionClock(const SessionModel& model, std::function<double()> wall_now_s);
