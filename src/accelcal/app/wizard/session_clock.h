@@ -25,12 +25,13 @@
 
 #include "accelcal/app/wizard/session_model.h"
 #include "accelcal/base/capture.h"
+#include "accelcal/session/session_inputs.h"
 
 namespace accelcal {
 
 class SessionClock {
  public:
-  static constexpr const char* kClockStep = "session_clock";
+  static constexpr const char* kClockStep = kSessionClockStepId;  // its keys: session_inputs.h
   static constexpr double kMinGapS = 1.0;
 
   // Reads what the session holds. `wall_now_s`: the computer's clock (s since the epoch).
