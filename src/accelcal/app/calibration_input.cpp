@@ -102,4 +102,15 @@ CalibrationInput ReadCalibrationInput(const std::string& input, int sensor) {
   return ReadCalibrationInput(LocateCalibrationInput(input), sensor);
 }
 
+std::unique_ptr<SessionStore> OpenSessionToChange(const std::string& input) {
+  if (IsRegularFile(input) && !IsSessionFile(input)) {
+    LocateCalibrationInput(input);  // throws for a file that is neither
+    throw Error(fmt::format("{} is a calibration file, not a session: only a session holds the captures "
+                            "to fit again (give the session it came from)", input));
+  }
+  SessionOpenOptions existing;
+  existing.create_if_missing = false;
+  return SessionStore::Open(ResolveSessionPath(input), existing);
+}
+
 }  // namespace accelcal

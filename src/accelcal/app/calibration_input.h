@@ -1,7 +1,7 @@
 // A calibration given to a command, from a calibration file or from a wizard session: the one
 // rule that tells the two apart and the one set of errors, for every command that takes either
-// (`report`, `export-cal`), and the one test of "is this a session file?" (also `allan`'s, whose
-// input is a recording or a session).
+// (`report`, `export-cal`, `allan --calibration`) or a session only (`refit`), and the one test
+// of "is this a session file?" (also `allan`'s, whose input is a recording or a session).
 //
 // The rule, on what `input` names:
 //   - something read once (a pipe, `-`, a character device): a calibration file's text (a
@@ -61,5 +61,11 @@ struct CalibrationInput {
 };
 CalibrationInput ReadCalibrationInput(const std::string& input, int sensor = 0);
 CalibrationInput ReadCalibrationInput(const LocatedCalibrationInput& at, int sensor = 0);
+
+// The session `input` names, by the rule above, opened for writing (its lock held) to change its
+// calibration (`refit`). Throws accelcal::Error for a calibration file ("PATH is a calibration
+// file, not a session: ..."; a refit needs the session's captures), for a file that is neither,
+// and for nothing there (ResolveSessionPath's "no session NAME ...").
+std::unique_ptr<SessionStore> OpenSessionToChange(const std::string& input);
 
 }  // namespace accelcal

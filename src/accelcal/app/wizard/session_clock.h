@@ -26,14 +26,14 @@
 
 #include "accelcal/app/wizard/session_model.h"
 #include "accelcal/base/capture.h"
+#include "accelcal/session/session_inputs.h"
 
 namespace accelcal {
 
 class SessionClock {
  public:
-  static constexpr const char* kClockStep = "session_clock";
+  static constexpr const char* kClockStep = kSessionClockStepId;  // its keys: session_inputs.h
   static constexpr double kMinGapS = 1.0;
-  static constexpr const char* kResumeKeyPrefix = "resume ";  // "resume 1", "resume 2", ...
 
   // The session time at which a resumed run's clock goes on, from its "resume N" input as
   // recorded (t_first_source_s + offset_s(): the run's first sample); nullopt when it does not
