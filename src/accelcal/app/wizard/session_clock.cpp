@@ -62,6 +62,17 @@ void SessionClock::Shift(std::vector<Sample>* chunk, SessionModel& model) {
   for (Sample& s : *chunk) s.t_s += offset_s_;
 }
 
+std::optional<double> SessionClock::ResumedAtS(const std::string& resume_value) {
+  // "t 1017.210000 s -> 1059.300000 s, a gap of ..." (Shift's words)
+  std::istringstream in(resume_value);
+  std::string t, s_before, arrow;
+  double before_s = kNaN, after_s = kNaN;
+  if (!(in >> t >> before_s >> s_before >> arrow >> after_s) || t != "t" || arrow != "->" ||
+      !std::isfinite(after_s))
+    return std::nullopt;
+  return after_s;
+}
+
 void SessionClock::MarkCapture(double t_last_s, SessionModel& model) {
   last_t_s_ = MaxFinite(last_t_s_, t_last_s);
   last_wall_s_ = wall_now_s_();
