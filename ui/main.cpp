@@ -60,9 +60,11 @@ int main(int argc, char** argv) {
   accelcal::cli::SetupExportCalCommand(app);
   accelcal::cli::SetupHistoryCommand(app);
   accelcal::cli::SetupReportCommand(app);
+  accelcal::cli::SetupRefitCommand(app);
   accelcal::cli::SetupWizardCommand(app);
   accelcal::cli::SetupAllanCommand(app);
   accelcal::cli::SetupNoiseCommand(app);
+  accelcal::cli::SetupLabCommand(app);
   accelcal::cli::SetupDeviceInfoCommand(app);
   accelcal::cli::SetupBagInfoCommand(app);
   accelcal::cli::SetupHelpCommands(app, "accelcal " + VersionText());  // last: it walks the others

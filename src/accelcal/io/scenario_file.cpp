@@ -178,6 +178,17 @@ Technician ReadTechnician(TomlTableReader& r, const std::string& source) {
   return t;
 }
 
+LabSpec ReadLab(TomlTableReader& r) {
+  LabSpec lab;
+  lab.gravity = r.String("gravity", lab.gravity);
+  lab.gravity_sigma_mps2 = r.Number("gravity_sigma_mps2", lab.gravity_sigma_mps2, NumberRange::kPositive);
+  lab.equipment = r.String("equipment", lab.equipment);
+  for (const char* key : {"gravity", "equipment"})
+    if (r.Has(key) && r.String(key, std::nullopt).find_first_of("\r\n") != std::string::npos)
+      r.Fail(*r.Get(key), key, "must be a single line (the welcome's answer)");
+  return lab;
+}
+
 void ReadTurntable(TomlTableReader& r, CapturePlan& c) {
   c.radius_m = r.Number("radius_m", std::nullopt, NumberRange::kNonNegative);
   c.rpm = r.Number("rpm", std::nullopt, NumberRange::kNonNegative);
@@ -254,6 +265,7 @@ Scenario ParseScenario(std::string_view toml_text, const std::string& source_nam
   WithTable(root, "effects", false, source_name, [&](TomlTableReader& r) {
     s.effects = ReadEffects(r, source_name, s.bench.temperature_c);
   });
+  WithTable(root, "lab", false, source_name, [&](TomlTableReader& r) { s.lab = ReadLab(r); });
   WithTable(root, "technician", false, source_name,
             [&](TomlTableReader& r) { s.technician = ReadTechnician(r, source_name); });
   const toml::array* plan = root.ArrayOfTables("capture");

@@ -4,9 +4,10 @@
 #
 #   short_procedure            writes $work/short.toml: the seed procedure with 3 s captures
 #                              (the checks are the same; CI time is not)
-#   wizard SCENARIO DB ANSWERS  runs the wizard on the sim at speed 0 with the answers given
+#   wizard SCENARIO DB ANSWERS [FLAGS...]  runs the wizard on the sim at speed 0 with the answers given
 #                              (one per line, printf-style) and then empty ones; output in
-#                              $work/out, status checked
+#                              $work/out, status checked. SCENARIO: a file of scenarios/, or
+#                              a path (one holding a '/'); FLAGS: more of the wizard's
 #   calibration DB             writes $work/cal.json, the session's calibration
 #   within_truth K             every parameter of $work/cal.json within K sigma of the default
 #                              bench's truth (scenarios/bench_default.toml); else prints them
@@ -22,10 +23,12 @@ short_procedure() {
 
 wizard() {  # SCENARIO DB ANSWERS
   local scenario=$1 db=$2 answers=$3
+  shift 3
+  case "$scenario" in */*) ;; *) scenario=$source_dir/scenarios/$scenario ;; esac
   set +e
   { printf "$answers"; yes ''; } | "$accelcal" wizard --source sim --speed 0 \
-    --scenario "$source_dir/scenarios/$scenario" --procedure "$work/short.toml" --session "$db" \
-    --plain > "$work/out" 2> "$work/err"
+    --scenario "$scenario" --procedure "$work/short.toml" --session "$db" \
+    --plain "$@" > "$work/out" 2> "$work/err"
   local code=${PIPESTATUS[1]}
   set -e
   [ "$code" -eq 0 ] || { tail -20 "$work/out" >&2; cat "$work/err" >&2; fail "wizard exited $code"; }

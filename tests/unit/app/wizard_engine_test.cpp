@@ -149,6 +149,19 @@ TEST(WizardEngineTest, WelcomeTakesTypedAnswersAndGoesBack) {
   EXPECT_NE(rig.engine.View().input->error.find("u must be a number"), std::string::npos)
       << rig.engine.View().input->error;
   rig.engine.Handle({IntentKind::kSubmitText, "ruler id RUL-77 u 0.4; level u 0.1"});
+  // The seed procedure issues a certificate: the items left with the procedure's example ids are
+  // refused once, named, with what to type (issue 27, item 3); the same answer again goes on.
+  ASSERT_TRUE(rig.engine.View().input.has_value());
+  const std::string refused = rig.engine.View().input->error;
+  EXPECT_NE(refused.find("this procedure issues a certificate, and turntable TT-01 (example), level LVL-01 "
+                         "(example), prism PR-01 (example) are not your bench's own"),
+            std::string::npos)
+      << refused;
+  EXPECT_NE(refused.find("or Enter again to go on without them"), std::string::npos) << refused;
+  EXPECT_EQ(rig.journal->Inputs().at("welcome").count("equipment"), 0u);
+  // Enter now goes on with the answer refused (shown as the default), not the procedure's.
+  EXPECT_EQ(rig.engine.View().input->default_text, "ruler id RUL-77 u 0.4; level u 0.1");
+  rig.engine.Handle({IntentKind::kAccept, ""});
   EXPECT_EQ(rig.journal->Inputs().at("welcome").at("equipment"), "ruler id RUL-77 u 0.4; level u 0.1");
   EXPECT_EQ(rig.engine.View().step_title, "Level the table");
 }

@@ -99,6 +99,11 @@ double Scenario::CaptureDurationS(int index) const {
   return std::isnan(d) ? bench.capture_duration_s : d;
 }
 
+std::string LabSpec::GravityAnswer(double bench_gravity_mps2) const {
+  if (gravity != "measured") return gravity;
+  return fmt::format("{:.5f} +- {:g}", bench_gravity_mps2, gravity_sigma_mps2);
+}
+
 double Scenario::SessionDurationS() const {
   double total = 0.0;
   for (int i = 0; i < static_cast<int>(captures.size()); ++i) {

@@ -4,14 +4,18 @@
 #include "accelcal/app/wizard/wizard_engine.h"
 
 #include <algorithm>
+#include <utility>
 
 #include <fmt/core.h>
 
+#include "accelcal/app/wizard/quantity_input.h"
+#include "accelcal/app/wizard/refit_answer.h"
 #include "accelcal/app/wizard/resume_summary.h"
 #include "accelcal/app/wizard/session_gaps.h"
 #include "accelcal/app/wizard/step_registry.h"
 #include "accelcal/app/wizard/time_estimate.h"
 #include "accelcal/base/error.h"
+#include "accelcal/base/utc_time.h"
 
 namespace accelcal {
 
@@ -55,6 +59,8 @@ void WizardEngine::ReadJournal() {
   if (!resumed_) return;
   resume_lines_.push_back(fmt::format("Resuming session {}: {} captures and {} steps already recorded.",
                                       options_.session_name, captures.size(), done.size()));
+  // The command line's flags this run does not use, and what would (a refit).
+  resume_lines_.insert(resume_lines_.end(), options_.notes.begin(), options_.notes.end());
   // In the procedure's order, with the steps' titles (resume_summary.h).
   for (std::string& line : ResumeSummaryLines(procedure_, model_, kWelcomeStepId))
     resume_lines_.push_back(std::move(line));
@@ -79,13 +85,31 @@ void WizardEngine::EnterStep(int index) {
   session_.screen.hint.clear();
   if (!InSteps(current_)) {
     flow_ = Flow::kDone;
-    // Resumed after the end: the summary, not a bare "complete".
-    if (!session_.progressed)
-      for (const std::unique_ptr<StepController>& c : controllers_) c->RecapAtEnd();
+    // Resumed after the end: the summary, not a bare "complete"; a step with something to offer
+    // again (a run the fit left out) is entered instead.
+    if (session_.progressed) return;
+    for (const std::unique_ptr<StepController>& c : controllers_) c->RecapAtEnd();
+    for (size_t i = 0; i < controllers_.size(); ++i)
+      if (controllers_[i]->OpensAgainAtEnd()) {
+        opened_again_ = true;
+        return EnterStep(static_cast<int>(i));
+      }
+    // Finished with a calibration: its inputs may be corrected without a capture taken again.
+    if (resumed_ && session_.steps.final_summary() != nullptr) flow_ = Flow::kOfferRefit;
     return;
   }
   flow_ = Flow::kStep;
   controllers_[static_cast<size_t>(current_)]->Enter();
+}
+
+// After a retake asked by a step (the report), back to that step even when it was recorded in an
+// earlier run: it reports again with the run taken again.
+void WizardEngine::ContinueFromFirstOpenStep() {
+  const int back_to = std::exchange(retake_return_, -1);
+  int index = 0;
+  const int n = static_cast<int>(procedure_.steps.size());
+  while (index < n && model_.StepRecorded(procedure_.steps[static_cast<size_t>(index)].id)) ++index;
+  EnterStep(back_to >= 0 ? std::min(index, back_to) : index);
 }
 
 void WizardEngine::FinishStep(const std::string& outcome) {
@@ -118,7 +142,36 @@ void WizardEngine::HandleConfirmSkip(const Intent& intent) {
 
 void WizardEngine::Quit() {
   session_.acq.Stop();
-  quit_ = true;
+  // Leaving a finished session's refit offer leaves it as it was: nothing to resume.
+  quit_ = flow_ != Flow::kOfferRefit;
+  flow_ = Flow::kDone;
+}
+
+// The answer to "Refit with new inputs?": Enter leaves the session as it is; corrections refit
+// it (the earlier calibration kept), or are refused with why and asked again.
+void WizardEngine::HandleOfferRefit(const Intent& intent) {
+  if (intent.kind == IntentKind::kAccept || (intent.kind == IntentKind::kSubmitText && IsBlank(intent.text))) {
+    flow_ = Flow::kDone;
+    return;
+  }
+  if (intent.kind != IntentKind::kSubmitText) return;
+  RefitAnswer answer = ParseRefitAnswer(intent.text);
+  if (!answer.ok()) {
+    refit_error_ = answer.error;
+    return;
+  }
+  RefitRequest& request = answer.request;
+  request.session_name = options_.session_name;
+  request.report_beside = options_.report_beside;
+  request.source = session_.source.Describe();
+  request.now_utc = UtcNowIso8601();
+  try {
+    refit_ = RefitSession(model_, procedure_, request);
+  } catch (const Error& e) {
+    refit_error_ = e.what();
+    return;
+  }
+  refit_error_.clear();
   flow_ = Flow::kDone;
 }
 
@@ -172,6 +225,7 @@ void WizardEngine::Handle(const Intent& intent) {
     case Flow::kStep: return Current()->Handle(intent);
     case Flow::kConfirmSkip: return HandleConfirmSkip(intent);
     case Flow::kConfirmRedo: return HandleConfirmRedo(intent);
+    case Flow::kOfferRefit: return HandleOfferRefit(intent);
     case Flow::kDone: return;
   }
 }

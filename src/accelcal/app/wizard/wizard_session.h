@@ -38,6 +38,10 @@ class StepSequence {
   virtual void RestartStep() = 0;
   virtual void AskSkip() = 0;  // s: asks before the step is skipped
   virtual void GoBack() = 0;   // b: to an earlier capture step, when the step goes no further back
+  // The accepted capture of step `step_id` taken again at once, as b would offer it (the new
+  // capture replaces it once accepted; b or s keeps it); the wizard then goes on from the first
+  // step not recorded.
+  virtual void RetakeStep(const std::string& step_id) = 0;
   // Records `capture`, accepted at the current step (in a redo, superseding the capture taken
   // again), before the wizard moves on.
   virtual void RecordCapture(const Capture& capture) = 0;

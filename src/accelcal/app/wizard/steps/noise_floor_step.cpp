@@ -1,11 +1,11 @@
 #include "accelcal/app/wizard/steps/noise_floor_step.h"
 
 #include <algorithm>
-#include <sstream>
 
 #include <fmt/core.h>
 #include <fmt/format.h>
 
+#include "accelcal/app/wizard/session_settings.h"
 #include "accelcal/app/wizard/step_controller.h"
 #include "accelcal/app/wizard/wizard_session.h"
 #include "accelcal/session/session_inputs.h"
@@ -21,15 +21,6 @@ StaticStabilityOptions ProcedureStability(const Procedure& p) {
   return o;
 }
 
-std::string FloorTriadText(const Eigen::Vector3d& v) {
-  return fmt::format("{:.6g} {:.6g} {:.6g}", v.x(), v.y(), v.z());
-}
-
-bool ParseFloorTriad(const std::string& text, Eigen::Vector3d* v) {
-  std::istringstream in(text);
-  return static_cast<bool>(in >> (*v)[0] >> (*v)[1] >> (*v)[2]) && v->allFinite();
-}
-
 }  // namespace
 
 NoiseFloorStep::NoiseFloorStep(const Procedure& procedure, SessionModel& model, StepAcquisition& acq,
@@ -37,14 +28,10 @@ NoiseFloorStep::NoiseFloorStep(const Procedure& procedure, SessionModel& model, 
     : procedure_(procedure), model_(model), acq_(acq), screen_(screen), quiet_period_s_(quiet_period_s),
       guard_(procedure.expected_noise_counts, procedure.noise_floor_max_ratio, ProcedureStability(procedure)) {}
 
-// A floor lowered in an earlier run stays: the captures were judged again with it.
+// A floor lowered in an earlier run stays: the captures were judged again with it. Read as
+// `accelcal refit` reads it (session_settings.h).
 void NoiseFloorStep::Resume() {
-  const auto inputs = model_.inputs().find(kNoiseFloorStepId);
-  if (inputs == model_.inputs().end()) return;
-  const auto lowered = inputs->second.find(noise_floor_key::kLoweredStdCounts);
-  Eigen::Vector3d std_counts;
-  if (lowered != inputs->second.end() && ParseFloorTriad(lowered->second, &std_counts))
-    lowered_ = NoiseFloor{std_counts, "lowered in an earlier run"};
+  if (std::optional<NoiseFloor> lowered = RecordedLoweredFloor(model_.inputs())) lowered_ = std::move(lowered);
 }
 
 void NoiseFloorStep::Measure(double timeout_s) {
@@ -69,7 +56,7 @@ bool NoiseFloorStep::OnMeasured() {
   }
   screen_.problem.clear();
   screen_.hint.clear();
-  model_.RecordInput(kNoiseFloorStepId, noise_floor_key::kStdCounts, FloorTriadText(guard_.floor()->std_counts));
+  model_.RecordInput(kNoiseFloorStepId, noise_floor_key::kStdCounts, TriadText(guard_.floor()->std_counts));
   lines_ = {"Noise floor: " + guard_.Describe()};
   return true;
 }
@@ -106,7 +93,7 @@ void NoiseFloorStep::Recheck(const Capture& latest, std::vector<CapturedPose>& c
       used.push_back(&c.capture);
   const NoiseFloorRecheck r = guard_.Recheck(latest, used);
   if (!r.lowered) return;
-  model_.RecordInput(kNoiseFloorStepId, noise_floor_key::kLoweredStdCounts, FloorTriadText(r.after.std_counts));
+  model_.RecordInput(kNoiseFloorStepId, noise_floor_key::kLoweredStdCounts, TriadText(r.after.std_counts));
   model_.RecordInput(kNoiseFloorStepId, noise_floor_key::kLowered, r.note);
   lowered_ = r.after;
   lines_ = {"Noise floor: " + guard_.Describe(), r.note};
