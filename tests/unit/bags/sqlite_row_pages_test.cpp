@@ -141,7 +141,7 @@ std::string DatabasePath(const std::string& name) { return ::testing::TempDir() 
 
 TEST(SqliteRowPages, TheRowsSqliteReadsInItsOrder) {
   for (const Shape shape : {Shape{512, 0, 3000}, Shape{1024, 8, 2000}, Shape{4096, 0, 2000}, Shape{65536, 0, 3000}}) {
-    SCOPED_TRACE(testing::Message() << "page size " << shape.page_bytes << ", reserved " << shape.reserved_bytes);
+    SCOPED_TRACE(::testing::Message() << "page size " << shape.page_bytes << ", reserved " << shape.reserved_bytes);
     const std::string path = DatabasePath("pages.db3");
     sqlite3* db = WriteDatabase(path, shape);
     // Gaps in the rowids and free pages: a run of rows and every 7th row deleted.
