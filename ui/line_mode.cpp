@@ -52,6 +52,26 @@ class Printer {
  public:
   explicit Printer(std::ostream& out) : out_(out) {}
 
+  // What the source noticed, in words, with its figures on a detail line under it. Also called
+  // while a question waits: a notice that arrives then is said before the answer acknowledges it.
+  // True when it said one.
+  bool ShowSourceNotice(const WizardView& v) {
+    if (v.source_notice == source_notice_) return false;
+    source_notice_ = v.source_notice;
+    if (v.source_notice.empty()) return false;
+    out_ << "  source: " << v.source_notice << '\n';
+    if (!v.source_detail.empty()) out_ << "    detail: " << v.source_detail << '\n';
+    return true;
+  }
+
+  // A notice said while a question waits: the question's input line again under it, so the
+  // output still ends with the question (what a technician, or a script, answers).
+  void ShowNoticeWhileAsking(const WizardView& v) {
+    if (!ShowSourceNotice(v)) return;
+    PrintInputLine(v);
+    out_.flush();
+  }
+
   void Show(const WizardView& v) {
     if (v.step_index != step_index_ || v.step_title != step_title_) {
       step_index_ = v.step_index;
@@ -69,6 +89,7 @@ class Printer {
       notice_ = v.notice;
       if (!v.notice.empty()) out_ << "  " << v.notice << '\n';
     }
+    ShowSourceNotice(v);
     if (v.problem != problem_) {
       problem_ = v.problem;
       if (!v.problem.empty()) out_ << "  problem: " << v.problem << '\n';
@@ -125,6 +146,10 @@ class Printer {
       if (!v.time_text.empty()) out_ << "  time: " << v.time_text << '\n';
       if (!error.empty()) out_ << "  refused: " << error << '\n';
     }
+    PrintInputLine(v);
+  }
+
+  void PrintInputLine(const WizardView& v) {
     if (v.input) {
       out_ << fmt::format("{} [{}]> ", v.input->label, v.input->default_text);
     } else if (!v.finished) {
@@ -139,6 +164,7 @@ class Printer {
   std::string error_;
   std::string problem_;
   std::string notice_;
+  std::string source_notice_;
   std::vector<std::string> lines_;
   int progress_quarter_ = -1;
   long record_minute_ = -1;
@@ -243,7 +269,10 @@ int Run(WizardDriver& driver, LineInput& in, std::ostream& out, bool read_while_
       continue;
     }
     // A question waits: the source is read meanwhile, so the next capture starts fresh.
-    while (!in.Wait(kQuestionPollS)) driver.Poll(0.0);
+    while (!in.Wait(kQuestionPollS)) {
+      driver.Poll(0.0);
+      printer.ShowNoticeWhileAsking(driver.View());
+    }
     std::string answer;
     if (!in.ReadLine(&answer)) {
       // End of input: save and leave (everything accepted is already in the journal).

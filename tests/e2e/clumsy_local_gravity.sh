@@ -28,8 +28,8 @@ flat "$work/report" "Gravity used: 9.80665 +- 0.02309 m/s^2 (standard gravity, n
   fail "the report does not say what gravity was used"
 
 # Declined: the base model keeps the same error in its scales: still not PASS. (Welcome 5,
-# noise floor 1, leveling 3, 9 poses, 9 runs x 3, fit 1: the 47th answer is the diagnosis's.)
-wizard clumsy_local_gravity.toml "$work/n.db" "$(printf '\\n%.0s' $(seq 46))n\\n"
+# noise floor 1, leveling 3, 9 poses, 9 runs x 3, the repeat 1, fit 1: the 48th answer is the diagnosis's.)
+wizard clumsy_local_gravity.toml "$work/n.db" "$(printf '\\n%.0s' $(seq 47))n\\n"
 said "the turntable seems to turn"
 said "than entered (+-"
 said "correct it and refit (recommended), or keep the basic model?"

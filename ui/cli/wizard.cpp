@@ -17,6 +17,7 @@
 #include "accelcal/io/procedure_file.h"
 #include "accelcal/io/scenario_file.h"
 #include "accelcal/session/session_paths.h"
+#include "accelcal/acquire/mavlink/mavlink_source.h"
 #include "accelcal/acquire/source/remote_bench.h"
 #include "accelcal/acquire/source/source_spec.h"
 #include "accelcal/session/procedure.h"
@@ -90,7 +91,10 @@ int RunWizard(const WizardCommandOptions& options) {
   const bool sim = options.source == "sim";
   if (!options.scenario_path.empty()) source_options.scenario = sim::LoadScenario(options.scenario_path);
   std::unique_ptr<SampleSource> source = OpenSource(options.source, source_options);
-  PrepareVehicle(*source, options.vehicle_calibration, stdout);
+  // The vehicle's calibration is said at the welcome (and recorded there); a refusal, here.
+  std::vector<std::string> device_lines = PrepareVehicle(*source, options.vehicle_calibration, nullptr, stdout);
+  // The vehicle, for the write-back step, before the source is wrapped.
+  MavlinkSource* vehicle = dynamic_cast<MavlinkSource*>(source.get());
   if (!options.bench_control.empty())
     source = WithRemoteBench(std::move(source), ParseHostPort(options.bench_control, options.bench_control,
                                                               "--bench-control HOST:PORT"));
@@ -103,6 +107,8 @@ int RunWizard(const WizardCommandOptions& options) {
   wizard.default_operator = DefaultOperator(sim);
   wizard.default_device = sim ? "SIM-0001" : "";
   wizard.default_place = options.place;
+  wizard.device_lines = std::move(device_lines);
+  wizard.vehicle = vehicle;
   wizard.gravity = options.gravity;
   // The virtual bench's lab: its gravity and its identified, verified equipment (virtual_lab.h).
   if (sim)

@@ -103,6 +103,8 @@ EffectsSpec ReadEffects(TomlTableReader& r, const std::string& source, double am
   e.rpm_scale = r.Number("rpm_scale", 0.0);
   e.size_effect_m = r.Vector3("size_effect_m", zero);
   e.turntable_tilt_rad = r.Number("turntable_tilt_rad", 0.0);
+  e.settling_share = r.Vector3("settling_share", zero);
+  e.settling_tau_s = r.Number("settling_tau_s", 15.0);
   if (const toml::array* bumps = r.ArrayOfTables("bump")) {
     for (std::size_t i = 0; i < bumps->size(); ++i) {
       TomlTableReader br(*bumps->get(i)->as_table(), fmt::format("effects.bump {}", i), source);

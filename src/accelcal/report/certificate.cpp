@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "accelcal/base/gravity.h"
+#include "accelcal/report/limited_by_text.h"
 #include "accelcal/report/report_model.h"
 #include "accelcal/report/uncertainty_text.h"
 
@@ -216,6 +217,7 @@ Certificate MakeCertificate(const ReportInputs& in, const ReportModel& m) {
                  "1-sigma (type A alone, k = 2); the reference quantities' uncertainties are not "
                  "included.";
   }
+  c.limited_by = LimitedByStatement(in.calibration);
   c.traceability = Traceability(in);
   c.decision_rule = DecisionRuleText(in.limits);
   c.conformity = Conformity(m);

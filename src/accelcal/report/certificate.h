@@ -45,6 +45,7 @@ struct Certificate {
   std::vector<CertificateResult> results;
   bool has_budget = false;          // results carry U; else the 1-sigma of the fit alone
   std::string coverage;             // how U was obtained, one paragraph
+  std::string limited_by;           // which uncertainty dominates, one paragraph (limited_by_text.h)
   std::vector<std::string> not_stated;  // reference quantities without a stated uncertainty
   std::vector<std::string> traceability;  // one line per reference
   std::string decision_rule;

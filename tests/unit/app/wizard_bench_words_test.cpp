@@ -106,7 +106,7 @@ TEST(WizardBenchWordsTest, TheFitSpeaksPlainWordsWithTheStatisticsOneKeyAway) {
                        [&](const std::string& l) { return l.find(part) != std::string::npos; });
   };
   WizardView v = rig.engine.View();
-  EXPECT_TRUE(has(v, "18 captures fitted: they agree with one calibration to ")) << v.prompt;
+  EXPECT_TRUE(has(v, "19 captures fitted: they agree with one calibration to ")) << v.prompt;
   for (const char* statistic : {"chi2", "condition", "NLopt", "ftol", "1-sigma):"}) EXPECT_FALSE(has(v, statistic)) << statistic;
   EXPECT_TRUE(std::any_of(v.keys.begin(), v.keys.end(), [](const KeyHint& k) { return k.key == "d"; }));
   rig.engine.Handle({IntentKind::kDetails, ""});

@@ -97,12 +97,12 @@ Procedure ShortStaticProcedure(int poses) {
 TEST(WizardEngineTest, AcceptingEverythingCompletesTheSeedCalibration) {
   Rig rig(FullProcedure());
   EXPECT_EQ(rig.engine.View().screen, WizardScreen::kWelcome);
-  EXPECT_EQ(rig.engine.View().step_count, 23);
+  EXPECT_EQ(rig.engine.View().step_count, 24);
   AcceptUntil(rig.engine, Never);
   const WizardView v = rig.engine.View();
   EXPECT_TRUE(v.finished);
   EXPECT_EQ(v.screen, WizardScreen::kDone);
-  EXPECT_EQ(rig.journal->Captures().size(), 18u);
+  EXPECT_EQ(rig.journal->Captures().size(), 19u);
   ASSERT_TRUE(rig.journal->Result().has_value());
   EXPECT_TRUE(CalibrationFromJson(nlohmann::json::parse(*rig.journal->Result()), "result").model.Validate().empty());
   EXPECT_EQ(rig.journal->DoneSteps().at("welcome"), "ok");
@@ -427,8 +427,8 @@ TEST(WizardEngineTest, ResumeContinuesAtTheFirstMissingStepWithoutDuplicates) {
   EXPECT_TRUE(second.engine.View().finished);
   std::set<std::string> steps;
   for (const JournalCapture& c : journal->Captures()) steps.insert(c.step_id);
-  EXPECT_EQ(journal->Captures().size(), 18u);
-  EXPECT_EQ(steps.size(), 18u);
+  EXPECT_EQ(journal->Captures().size(), 19u);
+  EXPECT_EQ(steps.size(), 19u);
   EXPECT_TRUE(journal->Result().has_value());
 }
 

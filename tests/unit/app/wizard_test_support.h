@@ -27,7 +27,7 @@ inline Procedure FullProcedure() {
 inline Procedure ShortFullProcedure() {
   Procedure p = FullProcedure();
   for (ProcedureStep& s : p.steps)
-    if (s.kind == StepKind::kStatic || s.kind == StepKind::kTurntable) s.duration_s = 3.0;
+    if (KeepsCapture(s.kind)) s.duration_s = 3.0;  // the poses (the repeat too) and the runs
   return p;
 }
 

@@ -24,6 +24,13 @@ struct CaptureRequest {
   double duration_s = 10.0;  // length of the capture, s; > 0
   double timeout_s = 60.0;   // give up when no capture is accepted this long after the first
                              // sample, s; > duration_s
+  // Static: capturing starts no earlier than this long after the first sample, however still
+  // the sensor is, s (>= 0; 0: no wait): a sensor seen still settling after the session's
+  // earlier changes of pose is given the time it needs (app/wizard/settling_wait.h). The
+  // timeout must leave room for it and the capture.
+  double settle_wait_s = 0.0;
+  // What the wait is for, in bench words, said while it lasts.
+  std::string settle_wait_reason;
 
   std::string Validate() const;
 };

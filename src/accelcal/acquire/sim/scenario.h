@@ -109,6 +109,12 @@ struct EffectsSpec {
   Eigen::Vector3d size_effect_m = Eigen::Vector3d::Zero();
   // Spin axis tilted from vertical, rad: gravity turns once per revolution in the table frame.
   double turntable_tilt_rad = 0.0;
+  // Settling after a change of pose (the package's anelastic after-effect, the mount's creep):
+  // this share of each axis' reading lags what it should read, relaxing toward it with the time
+  // constant settling_tau_s (first order), so a capture started soon after a change of pose
+  // still carries part of the previous pose. 0 (the default): none; each share in [0, 1).
+  Eigen::Vector3d settling_share = Eigen::Vector3d::Zero();
+  double settling_tau_s = 15.0;  // s; > 0
   std::vector<Bump> bumps;
 };
 

@@ -55,6 +55,7 @@ CaptureMessage DescribeStatic(const CaptureSnapshot& snap) {
     case CaptureState::kCapturing: return {"keep hands off the bench", "", false};
     case CaptureState::kRetrying: return {Interrupted(CauseOfReason(snap.reason)), snap.reason, false};
     case CaptureState::kSettling: {
+      if (!snap.settle_wait.empty()) return {snap.settle_wait, "", true};
       const StillnessCause cause = snap.stability.judged ? CauseOfReason(live) : StillnessCause::kNone;
       if (snap.elapsed_s < kNormalSettleS || cause == StillnessCause::kNone)
         return {"still settling after you let go: wait", live, true};

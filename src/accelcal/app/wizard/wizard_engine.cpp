@@ -66,6 +66,7 @@ void WizardEngine::ReadJournal() {
     resume_lines_.push_back(std::move(line));
   if (done.count(kWelcomeStepId) != 0) {
     resume_lines_.push_back("  gravity: " + session_.gravity.Describe());
+    for (std::string& line : welcome_.DeviceResumeLines()) resume_lines_.push_back(std::move(line));
     AdvanceFrom(0);
   }
 }
@@ -187,7 +188,7 @@ void WizardEngine::UpdateLive(const std::vector<Sample>& chunk) {
 void WizardEngine::Poll(double timeout_s) {
   SampleSource& source = session_.source;
   std::vector<Sample> chunk;
-  source.Read(timeout_s, &chunk);
+  source_notices_.Update(source.Read(timeout_s, &chunk), source.status());
   session_.clock.Shift(&chunk, model_);
   if (!session_.clock.note().empty() && !clock_noted_) {
     clock_noted_ = true;
@@ -220,6 +221,7 @@ void WizardEngine::Poll(double timeout_s) {
 void WizardEngine::Handle(const Intent& intent) {
   if (flow_ == Flow::kDone) return;
   session_.screen.notice.clear();  // a confirmation stays until the next key
+  source_notices_.Acknowledge();   // so does what the source noticed
   if (intent.kind == IntentKind::kQuit) return Quit();
   switch (flow_) {
     case Flow::kStep: return Current()->Handle(intent);

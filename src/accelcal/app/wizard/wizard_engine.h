@@ -42,6 +42,7 @@
 #include "accelcal/acquire/source/sample_source.h"
 #include "accelcal/app/refit_session.h"
 #include "accelcal/app/wizard/session_model.h"
+#include "accelcal/app/wizard/source_notices.h"
 #include "accelcal/app/wizard/step_controller.h"
 #include "accelcal/app/wizard/steps/welcome_step.h"
 #include "accelcal/app/wizard/wizard_driver.h"
@@ -126,6 +127,7 @@ class WizardEngine final : public WizardDriver, private StepSequence {
   WizardSession session_;
   WelcomeStep welcome_;
   std::vector<std::unique_ptr<StepController>> controllers_;  // one per procedure step
+  SourceNotices source_notices_;  // what the source noticed, in the bench's words
 
   int current_ = -1;  // -1: the welcome; steps.size(): done
   Flow flow_ = Flow::kStep;

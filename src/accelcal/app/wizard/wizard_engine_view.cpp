@@ -36,6 +36,8 @@ WizardView WizardEngine::View() const {
   }
   v.noise_floor_text = session_.noise_floor.Describe();
   v.status = session_.source.Describe() + ": " + session_.source.status().BriefReport();
+  v.source_notice = source_notices_.text();
+  v.source_detail = source_notices_.detail();
   SetStepView(v);
   SetFlowView(v);
   SetTimeView(v);

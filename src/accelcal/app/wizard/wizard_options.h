@@ -17,6 +17,7 @@ struct WelcomeLabCheck {
   std::vector<std::string> warnings;  // one line each: expired, running out, unknown to the lab
   std::string unreachable;            // non-empty: the lab could not be reached, and why (one line)
 };
+class MavlinkSource;
 
 struct WizardOptions {
   std::string session_name = "session";  // shown in the view and in the calibration's source
@@ -48,6 +49,15 @@ struct WizardOptions {
   // Said on the first screen of a session resumed (or already finished): the command line's
   // flags this run does not use, with what to do instead (app/refit_session.h).
   std::vector<std::string> notes = {};
+  // What the source's device already holds and what was done with it (a MAVLink vehicle's own
+  // accelerometer calibration: read, then taken out of the readings or left in; app/device/
+  // vehicle_session.h), one fact per line: shown at the welcome and recorded with its answers.
+  // Empty for a source without such a device.
+  std::vector<std::string> device_lines = {};
+  // The MAVLink vehicle behind the session's source (the source itself, or inside the remote
+  // bench's wrapper), borrowed: the write-back step (steps/write_back_step.cpp) writes the
+  // calibration into it through the source's own link. nullptr for any other source.
+  MavlinkSource* vehicle = nullptr;
 
   // Empty when the options are usable; else why not.
   std::string Validate() const {

@@ -285,10 +285,12 @@ int RunRound(const std::vector<const Effect*>& adopted, const FitSummary& curren
     const int preferred = PreferredOf(best, other, n, scale);
     if (preferred > 0) {
       other.score.rejected_reason = PredictionVerdict(best, other);
+      other.score.near_tie = true;
       continue;
     }
     if (preferred < 0) {
       best.score.rejected_reason = PredictionVerdict(other, best);
+      best.score.near_tie = true;
       chosen = passing[k];
       continue;
     }
@@ -324,6 +326,7 @@ int RunRound(const std::vector<const Effect*>& adopted, const FitSummary& curren
                                  best.rejected_reason);
   } else {
     const CandidateScore& s = (*trials)[static_cast<size_t>(chosen)].score;
+    round->adopted = (*trials)[static_cast<size_t>(chosen)].score.effect;
     round->outcome = fmt::format("adopted {}: chi2/dof {:.2f} -> {:.2f}, p = {:.3g} over {} candidates",
                                  s.effect, current.Chi2PerDof(), s.after.Chi2PerDof(),
                                  std::min(1.0, s.lr_p_value * tried), tried);

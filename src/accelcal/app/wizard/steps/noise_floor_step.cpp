@@ -24,8 +24,9 @@ StaticStabilityOptions ProcedureStability(const Procedure& p) {
 }  // namespace
 
 NoiseFloorStep::NoiseFloorStep(const Procedure& procedure, SessionModel& model, StepAcquisition& acq,
-                               ScreenMessages& screen, double quiet_period_s)
+                               ScreenMessages& screen, double quiet_period_s, const SampleSource* source)
     : procedure_(procedure), model_(model), acq_(acq), screen_(screen), quiet_period_s_(quiet_period_s),
+      source_(source),
       guard_(procedure.expected_noise_counts, procedure.noise_floor_max_ratio, ProcedureStability(procedure)) {}
 
 // A floor lowered in an earlier run stays: the captures were judged again with it. Read as
@@ -58,7 +59,24 @@ bool NoiseFloorStep::OnMeasured() {
   screen_.hint.clear();
   model_.RecordInput(kNoiseFloorStepId, noise_floor_key::kStdCounts, TriadText(guard_.floor()->std_counts));
   lines_ = {"Noise floor: " + guard_.Describe()};
+  if (const std::string limit = ResolutionLimit(); !limit.empty()) {
+    lines_.push_back(limit);
+    model_.RecordInput(kNoiseFloorStepId, noise_floor_key::kResolution, limit);
+  }
   return true;
+}
+
+// The floor is limited by the stream's resolution when an axis's floor is not well above its
+// step: below a step the rounding is most of what is measured (step / sqrt 12 of it when the
+// noise dithers the rounding, anything from 0 to step / 2 when it does not).
+std::string NoiseFloorStep::ResolutionLimit() const {
+  if (source_ == nullptr || !guard_.floor()) return "";
+  const SourceStatus& status = source_->status();
+  const double step = status.resolution_counts;
+  if (!(step > 0.0)) return "";
+  if (guard_.floor()->std_counts.minCoeff() >= 2.0 * step) return "";
+  return fmt::format("Limited by the resolution: {} (the floor measured is within two steps of it).",
+                     status.ResolutionNote());
 }
 
 void NoiseFloorStep::OnSilent() {

@@ -78,9 +78,12 @@ class ReportStep final : public ResultStep {
 
   void SetAnswerView(WizardView& v) const override {
     if (offer_.empty()) {
-      v.prompt = "Calibration recorded in the session; the verdict is above. Press Enter to finish.";
-      v.keys = {{"Enter", "finish"}, {"d", ShowingDetails() ? "plain words" : "statistics"}, {"b", "back"},
-                {"q", "save and quit"}};
+      // A step after the report (a write-back into the vehicle) is still to come.
+      const bool more = session_.sequence.SessionLeftS(true) > 0.0;
+      v.prompt = more ? "Calibration recorded in the session; press Enter to go on."
+                      : "Calibration recorded in the session; the verdict is above. Press Enter to finish.";
+      v.keys = {{"Enter", more ? "go on" : "finish"}, {"d", ShowingDetails() ? "plain words" : "statistics"},
+                {"b", "back"}, {"q", "save and quit"}};
       return;
     }
     const JournalCapture* left_out = session_.model.CaptureOf(offer_);

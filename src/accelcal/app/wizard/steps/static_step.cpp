@@ -5,6 +5,7 @@
 #include <fmt/core.h>
 
 #include "accelcal/app/wizard/pose_setting.h"
+#include "accelcal/app/wizard/settling_wait.h"
 #include "accelcal/app/wizard/step_registry.h"
 #include "accelcal/app/wizard/steps/acquiring_step.h"
 
@@ -22,6 +23,13 @@ class StaticStep final : public AcquiringStep {
     session_.noise_floor.Recheck(capture, session_.captured);
     session_.next_capture_id = capture.id + 1;
     session_.sequence.ContinueFromFirstOpenStep();
+  }
+
+  // Before the capture starts: as long as the session's captures say the sensor needs to settle.
+  CaptureRequest MakeRequest() const override {
+    CaptureRequest r = AcquiringStep::MakeRequest();
+    AddSettlingWait(session_, r);
+    return r;
   }
 
   void SetPlaceView(WizardView& v) const override {

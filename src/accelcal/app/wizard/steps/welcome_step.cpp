@@ -159,6 +159,7 @@ void WelcomeStep::Handle(const Intent& intent) {
   // What the lab still warns of (the items as answered) stays on the next screen until a key.
   if (!equipment_warnings_.empty())
     session_.screen.notice = fmt::format("Equipment: {}", fmt::join(equipment_warnings_, "; "));
+  RecordDeviceLines();
   session_.model.RecordStepDone(kWelcomeStepId, "ok");
   session_.sequence.ContinueFromFirstOpenStep();
 }
@@ -174,6 +175,38 @@ void WelcomeStep::SetView(WizardView& v) const {
   if (equipment_warnings_.empty()) return;
   v.lines.push_back("The lab's equipment register warns (the equipment question can name other items):");
   for (const std::string& warning : equipment_warnings_) v.lines.push_back("  " + warning);
+}
+
+void WelcomeStep::AddText(std::vector<std::string>& lines) const {
+  const std::vector<std::string>& device = session_.options.device_lines;
+  if (device.empty()) return;
+  lines.push_back("The device's own calibration, as it holds it now:");
+  for (const std::string& line : device) lines.push_back("  " + line);
+}
+
+std::vector<std::string> WelcomeStep::DeviceResumeLines() const {
+  const std::vector<std::string>& device = session_.options.device_lines;
+  if (device.empty()) return {};
+  std::vector<std::string> lines;
+  AddText(lines);
+  const auto welcome = session_.model.inputs().find(kWelcomeStepId);
+  if (welcome == session_.model.inputs().end()) return lines;
+  const auto recorded = welcome->second.find(welcome_key::kDeviceCalibration);
+  if (recorded != welcome->second.end() && recorded->second != fmt::format("{}", fmt::join(device, "\n"))) {
+    lines.push_back("It is not what the device held when the session began:");
+    const std::string& text = recorded->second;
+    for (size_t start = 0, end = 0; start <= text.size(); start = end + 1) {
+      end = std::min(text.find('\n', start), text.size());
+      lines.push_back("  " + text.substr(start, end - start));
+    }
+  }
+  return lines;
+}
+
+void WelcomeStep::RecordDeviceLines() {
+  const std::vector<std::string>& device = session_.options.device_lines;
+  if (!device.empty())
+    session_.model.RecordInput(kWelcomeStepId, welcome_key::kDeviceCalibration, fmt::format("{}", fmt::join(device, "\n")));
 }
 
 std::string WelcomeInputHelp(std::string_view key) {

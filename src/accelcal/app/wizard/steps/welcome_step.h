@@ -29,6 +29,11 @@ class WelcomeStep final : public StepController {
   void Resume() override;
   void SetHeader(WizardView& v) const override { v.step_title = "Welcome"; }
   void SetView(WizardView& v) const override;
+  // What the source's device holds (WizardOptions::device_lines), above the questions.
+  void AddText(std::vector<std::string>& lines) const override;
+  // A session resumed after its welcome: what the device holds now, and whether it is what the
+  // session recorded when it began (a vehicle calibrated again in between says so).
+  std::vector<std::string> DeviceResumeLines() const;
 
  private:
   // A question: its input key, label and default answer.
@@ -49,6 +54,8 @@ class WelcomeStep final : public StepController {
   // The session's equipment through the options' check_equipment (the lab's register).
   void CheckEquipmentWithLab();
   void AddLabUnreachable(WizardView& v) const;
+  // Records the device's lines with the answers (when there are some).
+  void RecordDeviceLines();
 
   WizardSession& session_;
   int question_ = 0;
