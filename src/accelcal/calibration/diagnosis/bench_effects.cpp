@@ -258,7 +258,12 @@ class TurntableTilt final : public BenchError<TurntableTilt> {
                                              std::string_view interpretation, double) const override {
     std::string lead = "the turntable's spin axis is not vertical";
     if (!interpretation.empty()) lead += ": " + std::string(interpretation);
-    return BenchStatement{std::move(lead), {}, "; level the turntable"};
+    // Member by member: GCC 12 at -O3 (the Release build) takes the braced form's empty size for
+    // an uninitialised string (a false -Wmaybe-uninitialized, an error under -Werror).
+    BenchStatement statement;
+    statement.lead = std::move(lead);
+    statement.tail = "; level the turntable";
+    return statement;
   }
 };
 
