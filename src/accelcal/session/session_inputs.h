@@ -82,4 +82,25 @@ inline constexpr const char* kPlanned = "planned";
 inline constexpr const char* kOutcome = "outcome";
 }  // namespace write_back_key
 
+// ---- the session clock ------------------------------------------------------------------------
+
+// The session clock's pseudo step (app/wizard/session_clock.h): the last accepted capture's t
+// and wall time ("t wall", s), and each resume's shift ("resume 1", "resume 2", ...: in words).
+inline constexpr const char* kSessionClockStepId = "session_clock";
+namespace session_clock_key {
+inline constexpr const char* kLastCapture = "last_capture";
+inline constexpr const char* kResumePrefix = "resume ";
+}  // namespace session_clock_key
+
+// ---- a refit ------------------------------------------------------------------------------
+
+// A refit of the finished session (app/refit_session.h) records at its step "refit N" (N from 1)
+// when it ran (ISO 8601) and each change it made, "change 1", "change 2", ... ("gravity:
+// standard -> 9.78030 +- 0.00001").
+inline constexpr const char* kRefitStepPrefix = "refit ";
+namespace refit_key {
+inline constexpr const char* kAt = "at";
+inline constexpr const char* kChangePrefix = "change ";
+}  // namespace refit_key
+
 }  // namespace accelcal
