@@ -30,6 +30,7 @@
 #include "cli/terminal_answers.h"
 #include "cli/gravity_options.h"
 #include "cli/wizard_fixture.h"
+#include "accelcal/app/fixture/fixture_driver.h"
 #include "cli/wizard_journal.h"
 #include "cli/shipped_files.h"
 #include "frontend.h"
@@ -108,11 +109,12 @@ int RunWizard(const WizardCommandOptions& options) {
   std::unique_ptr<SessionJournal> journal = OpenWizardJournal(session, procedure.title, options.source);
   FixtureWizard fixture;
   if (several) {
-    // Line mode names a sensor left out of a pose as it happens; the TUI keeps the screen.
+    // Line mode says each sensor after each pose, a line each (taken: still, in its pose; or
+    // left out: why); the TUI shows them live (WizardView::sensors).
     const bool line_mode = tty || options.plain || ::isatty(STDOUT_FILENO) != 1;
     fixture = OpenFixtureWizard(options, source_options, procedure, *journal,
                                 [line_mode](const std::string& note) {
-                                  if (line_mode) std::cout << "  note: " << note << "\n";
+                                  if (line_mode) std::cout << "  " << note << "\n";
                                 });
   }
   SampleSource& samples = several ? *fixture.source : *source;
@@ -136,22 +138,27 @@ int RunWizard(const WizardCommandOptions& options) {
   // silently ignored.
   wizard.notes = UnusedResumeFlags(record, session, options.gravity_flag, options.place);
   WizardEngine engine(procedure, samples, record, wizard);
+  // On a fixture, a sensor left out of a pose is asked about on top of the engine's screens.
+  std::unique_ptr<FixtureWizardDriver> fixture_driver;
+  if (several) fixture_driver = std::make_unique<FixtureWizardDriver>(engine, *fixture.journal, *fixture.source);
+  WizardDriver& driver = several ? static_cast<WizardDriver&>(*fixture_driver) : engine;
 
   const bool terminal = ::isatty(STDIN_FILENO) == 1 && ::isatty(STDOUT_FILENO) == 1;
   int status = 0;
   if (tty) {
-    status = ui::RunLineModeOn(engine, tty->fd(), true, std::cout);  // stdin is the samples'
+    status = ui::RunLineModeOn(driver, tty->fd(), true, std::cout);  // stdin is the samples'
   } else if (terminal && !options.plain) {
-    status = ui::RunTui(engine);
+    status = ui::RunTui(driver);
   } else {
     // On a terminal, q is read while the wizard captures; a pipe's lines wait for questions.
-    status = ui::RunLineModeOn(engine, STDIN_FILENO, ::isatty(STDIN_FILENO) == 1, std::cout);
+    status = ui::RunLineModeOn(driver, STDIN_FILENO, ::isatty(STDIN_FILENO) == 1, std::cout);
   }
   // Done only when the procedure ran to its end; a session left with q stays open to resume.
   if (status == 0 && engine.completed() && several)
     FinishFixtureWizard(fixture, *journal, procedure, procedure_path, session, std::cout);
   if (status == 0 && engine.completed()) {
     journal->MarkDone();
+    fixture_driver.reset();
     fixture = {};     // holds the session: let go first
     journal.reset();  // closed before the session is opened to publish it
     if (!options.no_lab) PublishAtTheEnd(session, procedure_path);

@@ -7,6 +7,7 @@
 #include "tui/help_overlay.h"
 #include "tui/capture_blocks.h"
 #include "tui/render_blocks.h"
+#include "tui/sensor_blocks.h"
 #include "tui/text_util.h"
 
 namespace accelcal::ui {
@@ -56,6 +57,7 @@ std::vector<Block> MiddleBlocks(const WizardView& view, const RenderState& state
       {6, NoticeBlock(view, width)},
       {5, PromptBlock(view, width)},
       {4, std::move(panel)},
+      {6, SensorsBlock(view, state, width)},
       {8, ProblemBlock(view, width)},
       {6, SourceNoticeBlock(view, state, width)},
       {6, DetailBlock(view, state, width)},

@@ -112,11 +112,13 @@ TEST(FixtureCapture, EverySensorsCaptureOfTheLeadsMomentsJudgedOnItsOwn) {
   EXPECT_EQ(board3.samples.front().t_s, board2.samples.front().t_s);  // the same moments
   EXPECT_EQ(board3.samples.size(), board2.samples.size());
   EXPECT_NE(board3.samples.front().raw_counts, board2.samples.front().raw_counts);  // its own
-  ASSERT_EQ(notes.size(), 2u);
-  EXPECT_NE(notes[0].find("SIM01"), std::string::npos) << notes[0];
-  EXPECT_NE(notes[0].find("not still"), std::string::npos) << notes[0];
-  EXPECT_NE(notes[1].find("SIM04"), std::string::npos) << notes[1];
-  EXPECT_NE(notes[1].find("no samples"), std::string::npos) << notes[1];
+  // A line per sensor, in order: left out with why, or taken still and in its pose.
+  ASSERT_EQ(notes.size(), 4u);
+  EXPECT_EQ(notes[0].rfind("sensor 1 (SIM01): left out of 'x up': not still", 0), 0u) << notes[0];
+  EXPECT_EQ(notes[1].rfind("sensor 2 (SIM02): taken, still +x;", 0), 0u) << notes[1];
+  EXPECT_NE(notes[1].find("(the lead)"), std::string::npos) << notes[1];
+  EXPECT_EQ(notes[2].rfind("sensor 3 (SIM03): taken, still +x;", 0), 0u) << notes[2];
+  EXPECT_EQ(notes[3].rfind("sensor 4 (SIM04): left out of 'x up': no samples", 0), 0u) << notes[3];
   const SessionInputs inputs = session->Inputs();
   EXPECT_EQ(inputs.at(kFixtureStepId).at(kFixtureLeadKey), "SIM02");
   EXPECT_NE(inputs.at(kFixtureStepId).at(SensorLeftOutKey("SIM04", "pose_px")).find("sent nothing"),

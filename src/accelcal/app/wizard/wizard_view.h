@@ -82,6 +82,15 @@ struct RecordView {
   std::array<std::vector<AllanCurvePoint>, 3> allan;
 };
 
+// Several sensors at once (a fixture: app/fixture/fixture_driver.h): one sensor's stillness and
+// orientation over the last second, for the capture screens.
+struct SensorStatus {
+  std::string name;    // its serial, "B03"
+  bool ok = false;     // still and in its pose (on a turntable: delivering samples)
+  std::string state;   // a few words: "still +z", "moving", "no data", "shows -x", "lead"
+  std::string detail;  // the figures: "std x 1.6 y 1.5 z 1.8 counts (plate 1.5 1.5 1.7); 0.9 deg from +z"
+};
+
 struct WizardView {
   std::string session;        // session name or file
   std::string procedure;      // procedure title
@@ -141,6 +150,8 @@ struct WizardView {
   std::string source_notice;
   std::string source_detail;
   bool finished = false;          // nothing more to do; the front end may exit
+  // A fixture's sensors, in order, while a pose is placed or captured; empty for one sensor.
+  std::vector<SensorStatus> sensors;
 };
 
 enum class IntentKind {
