@@ -19,7 +19,10 @@
 #include "accelcal/io/text_file.h"
 #include "accelcal/acquire/source/remote_bench.h"
 #include "accelcal/acquire/source/source_spec.h"
+#include "accelcal/acquire/source/sensor_set_spec.h"
+#include "accelcal/base/sensor_columns.h"
 #include "cli/cli_checks.h"
+#include "cli/record_sensors.h"
 #include "cli/commands.h"
 #include "cli/sample_format_flags.h"
 #include "cli/source_preflight.h"
@@ -40,6 +43,7 @@ struct RecordCommandOptions {
   SampleFormatFlags format;   // every source but sim
   std::string bench_listen;   // sim: serve the bench's controls at HOST:PORT (remote_bench.h)
   std::string vehicle_calibration = "undo";  // mavlink: undo | as-is
+  int sensors = 0;  // several sensors at once (record_sensors.h); 0 or 1: one
 };
 
 volatile std::sig_atomic_t g_interrupted = 0;
@@ -128,6 +132,21 @@ void RunRecord(const RecordCommandOptions& o) {
     source_options.format.unit_declared = true;
   }
   if (!o.scenario_path.empty()) source_options.scenario = sim::LoadScenario(o.scenario_path);
+  // Several sensors (a plate of N boards, a scenario's [fixture], a line of 3N columns): one
+  // recording each, beside -o's name.
+  std::string columns_error;  // a malformed list is the one-sensor reader's to refuse
+  if (o.sensors > 1 || (source_options.scenario && source_options.scenario->fixture) ||
+      (!o.format.columns.empty() && SplitSensorColumns(o.format.columns, &columns_error).size() > 1)) {
+    if (o.output_path == "-")
+      throw Error("-o -: several sensors are written one recording each, beside -o's name; give a file "
+                  "name (plate.txt gives plate.SERIAL.txt)");
+    SensorSetRequest request;
+    request.sensors = o.sensors;
+    request.columns = o.format.columns;
+    std::unique_ptr<SensorSetSource> set = OpenSensorSet(o.source_spec, source_options, request);
+    SigintGuard sigint;
+    return RecordSensorSet(*set, o.output_path, o.duration_s, o.quiet, &g_interrupted);
+  }
   std::unique_ptr<SampleSource> source = OpenSource(o.source_spec, source_options);
   if (!o.quiet) PrepareVehicle(*source, o.vehicle_calibration, stderr, stderr);
   else PrepareVehicle(*source, o.vehicle_calibration, nullptr, nullptr);
@@ -226,6 +245,7 @@ void SetupRecordCommand(CLI::App& app) {
       "  accelcal record --source sim --speed 50 --duration 120 -o sim.txt\n"
       "  accelcal record --source mavlink:serial:/dev/ttyACM0@115200,imu=0,rate=200 -o px.txt\n"
       "  accelcal record --source iio:adxl345,rate=100 --duration 60 -o board.txt\n"
+      "  accelcal record --source sim --speed 0 --sensors 8 --duration 600 -o plate.txt\n"
       "  accelcal fit --recording board.txt -o cal.json");
   sub->add_option("--source", opts->source_spec, "Sample source spec")->capture_default_str();
   sub->add_option("-o,--output", opts->output_path, "Recording to write ('-': standard output)")
@@ -254,6 +274,11 @@ void SetupRecordCommand(CLI::App& app) {
                   "sim: serve the virtual bench's controls at HOST:PORT (port 0: any free one, said "
                   "on stderr), so that a wizard reading the samples over another link can place "
                   "the sensor (wizard --bench-control)");
+  sub->add_option("--sensors", opts->sensors,
+                  "sim: a plate of N boards recorded at once, one recording each beside -o's name "
+                  "(plate.txt: plate.SIM01.txt, ...; docs/fixtures.md); also a scenario's [fixture] "
+                  "or --columns naming several sensors")
+      ->check(CLI::Range(1, 64));
   sub->add_flag("-q,--quiet", opts->quiet, "Print nothing but errors");
   sub->callback([opts] { RunRecord(*opts); });
 }
