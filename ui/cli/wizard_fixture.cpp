@@ -14,13 +14,6 @@
 namespace accelcal::cli {
 namespace {
 
-// Each sensor's samples kept for this long behind the newest (a capture's span and a margin), s.
-double KeepS(const Procedure& procedure) {
-  double longest_s = 0.0;
-  for (const ProcedureStep& s : procedure.steps) longest_s = std::max(longest_s, s.duration_s);
-  return longest_s + 15.0;
-}
-
 // The lead a resumed session recorded (its serial), as an index; -1 when none.
 int RecordedLead(const SessionJournal& session, const Fixture& fixture) {
   const SessionInputs inputs = session.Inputs();
@@ -52,7 +45,7 @@ FixtureWizard OpenFixtureWizard(const WizardCommandOptions& options, const Sourc
   std::unique_ptr<SensorSetSource> set = OpenSensorSet(options.source, source_options, request);
   const int lead = RecordedLead(session, set->fixture());
   FixtureWizard fixture;
-  fixture.source = std::make_unique<FixtureLeadSource>(std::move(set), KeepS(procedure), 2.0, lead);
+  fixture.source = std::make_unique<FixtureLeadSource>(std::move(set), FixtureKeepS(procedure), 2.0, lead);
   fixture.journal = std::make_unique<FixtureJournal>(session, *fixture.source, procedure, std::move(notice));
   return fixture;
 }

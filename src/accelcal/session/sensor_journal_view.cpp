@@ -12,7 +12,14 @@ SensorJournalView::SensorJournalView(SessionJournal& session, int sensor)
     throw Error(fmt::format("--sensor {}: the session has {} sensor(s) (1 to {})", sensor + 1,
                             fixture_.sensors.size(), fixture_.sensors.size()));
   }
+  const SessionInputs inputs = session.Inputs();
+  if (const auto set = inputs.find(kSensorSetStep); set != inputs.end())
+    if (const auto lead = set->second.find(kSensorSetLeadKey); lead != set->second.end())
+      for (std::size_t i = 0; i < fixture_.sensors.size(); ++i)
+        if (fixture_.sensors[i].serial == lead->second) lead_ = static_cast<int>(i);
 }
+
+bool SensorJournalView::HasRecords() const { return sensor_ == lead_; }
 
 void SensorJournalView::ReadOnly(const char* what) const {
   throw Error(fmt::format("sensor {} of a session is read through it: {} goes to the session",
@@ -60,16 +67,16 @@ SessionInputs SensorJournalView::Inputs() const {
 }
 
 RecordSummary SensorJournalView::RecordSummaryOf(const std::string& step_id) const {
-  return sensor_ == 0 ? session_.RecordSummaryOf(step_id) : RecordSummary{};
+  return HasRecords() ? session_.RecordSummaryOf(step_id) : RecordSummary{};
 }
 
 void SensorJournalView::VisitRecordChunks(const std::string& step_id,
                                           const std::function<void(const RecordChunk&)>& visit) const {
-  if (sensor_ == 0) session_.VisitRecordChunks(step_id, visit);
+  if (HasRecords()) session_.VisitRecordChunks(step_id, visit);
 }
 
 std::vector<std::string> SensorJournalView::RecordSteps() const {
-  return sensor_ == 0 ? session_.RecordSteps() : std::vector<std::string>{};
+  return HasRecords() ? session_.RecordSteps() : std::vector<std::string>{};
 }
 
 }  // namespace accelcal

@@ -8,8 +8,9 @@
 //   Inputs()          the session's, with the device input (welcome_key::kDevice) replaced by
 //                     the sensor's serial, at the step that held it (or "welcome")
 //   Result()          SensorResult(i); RecordResult records sensor i's
-//   records           the session's (a record step is the plate's: only sensor 0 records one)
-//                     for sensor 0; none for the others
+//   records           the session's for the sensor that led the wizard (a record step is the
+//                     lead's alone: its serial at kSensorSetStep / kSensorSetLeadKey; sensor 0
+//                     when none is recorded); none for the others
 // Every other write throws accelcal::Error (the session is written through itself).
 #pragma once
 
@@ -18,6 +19,12 @@
 #include "accelcal/session/session_journal.h"
 
 namespace accelcal {
+
+// The inputs of a several-sensor session's set (at the pseudo step kSensorSetStep): the serial
+// of the sensor that led the wizard (kSensorSetLeadKey); app/fixture/sensor_batch.h adds why a
+// sensor was left out of a pose.
+inline constexpr const char* kSensorSetStep = "fixture";
+inline constexpr const char* kSensorSetLeadKey = "lead";
 
 class SensorJournalView final : public SessionJournal {
  public:
@@ -51,9 +58,13 @@ class SensorJournalView final : public SessionJournal {
  private:
   [[noreturn]] void ReadOnly(const char* what) const;
 
+  // The records are this sensor's: it led the wizard.
+  bool HasRecords() const;
+
   SessionJournal& session_;
   int sensor_;
   Fixture fixture_;
+  int lead_ = 0;  // the sensor that led the wizard
 };
 
 }  // namespace accelcal

@@ -144,6 +144,20 @@ TEST(FixtureCapture, EverySensorsCaptureOfTheLeadsMomentsJudgedOnItsOwn) {
   EXPECT_NEAR(session->SensorCaptures(0).back().capture.radius_m, 0.07, 1e-12);
 }
 
+// What each sensor keeps behind the newest sample: the longest capture and a margin; a record
+// step (12 hours of drift) is the lead's alone and keeps nothing of the others.
+TEST(FixtureCapture, KeptForTheLongestCaptureNotForARecord) {
+  Procedure p = OnePoseAndATurntable();
+  p.steps[0].duration_s = 10.0;
+  p.steps[1].duration_s = 20.0;
+  EXPECT_DOUBLE_EQ(FixtureKeepS(p), 35.0);
+  ProcedureStep drift;
+  drift.id = "drift";
+  drift.kind = StepKind::kRecord;
+  drift.duration_s = 43200.0;
+  p.steps.push_back(drift);
+  EXPECT_DOUBLE_EQ(FixtureKeepS(p), 35.0);
+}
 
 // A resumed run: the wizard puts the lead's samples on the session clock (a constant added to
 // the source's t, recorded as the clock's "resume 1"), and a turntable run's accepted samples

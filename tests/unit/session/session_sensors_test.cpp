@@ -315,5 +315,24 @@ TEST_F(SessionSensorsTest, EachSensorCountsItsOwnResults) {
   }
 }
 
+// A record step is the lead's (the wizard drives the lead alone): its records are seen through
+// the sensor that led, not through the first sensor, whoever that is.
+TEST(SessionSensors, TheRecordsAreTheLeadsSensors) {
+  std::unique_ptr<SessionJournal> j = MakeMemoryJournal();
+  j->RecordSensors(ThreeBoards());
+  RecordChunk chunk;
+  chunk.samples = {Sample{0.0, Eigen::Vector3d(1, 2, 3)}, Sample{0.01, Eigen::Vector3d(1, 2, 4)}};
+  j->AppendRecordChunk("noise", chunk);
+  EXPECT_EQ(SensorJournalView(*j, 0).RecordSteps().size(), 1u);  // no lead recorded: the first
+  j->RecordInput(kSensorSetStep, kSensorSetLeadKey, "B2");
+  EXPECT_TRUE(SensorJournalView(*j, 0).RecordSteps().empty());
+  EXPECT_EQ(SensorJournalView(*j, 0).RecordSummaryOf("noise").num_chunks, 0);
+  ASSERT_EQ(SensorJournalView(*j, 1).RecordSteps(), std::vector<std::string>{"noise"});
+  EXPECT_EQ(SensorJournalView(*j, 1).RecordSummaryOf("noise").num_chunks, 1);
+  long seen = 0;
+  SensorJournalView(*j, 2).VisitRecordChunks("noise", [&](const RecordChunk&) { ++seen; });
+  EXPECT_EQ(seen, 0);
+}
+
 }  // namespace
 }  // namespace accelcal::session_sensors_test
