@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # `accelcal record --sensors N` (issue 31): a plate of boards recorded at once, one recording per
 # board beside -o's name, each a recording `fit --recording` and `allan` read; a dead board named,
-# without a file; `-o -` refused (several files).
+# without a file; `-o -` refused (several files). And the wizard's record step on a plate: each
+# board's own record.
 # Usage: bash record_sensors.sh ACCELCAL SOURCE_DIR DATA_DIR
 set -euo pipefail
 accelcal=$1 src=$2 data=$3
@@ -30,6 +31,18 @@ expect 0 "$accelcal" record --source sim --speed 0 --scenario "$data/fixture/pla
 [ "$(ls "$work"/faults.B0*.txt | wc -l)" -eq 7 ] || { ls "$work"; fail "not 7 recordings"; }
 [ -e "$work/faults.B05.txt" ] && fail "a file for the dead board"
 grep -q "B05: sent no samples while the others did" "$work/err" || { cat "$work/err"; fail "the dead board not named"; }
+
+# The wizard's record step on a plate of 3 (the noise procedure): the lead's record, and each
+# other board's samples of the same minute as its own record, read by `allan --step`.
+{ yes '' || true; } | "$accelcal" wizard --source sim --speed 0 --sensors 3 --procedure noise.toml \
+  --session "$work/noise.db" --plain > "$work/wizard.out" 2>&1 || { tail "$work/wizard.out"; fail "noise wizard"; }
+for serial in SIM01 SIM03; do
+  expect 0 "$accelcal" allan "$work/noise.db" --step "noise@$serial"
+  grep -q "Allan deviation of $work/noise.db:noise@$serial" "$work/out" || { cat "$work/out"; fail "no record of $serial"; }
+  grep -qE '^(5999|6000|6001) samples at 100 Hz' <(sed -n 2p "$work/out") || { cat "$work/out"; fail "$serial: not a minute of samples"; }
+done
+expect 0 "$accelcal" allan "$work/noise.db" --step noise
+cmp -s <("$accelcal" allan "$work/noise.db" --step noise@SIM01) "$work/out" && fail "SIM01's record is the lead's"
 
 # Several files cannot go to standard output.
 expect 1 "$accelcal" record --source sim --sensors 3 --duration 1 -o -

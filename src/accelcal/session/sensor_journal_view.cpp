@@ -19,7 +19,17 @@ SensorJournalView::SensorJournalView(SessionJournal& session, int sensor)
         if (fixture_.sensors[i].serial == lead->second) lead_ = static_cast<int>(i);
 }
 
-bool SensorJournalView::HasRecords() const { return sensor_ == lead_; }
+std::string SensorRecordStep(const std::string& step_id, const std::string& serial) {
+  return step_id + "@" + serial;
+}
+
+bool IsSensorRecordStep(const std::string& record_step_id) {
+  return record_step_id.find('@') != std::string::npos;
+}
+
+std::string SensorJournalView::MyRecordStep(const std::string& step_id) const {
+  return sensor_ == lead_ ? step_id : SensorRecordStep(step_id, fixture_sensor().serial);
+}
 
 void SensorJournalView::ReadOnly(const char* what) const {
   throw Error(fmt::format("sensor {} of a session is read through it: {} goes to the session",
@@ -67,16 +77,25 @@ SessionInputs SensorJournalView::Inputs() const {
 }
 
 RecordSummary SensorJournalView::RecordSummaryOf(const std::string& step_id) const {
-  return HasRecords() ? session_.RecordSummaryOf(step_id) : RecordSummary{};
+  if (IsSensorRecordStep(step_id)) return {};
+  return session_.RecordSummaryOf(MyRecordStep(step_id));
 }
 
 void SensorJournalView::VisitRecordChunks(const std::string& step_id,
                                           const std::function<void(const RecordChunk&)>& visit) const {
-  if (HasRecords()) session_.VisitRecordChunks(step_id, visit);
+  if (!IsSensorRecordStep(step_id)) session_.VisitRecordChunks(MyRecordStep(step_id), visit);
 }
 
 std::vector<std::string> SensorJournalView::RecordSteps() const {
-  return HasRecords() ? session_.RecordSteps() : std::vector<std::string>{};
+  const std::string mine = sensor_ == lead_ ? "" : SensorRecordStep("", fixture_sensor().serial);
+  std::vector<std::string> out;
+  for (const std::string& id : session_.RecordSteps()) {
+    if (mine.empty() && !IsSensorRecordStep(id)) out.push_back(id);
+    if (!mine.empty() && id.size() > mine.size() && id.compare(id.size() - mine.size(), mine.size(), mine) == 0 &&
+        id.find('@') == id.size() - mine.size())
+      out.push_back(id.substr(0, id.size() - mine.size()));
+  }
+  return out;
 }
 
 }  // namespace accelcal

@@ -8,9 +8,10 @@
 //   Inputs()          the session's, with the device input (welcome_key::kDevice) replaced by
 //                     the sensor's serial, at the step that held it (or "welcome")
 //   Result()          SensorResult(i); RecordResult records sensor i's
-//   records           the session's for the sensor that led the wizard (a record step is the
-//                     lead's alone: its serial at kSensorSetStep / kSensorSetLeadKey; sensor 0
-//                     when none is recorded); none for the others
+//   records           a record step's: the lead's under the step's own id (the sensor that led
+//                     the wizard: its serial at kSensorSetStep / kSensorSetLeadKey; sensor 0
+//                     when none is recorded), each other sensor's under SensorRecordStep(step,
+//                     its serial), seen through its view under the step's own id
 // Every other write throws accelcal::Error (the session is written through itself).
 #pragma once
 
@@ -25,6 +26,12 @@ namespace accelcal {
 // sensor was left out of a pose.
 inline constexpr const char* kSensorSetStep = "fixture";
 inline constexpr const char* kSensorSetLeadKey = "lead";
+
+// Where a record step's samples of a sensor other than the lead are kept: "noise" of "B03" is
+// the record "noise@B03" (the lead's is "noise", what the wizard reads back on a resume).
+std::string SensorRecordStep(const std::string& step_id, const std::string& serial);
+// A record of another sensor than the lead (its id has the '@').
+bool IsSensorRecordStep(const std::string& record_step_id);
 
 class SensorJournalView final : public SessionJournal {
  public:
@@ -58,8 +65,8 @@ class SensorJournalView final : public SessionJournal {
  private:
   [[noreturn]] void ReadOnly(const char* what) const;
 
-  // The records are this sensor's: it led the wizard.
-  bool HasRecords() const;
+  // This sensor's record of `step_id`.
+  std::string MyRecordStep(const std::string& step_id) const;
 
   SessionJournal& session_;
   int sensor_;

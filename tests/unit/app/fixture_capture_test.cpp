@@ -16,6 +16,7 @@
 #include "accelcal/app/fixture/sensor_batch.h"
 #include "accelcal/app/wizard/session_clock.h"
 #include "accelcal/base/error.h"
+#include "accelcal/session/sensor_journal_view.h"
 
 namespace accelcal::fixture_capture_test {
 namespace {
@@ -142,6 +143,52 @@ TEST(FixtureCapture, EverySensorsCaptureOfTheLeadsMomentsJudgedOnItsOwn) {
   EXPECT_NEAR(session->SensorCaptures(1).back().capture.radius_m, 0.10, 1e-12);
   EXPECT_NEAR(session->SensorCaptures(2).back().capture.radius_m, 0.13, 1e-12);
   EXPECT_NEAR(session->SensorCaptures(0).back().capture.radius_m, 0.07, 1e-12);
+}
+
+// A record step is the lead's; each chunk of it is followed by every other sensor's samples of
+// the same moments, on the record's clock (a resumed record's is shifted from the source's), as
+// that sensor's own record. A dead board has none; the engine sees the lead's record only.
+TEST(FixtureCapture, EachSensorsRecordBesideTheLeads) {
+  const Procedure procedure = OnePoseAndATurntable();
+  FixtureLeadSource lead(Plate(), 30.0, 1.0);
+  std::unique_ptr<SessionJournal> session = MakeMemoryJournal();
+  FixtureJournal journal(*session, lead, procedure);
+  lead.bench()->PlaceStatic(Eigen::Vector3d::UnitZ(), 0.0);
+  const double record_shift_s = 5000.0;
+  for (long k = 0; k < 2; ++k) {
+    RecordChunk chunk;
+    chunk.index = k;
+    chunk.samples = LeadCapture(lead, 2.0, 0, "record").samples;
+    for (Sample& s : chunk.samples) s.t_s += record_shift_s;
+    journal.AppendRecordChunk("noise", chunk);
+  }
+  const RecordSummary lead_record = session->RecordSummaryOf("noise");
+  ASSERT_EQ(lead_record.num_chunks, 2);
+  for (const char* serial : {"SIM01", "SIM03"}) {
+    const RecordSummary r = session->RecordSummaryOf(SensorRecordStep("noise", serial));
+    EXPECT_EQ(r.num_chunks, 2) << serial;
+    // One plate, one clock: the same moments, but for the last one or two, which this sensor's
+    // link had not delivered yet when the lead's chunk closed (its next chunk takes them).
+    EXPECT_GE(r.num_samples, lead_record.num_samples - 2) << serial;
+    EXPECT_LE(r.num_samples, lead_record.num_samples) << serial;
+    EXPECT_DOUBLE_EQ(r.t_first_s, lead_record.t_first_s) << serial;
+    EXPECT_NEAR(r.t_last_s, lead_record.t_last_s, 0.025) << serial;
+  }
+  EXPECT_EQ(session->RecordSummaryOf(SensorRecordStep("noise", "SIM04")).num_chunks, 0);  // dead
+  EXPECT_EQ(journal.RecordSteps(), std::vector<std::string>{"noise"});
+  // Board 3's own readings, through its view.
+  std::vector<Sample> board3;
+  SensorJournalView(*session, 2).VisitRecordChunks("noise", [&](const RecordChunk& c) {
+    board3.insert(board3.end(), c.samples.begin(), c.samples.end());
+  });
+  std::vector<Sample> board2;
+  SensorJournalView(*session, 1).VisitRecordChunks("noise", [&](const RecordChunk& c) {
+    board2.insert(board2.end(), c.samples.begin(), c.samples.end());
+  });
+  ASSERT_GE(board3.size() + 2, board2.size());
+  ASSERT_FALSE(board3.empty());
+  EXPECT_EQ(board3.front().t_s, board2.front().t_s);
+  EXPECT_NE(board3.front().raw_counts, board2.front().raw_counts);
 }
 
 // What each sensor keeps behind the newest sample: the longest capture and a margin; a record

@@ -332,6 +332,20 @@ TEST(SessionSensors, TheRecordsAreTheLeadsSensors) {
   long seen = 0;
   SensorJournalView(*j, 2).VisitRecordChunks("noise", [&](const RecordChunk&) { ++seen; });
   EXPECT_EQ(seen, 0);
+  // Another sensor's record of the step, under its own id: seen through its view only.
+  chunk.samples[0].raw_counts.x() = 7.0;
+  j->AppendRecordChunk(SensorRecordStep("noise", "B3"), chunk);
+  ASSERT_EQ(SensorJournalView(*j, 2).RecordSteps(), std::vector<std::string>{"noise"});
+  SensorJournalView(*j, 2).VisitRecordChunks("noise", [&](const RecordChunk& c) {
+    ++seen;
+    EXPECT_EQ(c.samples[0].raw_counts.x(), 7.0);
+  });
+  EXPECT_EQ(seen, 1);
+  ASSERT_EQ(SensorJournalView(*j, 1).RecordSteps(), std::vector<std::string>{"noise"});  // the lead's
+  SensorJournalView(*j, 1).VisitRecordChunks("noise", [&](const RecordChunk& c) {
+    EXPECT_EQ(c.samples[0].raw_counts.x(), 1.0);
+  });
+  EXPECT_TRUE(SensorJournalView(*j, 0).RecordSteps().empty());
 }
 
 }  // namespace
