@@ -120,4 +120,11 @@ said "sensor 7 (B07): taken, still"
 said "sensor 5 (B05): left out of"
 said "Keep the plate as it is. Enter: leave out sensor 5 (B05)"
 [ "$(grep -c '^  sensor [0-9] (B0[0-9]): ' "$work/out")" -ge $((8 * 9)) ] || fail "not a line per board for every turntable run"
+# Each board is a device of its own: its calibration in this session is its history's.
+"$accelcal" history B03 --sessions-dir "$work" --format json > "$work/history.json" ||
+  fail "no history of B03"
+jq -e '.calibrations | length == 1' "$work/history.json" > /dev/null || { cat "$work/history.json" >&2; fail "B03: one calibration"; }
+jq -e --slurpfile c "$work/cal_3.json" '.calibrations[0].parameters.bias_x.value == $c[0].bias_counts[0] and
+  .calibrations[0].parameters.bias_z.value == $c[0].bias_counts[2] and .device == "B03"' "$work/history.json" > /dev/null ||
+  { head -c 600 "$work/history.json" >&2; fail "B03's history is not its own calibration"; }
 echo "fixture_plate_8: ok"

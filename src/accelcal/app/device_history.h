@@ -1,5 +1,7 @@
 // Building a device's calibration history (report/device_history.h) from the sessions of one
-// directory: every session of the device that has a calibration, in order of creation.
+// directory: every session of the device that has a calibration, in order of creation. Each
+// sensor of a session of several (a fixture, docs/fixtures.md) is a device of its own, known by
+// its serial: its calibration in that session is an entry of its history.
 #pragma once
 
 #include <string>

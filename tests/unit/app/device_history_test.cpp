@@ -53,6 +53,30 @@ class DeviceHistoryTest : public ::testing::Test {
     detail::SqliteStatement(db, "UPDATE session SET created_utc = ? WHERE id = 1").Bind(1, date).Run();
   }
 
+  // A session of a fixture of `serials` created at `date`, sensor i calibrated as cals[i] (null:
+  // not calibrated).
+  void AddFixture(const std::string& name, const std::vector<std::string>& serials,
+                  const std::string& date, const std::vector<const Calibration*>& cals) {
+    const std::string path = (dir_ / (name + ".db")).string();
+    {
+      SessionOpenOptions o;
+      o.procedure = "seed";
+      auto store = SessionStore::Open(path, o);
+      store->RecordInput(kSessionStep, kDeviceKey, "fixture");
+      Fixture f;
+      for (const std::string& serial : serials) {
+        FixtureSensor sensor;
+        sensor.serial = serial;
+        f.sensors.push_back(sensor);
+      }
+      store->RecordSensors(f);
+      for (std::size_t i = 0; i < cals.size(); ++i)
+        if (cals[i] != nullptr) store->RecordSensorResult(static_cast<int>(i), CalibrationToJsonText(*cals[i]));
+    }
+    detail::SqliteDb db(path, false);
+    detail::SqliteStatement(db, "UPDATE session SET created_utc = ? WHERE id = 1").Bind(1, date).Run();
+  }
+
   fs::path dir_;
 };
 
@@ -123,6 +147,39 @@ TEST_F(DeviceHistoryTest, ListSessionsFiltersByDeviceAndProcedure) {
   EXPECT_EQ(dev2[0].name, "s2");
   f.procedure = "other";
   EXPECT_TRUE(ListSessions(dir_.string(), f).sessions.empty());
+}
+
+// Each sensor of a fixture's session is a device of its own: its calibration there joins the
+// history of its serial, beside its sessions alone; a sensor not calibrated there is a session
+// without a result.
+TEST_F(DeviceHistoryTest, EachSensorOfAFixtureIsItsOwnDevice) {
+  Calibration a = testing::ExportTestCalibration();
+  Calibration b = a, other = a;
+  b.model.bias_counts.y() += 3.0;
+  other.model.bias_counts.z() += 50.0;
+  Add("alone", "B2", "2025-01-10T09:00:00.000Z", &a);
+  AddFixture("plate", {"B1", "B2", "B3"}, "2025-03-10T09:00:00.000Z", {&other, &b, nullptr});
+  const DeviceHistory h = BuildDeviceHistory(dir_.string(), "B2");
+  ASSERT_EQ(h.entries.size(), 2u);
+  EXPECT_EQ(h.entries[0].session.name, "alone");
+  EXPECT_EQ(h.entries[1].session.name, "plate");
+  EXPECT_EQ(h.entries[1].session.device, "B2");
+  EXPECT_EQ(h.entries[1].calibration.model.bias_counts, b.model.bias_counts);  // its own, not B1's
+  EXPECT_NEAR(h.entries[1].moves[kBiasY].delta, 3.0, 1e-12);
+  EXPECT_EQ(h.sessions_without_result, 0);
+  // B3 has a session, not calibrated; the fixture's name is no device with a history.
+  try {
+    BuildDeviceHistory(dir_.string(), "B3");
+    FAIL() << "B3 has no calibration";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("device B3 has 1 session(s)"), std::string::npos) << e.what();
+  }
+  try {
+    BuildDeviceHistory(dir_.string(), "B9");
+    FAIL() << "no B9";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("B1, B2, B3"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace
