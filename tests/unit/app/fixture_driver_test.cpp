@@ -6,49 +6,15 @@
 
 #include <gtest/gtest.h>
 
-#include "accelcal/acquire/sim/bench_fixture.h"
-#include "accelcal/acquire/sim/scenario.h"
 #include "accelcal/acquire/source/bench_control.h"
-#include "accelcal/acquire/source/fixture_sim_source.h"
 #include "accelcal/app/fixture/sensor_batch.h"
 #include "accelcal/app/fixture/sensor_look.h"
+#include "fixture_test_support.h"
 
 namespace accelcal::fixture_driver_test {
 namespace {
 
-SimOptions Fast() {
-  SimOptions o;
-  o.speed = 0.0;
-  o.bump_probability = 0.0;
-  o.settle_s = 0.5;
-  return o;
-}
-
-Procedure OnePose() {
-  Procedure p;
-  p.title = "fixture test";
-  p.nominal.bias_counts = Eigen::Vector3d::Constant(2048.0);
-  p.nominal.scale_counts_per_mps2 = Eigen::Vector3d::Constant(34.8);
-  ProcedureStep pose;
-  pose.id = "pose_px";
-  pose.kind = StepKind::kStatic;
-  pose.title = "x up";
-  pose.pose_name = "+x";
-  pose.up = Eigen::Vector3d::UnitX();
-  p.steps.push_back(pose);
-  return p;
-}
-
-// A plate of 4 in a row (board 2 leads), board 1 loose, board 4 dead.
-std::unique_ptr<SensorSetSource> Plate() {
-  sim::BenchFixture plate = sim::RowOfBoards(4);
-  plate.boards[0].fault = sim::BoardFault::kLoose;
-  plate.boards[0].loose_deg = 4.0;
-  plate.boards[3].fault = sim::BoardFault::kDead;
-  sim::Scenario s = sim::DefaultScenario();
-  s.fixture = plate;
-  return std::make_unique<FixtureSimSource>(s, Fast(), 0.2);
-}
+using fixture_test::Plate;
 
 // The engine seen by the driver: reads the lead (as the engine's Poll does), shows the next
 // step's placement, and keeps the intents it was given.
@@ -76,7 +42,7 @@ class EngineStandIn final : public WizardDriver {
 };
 
 struct Bench {
-  Procedure procedure = OnePose();
+  Procedure procedure = fixture_test::OnePoseAndATurntable();
   FixtureLeadSource lead{Plate(), 30.0, 1.0};
   std::unique_ptr<SessionJournal> session = MakeMemoryJournal();
   FixtureJournal journal{*session, lead, procedure};
