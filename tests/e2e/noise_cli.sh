@@ -64,6 +64,10 @@ awk 'length($0) > 80 { exit 1 }' "$work/out" || fail "text wider than 80 columns
 expect 0 "$accelcal" noise SN-E2E --sessions-dir "$work/sessions" --calibration "$work/cal.json" --format json -o "$work/n.json"
 [ "$(j '.unit')" = "m/s^2" ] || fail "calibrated unit"
 check "calibrated z mean" "$(j '.records[0].axes.z.mean')" 9.80665 0.05
+# The calibrated session itself gives the same (the one calibration-input rule).
+expect 0 "$accelcal" noise SN-E2E --sessions-dir "$work/sessions" --calibration "$work/sessions/cal.db" --format json -o "$work/n_db.json"
+cmp -s <(jq -S 'del(.generated_utc)' "$work/n.json") <(jq -S 'del(.generated_utc)' "$work/n_db.json") ||
+  fail "noise --calibration: the session and its calibration file differ"
 
 # One day only: the result says the repeatability needs three days.
 mv "$work/sessions/other.db" "$work/one/"

@@ -48,6 +48,18 @@ grep -Eq '^ +18 .* turntable ' "$work/out" || fail "report capture table"
 expect 0 "$accelcal" report "$work/sessions/bench1.db" --format calibration -o "$work/cal.json"
 grep -q '"format": "accelcal-calibration/1"' "$work/cal.json" || fail "calibration format"
 printf '0 2051 2040 2400\n' | "$accelcal" apply "$work/cal.json" >"$work/applied" || fail "apply"
+# apply reads the session's calibration as report, export-cal and allan do: the same output.
+printf '0 2051 2040 2400\n' | "$accelcal" apply "$work/sessions/bench1.db" >"$work/applied_db" || fail "apply session"
+cmp -s "$work/applied" "$work/applied_db" || { cat "$work/applied" "$work/applied_db"; fail "apply: session and its calibration file differ"; }
+printf '0 2051 2040 2400\n' | XDG_DATA_HOME=$work/xdg "$accelcal" apply bench1 >"$work/applied_name" || fail "apply session by name"
+cmp -s "$work/applied" "$work/applied_name" || fail "apply: a session by its name differs"
+# A sensor the session does not have: named, nothing written.
+set +e
+printf '0 2051 2040 2400\n' | "$accelcal" apply "$work/sessions/bench1.db" --sensor 2 >"$work/applied_2" 2>"$work/err_2"
+code=$?
+set -e
+[ "$code" -ne 0 ] && [ ! -s "$work/applied_2" ] || fail "apply --sensor 2 of a one-sensor session: exit $code"
+grep -q "sensor" "$work/err_2" || { cat "$work/err_2"; fail "apply --sensor 2: no reason"; }
 python3 - "$work/cal.json" "$work/refit.json" <<'PY' || fail "refit differs from the stored calibration"
 import json, sys
 a, b = ({k: json.load(open(p))[k] for k in ("bias_counts", "scale_counts_per_mps2", "misalignment_rad")} for p in sys.argv[1:3])

@@ -6,10 +6,10 @@
 
 #include <fmt/core.h>
 
+#include "accelcal/app/calibration_input.h"
 #include "accelcal/bags/bag_open.h"
 #include "accelcal/calibration/apply.h"
 #include "accelcal/base/error.h"
-#include "accelcal/io/calibration_file.h"
 #include "accelcal/io/recording_stream.h"
 #include "cli/cli_checks.h"
 #include "cli/commands.h"
@@ -19,7 +19,8 @@ namespace accelcal::cli {
 namespace {
 
 struct ApplyCommandOptions {
-  std::string calibration_path;
+  std::string calibration_input;  // a calibration file or a session (app/calibration_input.h)
+  int sensor = 1;                 // --sensor N of a several-sensor session (1-based)
   std::string input_path;  // empty: standard input
   int max_reported = 20;
   SampleFormatFlags format;
@@ -54,7 +55,7 @@ ApplyStreamResult ApplyBag(const ApplyCommandOptions& o, const CalibrationApplie
 }
 
 void RunApply(const ApplyCommandOptions& o) {
-  const Calibration cal = ReadCalibrationFile(o.calibration_path);
+  const Calibration cal = ReadCalibrationInput(o.calibration_input, o.sensor - 1).calibration;
   const SampleFormat format = o.format.Resolve();
   if (format.unit_declared && format.unit.Describe() != cal.reading_unit.Describe())
     throw Error(fmt::format("--unit {}: the calibration was made from readings in {}; apply reads "
@@ -102,7 +103,7 @@ void SetupApplyCommand(CLI::App& app) {
   auto opts = std::make_shared<ApplyCommandOptions>();
   CLI::App* sub = app.add_subcommand(
       "apply",
-      "Apply a calibration file to raw samples: reads lines 't ax ay az [temp_c]' (raw counts,\n"
+      "Apply a calibration (a file, or a session's) to raw samples: reads lines 't ax ay az [temp_c]' (raw counts,\n"
       "blanks, commas or semicolons; or the columns a header row or --columns names) on standard\n"
       "input or from INPUT, and writes 't ax ay az [temp_c]' in m/s^2 on standard output.\n"
       "INPUT may be a ROS bag (.bag, .mcap, .db3, a ROS 2 bag folder): its IMU topic's\n"
@@ -111,10 +112,13 @@ void SetupApplyCommand(CLI::App& app) {
       "status 1).\n\n"
       "Examples:\n"
       "  accelcal apply cal.json < raw.txt > calibrated.txt\n"
+      "  accelcal apply bench.db --sensor 3 raw3.txt > calibrated3.txt\n"
       "  accelcal apply cal.json imu.mcap --topic /imu/data > calibrated.txt");
-  sub->add_option("calibration", opts->calibration_path, "Calibration file (JSON) from 'accelcal fit'")
-      ->required()
-      ->check(InputFile());
+  sub->add_option("calibration", opts->calibration_input,
+                  "Calibration file (JSON, from 'accelcal fit' or 'report --format calibration') or session")
+      ->required();
+  sub->add_option("--sensor", opts->sensor, "Which sensor of a several-sensor session (1-based)")
+      ->check(CLI::PositiveNumber)->capture_default_str();
   sub->add_option("input", opts->input_path,
                   "Samples to calibrate: a recording file or a ROS bag (default: standard input)")
       ->check(InputFileOrBag());

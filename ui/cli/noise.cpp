@@ -9,10 +9,10 @@
 #include <fmt/core.h>
 
 #include "accelcal/analysis/noise_analysis.h"
+#include "accelcal/app/calibration_input.h"
 #include "accelcal/app/noise_records.h"
 #include "accelcal/bags/bag_open.h"
 #include "accelcal/base/error.h"
-#include "accelcal/io/calibration_file.h"
 #include "accelcal/io/noise_file.h"
 #include "accelcal/io/procedure_file.h"
 #include "accelcal/report/noise_text.h"
@@ -102,7 +102,7 @@ void RunNoise(const NoiseCommandOptions& o) {
   if (o.device.empty() == o.record_paths.empty())
     throw Error("give either a DEVICE serial or --record FILE..., not both");
   std::optional<Calibration> calibration;
-  if (!o.calibration_path.empty()) calibration = ReadCalibrationFile(o.calibration_path);
+  if (!o.calibration_path.empty()) calibration = ReadCalibrationInput(o.calibration_path).calibration;
   else calibration = AsRecordedForBags(o);
   std::vector<std::string> notes;
   FileReadings readings;
@@ -152,7 +152,7 @@ void SetupNoiseCommand(CLI::App& app) {
                   "The noise procedure whose sessions count (default: procedures/noise.toml)")
       ->transform(ShippedFile(kShippedProcedures));
   sub->add_option("--calibration", opts->calibration_path,
-                  "Calibration file (JSON): results in m/s^2 instead of counts");
+                  "Calibration file (JSON) or a calibrated session: results in m/s^2 instead of counts");
   opts->format.Bind(*sub, "the --record files");
   sub->add_option("--format", opts->output_format, "text or json")
       ->check(CLI::IsMember({"text", "json"}))->capture_default_str();

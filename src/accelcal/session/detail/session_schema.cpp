@@ -117,6 +117,8 @@ void MigrateToLabIdentity(SqliteDb& db) {
 // migration's transaction. The checksum now covers the sensor too: it is computed anew for the
 // rows whose version-4 checksum holds, and a row that was already damaged keeps no checksum
 // (read as damaged, as before), so the migration never blesses damage.
+// The text below repeats today's CREATE TABLE on purpose: a migration makes version 7 as it was,
+// and must not change when a later version changes the current schema.
 constexpr const char* kCapturesV7 = R"sql(
 CREATE TABLE captures_v7 (
   seq INTEGER PRIMARY KEY AUTOINCREMENT,
