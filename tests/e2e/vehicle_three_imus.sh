@@ -124,7 +124,8 @@ done
 [ "$(sort -u "$work/numbers" | wc -l)" -eq 3 ] || { cat "$work/numbers" >&2; fail "3 certificates, each its own number"; }
 
 # The batch summary: beside the session and from report, one row per IMU, each with its verdict.
-"$accelcal" report "$db" --format batch-csv -o "$work/batch.csv" > /dev/null
+# (report takes the limits from the procedure given: the session ran the autopilot one.)
+"$accelcal" report "$db" --procedure "$work/short.toml" --format batch-csv -o "$work/batch.csv" > /dev/null
 cmp -s "$work/batch.csv" "$work/fc.batch.csv" || {
   diff "$work/batch.csv" "$work/fc.batch.csv" >&2; fail "the batch summary beside the session differs from report's"; }
 head -1 "$work/batch.csv" | grep -qx 'sensor,serial,verdict,bias_x,bias_y,bias_z,scale_x,scale_y,scale_z,a_yz,a_zy,a_zx,reason' ||
@@ -133,5 +134,27 @@ head -1 "$work/batch.csv" | grep -qx 'sensor,serial,verdict,bias_x,bias_y,bias_z
 for n in 1 2 3; do
   grep -q "^$n,\"FC1-ACC$((n - 1))\",PASS," "$work/batch.csv" || { cat "$work/batch.csv" >&2; fail "IMU $((n - 1)) passes"; }
 done
-said "FC1-ACC2"
+stop_bench
+
+# The same vehicle with IMU 2 silent from the start: the session goes on with the other two, and
+# the silent one is named with why, never calibrated.
+start_bench 20 node "$source_dir/tests/peers/mavlink_vehicle.cjs" --tcp 0 --msg ardupilot \
+  --bench-truth "$bench_truth" --imu-truth "${truths[0]}" --imu-truth "${truths[1]}" \
+  --imu-truth "${truths[2]}" --silent-imu 2
+mav="mavlink:tcp:127.0.0.1:$peer_port"
+db=$work/silent.db
+set +e
+{ printf "$welcome"; yes ''; } | timeout 600 "$accelcal" wizard --source "$mav" --fixture "$fixture" \
+  --bench-control "127.0.0.1:$bench_port" --procedure "$work/short.toml" --session "$db" --plain \
+  > "$work/out" 2> "$work/err"
+code=${PIPESTATUS[1]}
+set -e
+stop_bench
+[ "$code" -eq 0 ] || { tail -40 "$work/out" >&2; cat "$work/err" >&2; fail "the wizard (IMU 2 silent) exited $code"; }
+"$accelcal" report "$db" --procedure "$work/short.toml" --format batch-csv -o "$work/batch.csv" > /dev/null
+grep -q '^3,"FC1-ACC2",NO CALIBRATION,,,,,,,,,,"no capture' "$work/batch.csv" ||
+  { cat "$work/batch.csv" >&2; fail "the silent IMU 2, named"; }
+for n in 1 2; do
+  grep -q "^$n,\"FC1-ACC$((n - 1))\",PASS," "$work/batch.csv" || { cat "$work/batch.csv" >&2; fail "IMU $((n - 1)) passes beside a silent one"; }
+done
 echo "vehicle_three_imus: ok"
