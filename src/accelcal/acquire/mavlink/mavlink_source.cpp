@@ -304,12 +304,13 @@ void MavlinkSource::ChooseIfDue(Lane& lane, double now_s) {
   std::uint32_t best = lane.held.begin()->first;
   for (const auto& [message, readings] : lane.held)
     if (Preference(message) < Preference(best)) best = message;
-  const std::vector<ImuReading> held = std::move(lane.held[best]);
+  // The readings held while choosing are dropped (Choose clears them), as before several IMUs:
+  // the choice's notice is then this Read's only news (samples in the same Read would put the
+  // link's own news over it in the status).
   Choose(lane, best);
   Notice(lane, fmt::format("{}: no HIGHRES_IMU of IMU {} came; reading {} instead", connection_.LinkName(),
                            lane.imu, MessageName(best)),
          SourceNoticeKind::kCoarserReadings);
-  for (const ImuReading& r : held) Emit(lane, r);
 }
 
 void MavlinkSource::Choose(Lane& lane, std::uint32_t message) {
