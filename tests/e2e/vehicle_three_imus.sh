@@ -16,6 +16,7 @@ data_dir=$3
 . "$source_dir/tests/e2e/lib/common.bash"
 . "$source_dir/tests/e2e/lib/clumsy.bash"
 . "$source_dir/tests/e2e/lib/remote_bench.bash"
+. "$source_dir/tests/e2e/lib/sensor_checks.bash"
 . "$source_dir/tests/peers/node_peers.bash"
 trap 'stop_bench; rm -rf "$work"' EXIT
 command -v jq > /dev/null || { echo "jq missing: skipped"; exit 77; }
@@ -48,6 +49,7 @@ start_bench 20 node "$source_dir/tests/peers/mavlink_vehicle.cjs" --tcp 0 --msg 
 mav="mavlink:tcp:127.0.0.1:$peer_port"
 fixture=$data_dir/fixture/vehicle_3imu.toml
 db=$work/fc.db
+REPORT_ARGS=(--procedure "$work/short.toml")  # the session ran the autopilot procedure
 
 # The welcome's answers: the vehicle's serial, the operator, the place, the bench's gravity and
 # its identified equipment (the virtual bench's lab, scenarios/bench_default.toml [lab]).
@@ -62,21 +64,9 @@ pid=$!
 exec 3> "$work/answers"
 printf "$welcome" >&3
 printf '\n%.0s' $(seq 9) >&3
-for _ in $(seq 12000); do
-  grep -q '^\[8/' "$work/out.1" 2>/dev/null && break  # step 8: five poses taken
-  kill -0 "$pid" 2>/dev/null || break
-  sleep 0.01
-done
-kill -0 "$pid" 2>/dev/null || { cat "$work/out.1" >&2; fail "the first run ended before it was killed"; }
-grep -q '^\[8/.*-y up' "$work/out.1" || { cat "$work/out.1" >&2; fail "the first run is not at the sixth pose"; }
-kill -9 "$pid"
-wait "$pid" 2>/dev/null || true
+kill_at_step "$pid" "$work/out.1" 8  # step 8: five poses taken
 exec 3>&-
-captures_of() {  # SENSOR [KIND] -> how many captures the session holds of it (of that kind)
-  "$accelcal" export "$db" --sensor "$1" -o "$work/export_$1.csv" > /dev/null
-  grep -v '^#' "$work/export_$1.csv" | tail -n +2 | awk -F, -v k="${2:-}" 'k == "" || $2 == k' |
-    cut -d, -f1 | uniq | wc -l
-}
+grep -q '^\[8/.*-y up' "$work/out.1" || fail "the first run was not at the sixth pose (-y up)"
 for n in 1 2 3; do
   before=$(captures_of "$n")
   [ "$before" -eq 5 ] || fail "the first run, killed at the sixth pose, holds $before captures of IMU $((n - 1)), not 5"
@@ -102,21 +92,7 @@ for n in 1 2 3; do
   IFS=';' read -r b k m <<< "${truths[$((n - 1))]}"
   IFS=',' read -r yz zy zx <<< "$m"
   echo "{\"bias_counts\": [$b], \"scale_counts_per_mps2\": [$k], \"misalignment_rad\": {\"yz\": $yz, \"zy\": $zy, \"zx\": $zx}}" > "$work/truth_$n.json"
-  "$accelcal" report "$db" --sensor "$n" --format calibration -o "$work/cal_$n.json" > /dev/null ||
-    fail "no calibration of IMU $((n - 1))"
-  jq -e --slurpfile t "$work/truth_$n.json" '
-    def z(v; s; w): ((v - w) / s) | fabs;
-    [range(3) as $i | z(.bias_counts[$i]; .uncertainty.bias_counts[$i]; $t[0].bias_counts[$i]),
-                      z(.scale_counts_per_mps2[$i]; .uncertainty.scale_counts_per_mps2[$i];
-                        $t[0].scale_counts_per_mps2[$i])]
-    + [z(.misalignment_rad.yz; .uncertainty.misalignment_rad.yz; $t[0].misalignment_rad.yz),
-       z(.misalignment_rad.zy; .uncertainty.misalignment_rad.zy; $t[0].misalignment_rad.zy),
-       z(.misalignment_rad.zx; .uncertainty.misalignment_rad.zx; $t[0].misalignment_rad.zx)]
-    | max < 4' "$work/cal_$n.json" > /dev/null || {
-    jq -c '{bias_counts, scale_counts_per_mps2, misalignment_rad, uncertainty}' "$work/cal_$n.json" >&2
-    cat "$work/truth_$n.json" >&2
-    fail "IMU $((n - 1)): more than 4 sigma from its truth"
-  }
+  sensor_within_truth "$n" "IMU $((n - 1))" 4
   [ -s "$work/fc.$serial.report.txt" ] || fail "no report of $serial"
   grep -q "$serial" "$work/fc.$serial.report.txt" || fail "$serial's report does not name it"
   sed -n 's/.*Certificate No.: *\(ACC-[^ ]*\).*/\1/p' "$work/fc.$serial.report.txt" >> "$work/numbers"
