@@ -12,6 +12,7 @@ source_dir=$2
 data_dir=$3
 . "$source_dir/tests/e2e/lib/common.bash"
 . "$source_dir/tests/e2e/lib/clumsy.bash"
+. "$source_dir/tests/e2e/lib/sensor_checks.bash"
 command -v jq > /dev/null || { echo "jq missing: skipped"; exit 77; }
 short_procedure
 db="$work/plate.db"
@@ -48,11 +49,6 @@ kill -0 "$pid" 2>/dev/null || { cat "$work/out.1" >&2; fail "the first run ended
 kill -9 "$pid"
 wait "$pid" 2>/dev/null || true
 exec 3>&-
-captures_of() {  # SENSOR [KIND] -> how many captures the session holds of it (of that kind)
-  "$accelcal" export "$db" --sensor "$1" -o "$work/export_$1.csv" > /dev/null
-  grep -v '^#' "$work/export_$1.csv" | tail -n +2 | awk -F, -v k="${2:-}" 'k == "" || $2 == k' |
-    cut -d, -f1 | uniq | wc -l
-}
 before=$(captures_of 1)
 [ "$before" -eq 5 ] || fail "the first run, killed at the sixth pose, holds $before captures of sensor 1, not 5"
 
@@ -74,21 +70,7 @@ truth() {  # SERIAL -> the board's truth as a calibration-shaped JSON (jq reads 
 for n in 1 2 3 4 6 7 8; do
   serial=$(printf 'B%02d' "$n")
   truth "$serial" > "$work/truth_$n.json"
-  "$accelcal" report "$db" --sensor "$n" --format calibration -o "$work/cal_$n.json" > /dev/null ||
-    fail "no calibration of sensor $n ($serial)"
-  jq -e --slurpfile t "$work/truth_$n.json" '
-    def z(v; s; w): ((v - w) / s) | fabs;
-    [range(3) as $i | z(.bias_counts[$i]; .uncertainty.bias_counts[$i]; $t[0].bias_counts[$i]),
-                      z(.scale_counts_per_mps2[$i]; .uncertainty.scale_counts_per_mps2[$i];
-                        $t[0].scale_counts_per_mps2[$i])]
-    + [z(.misalignment_rad.yz; .uncertainty.misalignment_rad.yz; $t[0].misalignment_rad.yz),
-       z(.misalignment_rad.zy; .uncertainty.misalignment_rad.zy; $t[0].misalignment_rad.zy),
-       z(.misalignment_rad.zx; .uncertainty.misalignment_rad.zx; $t[0].misalignment_rad.zx)]
-    | max < 4' "$work/cal_$n.json" > /dev/null || {
-    jq -c '{bias_counts, scale_counts_per_mps2, misalignment_rad, uncertainty}' "$work/cal_$n.json" >&2
-    cat "$work/truth_$n.json" >&2
-    fail "sensor $n ($serial): more than 4 sigma from its truth"
-  }
+  sensor_within_truth "$n" "sensor $n ($serial)" 4
   [ -s "$work/plate.$serial.report.txt" ] || fail "no report of $serial"
   grep -q "$serial" "$work/plate.$serial.report.txt" || fail "$serial's report does not name it"
   sed -n 's/.*Certificate No.: *\(ACC-[^ ]*\).*/\1/p' "$work/plate.$serial.report.txt" >> "$work/numbers"

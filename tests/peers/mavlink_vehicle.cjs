@@ -13,6 +13,16 @@
 // table (--param NAME=VALUE[:TYPE]) answered by PARAM_REQUEST_READ/LIST and changed by
 // PARAM_SET, which is echoed; a changed calibration applies to the next samples, as on a vehicle.
 //
+// Several IMUs, each with its own truth (issue 31): --bench-truth B;K;M names the bench's sensor
+// (its bias counts, scale counts/(m/s^2) and misalignment a_yz,a_zy,a_zx rad: the scenario's
+// [sensor]), and each --imu-truth B;K;M one IMU instance (0, 1, 2 in order). Every sample line
+// is taken back to the specific force on the bench's platform, a_p = T0 (raw - B0) / K0, then
+// each IMU reads raw_i = K_i T_i^-1 a_p + B_i (the model of docs/model.md, written out here on
+// its own), its counts sent as they are in RAW_IMU or as raw_i / 1000 m/s^2 in HIGHRES_IMU and
+// SCALED_IMU2/3 (the vehicle's own calibration not applied). --msg ardupilot sends what
+// ArduPilot sends for three IMUs: RAW_IMU (id 0), SCALED_IMU2 and SCALED_IMU3. --silent-imu I:
+// instance I never sends.
+//
 // Faults (each one of the clumsy bench's): --reboot-at S or SIGUSR1 (the vehicle goes away for
 // 2.5 s and comes back with its clock and sequence at 0), --drop P (that share of IMU frames never sent:
 // sequence gaps), --sign (MAVLink 2 signing on), --bad-crc-every N, --garbage-every N (100 random
@@ -41,7 +51,16 @@ const opt = {
   oldFirmware: false, rebootAt: null, drop: 0, sign: false, badCrcEvery: 0, garbageEvery: 0,
   unknownEvery: 0, wrongLengthEvery: 0, noParams: false, wrongEcho: null, noEcho: null,
   silentAfter: null, v1: false, seed: 1, summary: null, system: 1, component: 1,
+  benchTruth: null, imuTruths: [], silentImu: null,
 };
+// "bx,by,bz;kx,ky,kz;yz,zy,zx" -> { b, k, m: [yz, zy, zx] }
+function parseTruth(text) {
+  const [b, k, m] = text.split(';').map(part => part.split(',').map(Number));
+  if (![b, k, m].every(v => v && v.length === 3 && v.every(Number.isFinite))) {
+    console.error(`vehicle: a truth is "bx,by,bz;kx,ky,kz;yz,zy,zx", not ${text}`); process.exit(2);
+  }
+  return { b, k, m };
+}
 const argv = process.argv.slice(2);
 for (let i = 0; i < argv.length; ++i) {
   const a = argv[i], next = () => argv[++i];
@@ -72,6 +91,9 @@ for (let i = 0; i < argv.length; ++i) {
     case '--v1': opt.v1 = true; break;
     case '--seed': opt.seed = Number(next()); break;
     case '--summary': opt.summary = next(); break;
+    case '--bench-truth': opt.benchTruth = parseTruth(next()); break;
+    case '--imu-truth': opt.imuTruths.push(parseTruth(next())); break;
+    case '--silent-imu': opt.silentImu = Number(next()); break;
     default: console.error(`vehicle: unknown option ${a}`); process.exit(2);
   }
 }
@@ -156,6 +178,21 @@ function corrected(counts, instance) {
   return rotate(driver.map((a, j) => (a - off[j]) * scl[j]), rot);
 }
 
+// The bench's counts back to the platform's specific force: a_a = (raw - B) / K, a_p = T a_a
+// with T = [[1, -a_yz, a_zy], [0, 1, -a_zx], [0, 0, 1]].
+function platformForce(raw, truth) {
+  const [yz, zy, zx] = truth.m;
+  const [x, y, z] = raw.map((c, j) => (c - truth.b[j]) / truth.k[j]);
+  return [x - yz * y + zy * z, y - zx * z, z];
+}
+// One IMU's counts for the platform's specific force: a_a = T^-1 a_p (back substitution of the
+// unit upper triangle), raw = K a_a + B.
+function imuCounts(p, truth) {
+  const [yz, zy, zx] = truth.m;
+  const z = p[2], y = p[1] + zx * z, x = p[0] + yz * y - zy * z;
+  return [x, y, z].map((a, j) => truth.k[j] * a + truth.b[j]);
+}
+
 // ---- framing and faults ----
 const protocol = opt.v1 ? new MavLinkProtocolV1(opt.system, opt.component)
                         : new MavLinkProtocolV2(opt.system, opt.component, opt.sign ? MavLinkProtocolV2.IFLAG_SIGNED : 0);
@@ -217,6 +254,9 @@ const rates = new Map();  // message id -> Hz asked
 const HIGHRES = 105, SCALED = [26, 116, 129], RAW = 27;
 if (opt.msg === 'scaled') SCALED.forEach(id => rates.set(id, opt.defaultRate));
 if (opt.msg === 'raw') rates.set(RAW, opt.defaultRate);
+if (opt.msg === 'ardupilot') [RAW, SCALED[1], SCALED[2]].forEach(id => rates.set(id, opt.defaultRate));
+const several = opt.imuTruths.length > 0;
+if (several && !opt.benchTruth) { console.error('vehicle: --imu-truth needs --bench-truth'); process.exit(2); }
 const nextDue = new Map();  // message id -> t of its next frame
 let bootT = null;
 const startWall = Date.now();
@@ -232,51 +272,73 @@ function due(key, id, t) {
   return true;
 }
 
+function sendHighres(instance, vt, a, temp) {
+  const m = new common.HighresImu();
+  m.timeUsec = BigInt(Math.round(vt * 1e6));
+  [m.xacc, m.yacc, m.zacc] = a;
+  m.xgyro = m.ygyro = m.zgyro = m.xmag = m.ymag = m.zmag = 0;
+  m.absPressure = m.diffPressure = m.pressureAlt = 0;
+  m.temperature = Number.isFinite(temp) ? temp : 0;
+  m.fieldsUpdated = 0x7 | (Number.isFinite(temp) ? 4096 : 0);
+  m.id = instance;
+  send(m, true);
+}
+function sendScaled(instance, vt, a, temp) {
+  const m = instance === 0 ? new common.ScaledImu() : instance === 1 ? new common.ScaledImu2() : new common.ScaledImu3();
+  m.timeBootMs = Math.round(vt * 1000);
+  [m.xacc, m.yacc, m.zacc] = a.map(v => Math.max(-32768, Math.min(32767, Math.round(v / 9.80665 * 1000))));
+  m.xgyro = m.ygyro = m.zgyro = m.xmag = m.ymag = m.zmag = 0;
+  m.temperature = Number.isFinite(temp) ? Math.round(temp * 100) || 1 : 0;
+  send(m, true);
+}
+function sendRaw(instance, vt, counts, temp) {
+  const m = new common.RawImu();
+  m.timeUsec = BigInt(Math.round(vt * 1e6));
+  [m.xacc, m.yacc, m.zacc] = counts.map(c => Math.max(-32768, Math.min(32767, Math.round(c))));
+  m.xgyro = m.ygyro = m.zgyro = m.xmag = m.ymag = m.zmag = 0;
+  m.id = instance;
+  m.temperature = Number.isFinite(temp) ? Math.round(temp * 100) || 1 : 0;
+  send(m, true);
+}
+
+// Several IMUs, each its own truth (--imu-truth), its counts sent as the mode says.
+function streamImus(t, vt, raw, temp) {
+  const p = platformForce(raw, opt.benchTruth);
+  opt.imuTruths.forEach((truth, instance) => {
+    if (instance === opt.silentImu) return;
+    const counts = imuCounts(p, truth);
+    const a = counts.map(c => c / 1000);  // m/s^2, for HIGHRES_IMU and SCALED_IMU*
+    if (opt.msg === 'highres' && due(HIGHRES * 10 + instance, HIGHRES, t)) sendHighres(instance, vt, a, temp);
+    if (opt.msg === 'scaled' && due(SCALED[instance], SCALED[instance], t)) sendScaled(instance, vt, a, temp);
+    if (opt.msg === 'raw' && due(RAW * 10 + instance, RAW, t)) sendRaw(instance, vt, counts, temp);
+    if (opt.msg === 'ardupilot') {
+      if (instance === 0 && due(RAW * 10, RAW, t)) sendRaw(0, vt, counts, temp);
+      if (instance > 0 && due(SCALED[instance], SCALED[instance], t)) sendScaled(instance, vt, a, temp);
+    }
+  });
+}
+
 function streamSample(t, raw, temp) {
   if (bootT === null) bootT = t;
   const vt = t - bootT + 0.5;  // the vehicle's clock: s since boot
+  if (several) { streamImus(t, vt, raw, temp); return; }
   const instances = opt.secondImu ? [opt.imu, (opt.imu + 1) % 3] : [opt.imu];
   for (const instance of instances) {
     // A second IMU reads twice the first: picking the wrong one cannot go unseen.
     const counts2 = instance === opt.imu ? raw : raw.map(c => 2 * c);
     const a = corrected(counts2, instance);
-    if (opt.msg === 'highres' && due(HIGHRES * 10 + instance, HIGHRES, t)) {
-      const m = new common.HighresImu();
-      m.timeUsec = BigInt(Math.round(vt * 1e6));
-      [m.xacc, m.yacc, m.zacc] = a;
-      m.xgyro = m.ygyro = m.zgyro = m.xmag = m.ymag = m.zmag = 0;
-      m.absPressure = m.diffPressure = m.pressureAlt = 0;
-      m.temperature = Number.isFinite(temp) ? temp : 0;
-      m.fieldsUpdated = 0x7 | (Number.isFinite(temp) ? 4096 : 0);
-      m.id = instance;
-      send(m, true);
-    }
+    if (opt.msg === 'highres' && due(HIGHRES * 10 + instance, HIGHRES, t)) sendHighres(instance, vt, a, temp);
     const scaledId = SCALED[instance];
-    if (opt.msg === 'scaled' && due(scaledId, scaledId, t)) {
-      const m = instance === 0 ? new common.ScaledImu() : instance === 1 ? new common.ScaledImu2() : new common.ScaledImu3();
-      m.timeBootMs = Math.round(vt * 1000);
-      [m.xacc, m.yacc, m.zacc] = a.map(v => Math.max(-32768, Math.min(32767, Math.round(v / 9.80665 * 1000))));
-      m.xgyro = m.ygyro = m.zgyro = m.xmag = m.ymag = m.zmag = 0;
-      m.temperature = Number.isFinite(temp) ? Math.round(temp * 100) || 1 : 0;
-      send(m, true);
-    }
-    if (opt.msg === 'raw' && instance === opt.imu && due(RAW, RAW, t)) {
-      const m = new common.RawImu();
-      m.timeUsec = BigInt(Math.round(vt * 1e6));
-      [m.xacc, m.yacc, m.zacc] = counts2.map(c => Math.round(c));
-      m.xgyro = m.ygyro = m.zgyro = m.xmag = m.ymag = m.zmag = 0;
-      m.id = instance;
-      m.temperature = Number.isFinite(temp) ? Math.round(temp * 100) || 1 : 0;
-      send(m, true);
-    }
+    if (opt.msg === 'scaled' && due(scaledId, scaledId, t)) sendScaled(instance, vt, a, temp);
+    if (opt.msg === 'raw' && instance === opt.imu && due(RAW, RAW, t)) sendRaw(instance, vt, counts2, temp);
   }
 }
 // HIGHRES_IMU is asked per message, the instances share it (as on ArduPilot): `due` is keyed by
 // message and instance so each instance keeps its own pace.
 function setRate(id, hz) {
   rates.set(id, hz);
-  if (id === HIGHRES) for (const i of [0, 1, 2]) nextDue.delete(HIGHRES * 10 + i);
-  else nextDue.delete(id);
+  if (id === HIGHRES || id === RAW) for (const i of [0, 1, 2]) nextDue.delete(id * 10 + i);
+  nextDue.delete(id);
 }
 
 // ---- what the vehicle answers ----
@@ -326,6 +388,7 @@ function handle(packet) {
       const hz = data.startStop ? data.reqMessageRate : 0;
       if (opt.msg === 'scaled') SCALED.forEach(s => setRate(s, hz));
       if (opt.msg === 'raw') setRate(RAW, hz);
+      if (opt.msg === 'ardupilot') [RAW, SCALED[1], SCALED[2]].forEach(s => setRate(s, hz));
       console.error(`vehicle: REQUEST_DATA_STREAM ${data.reqStreamId} at ${hz} Hz`);
     }
   }
@@ -387,6 +450,7 @@ function reboot() {
     rebooting = false; bootT = null; seq = 0; rates.clear(); nextDue.clear();
     if (opt.msg === 'scaled') SCALED.forEach(id => rates.set(id, opt.defaultRate));
     if (opt.msg === 'raw') rates.set(RAW, opt.defaultRate);
+    if (opt.msg === 'ardupilot') [RAW, SCALED[1], SCALED[2]].forEach(id => rates.set(id, opt.defaultRate));
     if (server) listenTcp(rebootPort);
     console.error('vehicle: back after the reboot');
   }, 2500);

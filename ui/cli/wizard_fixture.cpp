@@ -4,6 +4,7 @@
 
 #include <fmt/core.h>
 
+#include "accelcal/acquire/source/remote_bench.h"
 #include "accelcal/acquire/source/sensor_set_spec.h"
 #include "accelcal/app/fixture/fixture_finish.h"
 #include "accelcal/app/fixture/sensor_batch.h"
@@ -43,6 +44,10 @@ FixtureWizard OpenFixtureWizard(const WizardCommandOptions& options, const Sourc
   request.columns = options.columns;
   if (!options.fixture_path.empty()) request.fixture = LoadFixture(options.fixture_path);
   std::unique_ptr<SensorSetSource> set = OpenSensorSet(options.source, source_options, request);
+  // The virtual bench behind a real link (a test vehicle's IMUs): its controls move them all.
+  if (!options.bench_control.empty())
+    set = WithRemoteBench(std::move(set), ParseHostPort(options.bench_control, options.bench_control,
+                                                        "--bench-control HOST:PORT"));
   const int lead = RecordedLead(session, set->fixture());
   FixtureWizard fixture;
   fixture.source = std::make_unique<FixtureLeadSource>(std::move(set), FixtureKeepS(procedure), 2.0, lead);

@@ -15,7 +15,9 @@
 
 #include <gtest/gtest.h>
 
+#include "accelcal/acquire/mavlink/mavlink_sensor_set.h"
 #include "accelcal/acquire/mavlink/mavlink_source.h"
+#include "accelcal/acquire/source/sensor_set_spec.h"
 #include "accelcal/acquire/mavlink/param_client.h"
 #include "source_test_support.h"
 #include "test_support.h"
@@ -217,6 +219,81 @@ TEST(MavlinkSourceTest, ParametersReadByName) {
   EXPECT_FLOAT_EQ(r.values.at("INS_ACCOFFS_X").value, 0.25f);
   EXPECT_FLOAT_EQ(r.values.at("INS_ACCSCAL_X").value, 1.01f);
   EXPECT_EQ(r.unanswered, std::vector<std::string>{"NO_SUCH_PARAM"});
+}
+
+std::vector<std::uint8_t> Raw(FrameWriter& w, double t_s, std::int16_t z_counts, std::uint8_t id) {
+  Payload p(29, 0);  // time_usec, x, y, z acc, gyro, mag (int16), id (extension), temperature
+  const auto t_us = static_cast<std::uint64_t>(t_s * 1e6);
+  std::memcpy(p.data(), &t_us, 8);
+  std::memcpy(p.data() + 12, &z_counts, 2);
+  p[26] = id;
+  return w.Encode(kRawImu, p);
+}
+
+Fixture ThreeImus() {
+  Fixture f;
+  for (const char* serial : {"ACC0", "ACC1", "ACC2"}) {
+    FixtureSensor s;
+    s.serial = serial;
+    f.sensors.push_back(s);
+  }
+  return f;
+}
+
+// Issue 31: the IMUs of one vehicle on one link, as ArduPilot sends them (RAW_IMU of IMU 0,
+// SCALED_IMU2), each its own sensor; IMU 2 never sends: it goes dead, named, the others stay up.
+TEST(MavlinkSensorSetTest, EachImuInstanceItsOwnSensorAndADeadOneNamed) {
+  FakeVehicle vehicle([](FrameWriter& w, int tick) {
+    return std::vector<std::vector<std::uint8_t>>{Raw(w, 0.01 * tick, 4321, 0),
+                                                  Scaled(w, kScaledImu2, 0.01 * tick, 1000)};
+  });
+  SourceOptions o = LinkOptions();
+  o.dead_after_s = 1.0;
+  SensorSetRequest request;
+  request.fixture = ThreeImus();
+  std::unique_ptr<SensorSetSource> set =
+      OpenSensorSet(fmt::format("mavlink:tcp:127.0.0.1:{}", vehicle.port()), o, request);
+  ASSERT_NE(dynamic_cast<MavlinkSensorSet*>(set.get()), nullptr);
+  EXPECT_EQ(set->Describe(), fmt::format("mavlink:tcp:127.0.0.1:{} (IMUs 0-2: ACC0, ACC1, ACC2)", vehicle.port()));
+  SensorSetSamples got;
+  for (int i = 0; i < 400 && (set->status(0).samples_total < 20 || set->status(1).samples_total < 20 ||
+                              set->status(2).link != LinkState::kDead);
+       ++i)
+    set->Read(0.05, &got);
+  ASSERT_GE(got.per_sensor[0].size(), 20u);
+  ASSERT_GE(got.per_sensor[1].size(), 20u);
+  EXPECT_TRUE(got.per_sensor[2].empty());
+  EXPECT_DOUBLE_EQ(got.per_sensor[0].back().raw_counts.z(), 4321.0);  // RAW_IMU: counts as sent
+  EXPECT_NEAR(got.per_sensor[1].back().raw_counts.z(), 9806.65, 1e-6);  // SCALED_IMU2: 1000 mG
+  EXPECT_EQ(set->status(0).link, LinkState::kUp);
+  EXPECT_EQ(set->status(1).link, LinkState::kUp);
+  EXPECT_DOUBLE_EQ(set->status(0).resolution_counts, 1.0);
+  EXPECT_DOUBLE_EQ(set->status(1).resolution_counts, 9.80665);
+  EXPECT_TRUE(Contains(set->status(1).last_notice, "no HIGHRES_IMU of IMU 1 came; reading SCALED_IMU2"))
+      << set->status(1).last_notice;
+  ASSERT_EQ(set->status(2).link, LinkState::kDead);
+  EXPECT_TRUE(Contains(set->status(2).link_error, "arrive, but no HIGHRES_IMU, SCALED_IMU or RAW_IMU of IMU 2"))
+      << set->status(2).link_error;
+  for (std::size_t i = 1; i < got.per_sensor[0].size(); ++i)
+    ASSERT_GT(got.per_sensor[0][i].t_s, got.per_sensor[0][i - 1].t_s);
+}
+
+TEST(MavlinkSensorSetTest, OneVehicleHasAtMostThreeImusAndNoImuOfItsOwn) {
+  SensorSetRequest three;
+  three.fixture = ThreeImus();
+  EXPECT_THROW(OpenSensorSet("mavlink:tcp:127.0.0.1:1,imu=1", SourceOptions{}, three), Error);
+  SensorSetRequest four;
+  four.sensors = 4;
+  try {
+    OpenSensorSet("mavlink:tcp:127.0.0.1:1", SourceOptions{}, four);
+    ADD_FAILURE() << "4 IMUs on one vehicle taken";
+  } catch (const Error& e) {
+    EXPECT_TRUE(Contains(e.what(), "at most 3 sensors on one MAVLink link")) << e.what();
+  }
+  SensorSetRequest columns;
+  columns.sensors = 2;
+  columns.columns = "t,ax,ay,az,ax,ay,az";
+  EXPECT_THROW(OpenSensorSet("mavlink:tcp:127.0.0.1:1", SourceOptions{}, columns), Error);
 }
 
 TEST(MavlinkSpecTest, LinksAndOptions) {

@@ -83,7 +83,7 @@ MavlinkSourceSpec ParseMavlinkSpec(const std::string& spec) {
   return s;
 }
 
-MavlinkSource::MavlinkSource(MavlinkSourceSpec spec, const SourceOptions& options)
+MavlinkSource::MavlinkSource(MavlinkSourceSpec spec, const SourceOptions& options, std::vector<int> imus)
     : spec_(std::move(spec)),
       connection_(spec_.link, [&] {
         ConnectionOptions c;
@@ -92,57 +92,100 @@ MavlinkSource::MavlinkSource(MavlinkSourceSpec spec, const SourceOptions& option
         c.reconnect_initial_s = options.reconnect_initial_s;
         c.reconnect_max_s = options.reconnect_max_s;
         return c;
-      }()),
-      tracker_(options.gap_factor, options.dead_after_s, WallNowS()) {
+      }()) {
+  if (imus.empty()) imus.push_back(spec_.imu);
+  const double now_s = WallNowS();
+  lanes_.reserve(imus.size());
+  for (int imu : imus) {
+    if (imu < 0 || imu > 2) throw Error(fmt::format("source '{}': IMU {} is not 0, 1 or 2", spec_.Describe(), imu));
+    std::optional<std::uint32_t> forced = spec_.message;
+    if (forced && *forced != kHighresImu && *forced != kRawImu) forced = ScaledImuOf(imu);
+    lanes_.emplace_back(imu, forced, options, now_s);
+  }
+  // The rates to ask, each message once (the instances of HIGHRES_IMU or RAW_IMU share one).
+  for (const Lane& lane : lanes_)
+    if (std::find(to_ask_.begin(), to_ask_.end(), WantedMessage(lane)) == to_ask_.end())
+      to_ask_.push_back(WantedMessage(lane));
   connection_.SetObserver(this);
 }
 
 MavlinkSource::~MavlinkSource() { connection_.SetObserver(nullptr); }
 
 ReadResult MavlinkSource::Read(double timeout_s, std::vector<Sample>* out) {
-  ReadResult result;
-  current_ = &result;
+  std::vector<std::vector<Sample>> all(lanes_.size());
+  const ReadResult result = ReadAll(timeout_s, &all);
+  out->insert(out->end(), all.front().begin(), all.front().end());
+  return lanes_.size() == 1 ? result : lanes_.front().result;
+}
+
+bool MavlinkSource::AnyReady() const {
+  for (const Lane& lane : lanes_)
+    if (!lane.ready.empty()) return true;
+  return false;
+}
+
+ReadResult MavlinkSource::ReadAll(double timeout_s, std::vector<std::vector<Sample>>* out) {
+  out->resize(lanes_.size());
+  for (Lane& lane : lanes_) lane.result = ReadResult{};
   const double deadline_s = WallNowS() + std::max(0.0, timeout_s);
   for (;;) {
     const double now_s = WallNowS();
     AdvanceRequest(now_s);
-    ChooseIfDue(now_s);
-    if (!ready_.empty() || now_s >= deadline_s) break;
+    for (Lane& lane : lanes_) ChooseIfDue(lane, now_s);
+    if (AnyReady() || now_s >= deadline_s) break;
     // Wake at least every 100 ms to run the request and the choice on time.
-    connection_.Pump(std::min(deadline_s - now_s, 0.1), [&] { return !ready_.empty(); });
+    connection_.Pump(std::min(deadline_s - now_s, 0.1), [&] { return AnyReady(); });
   }
-  if (!ready_.empty()) {
-    out->insert(out->end(), ready_.begin(), ready_.end());
-    tracker_.OnSamples(ready_.data(), static_cast<long>(ready_.size()), WallNowS(), &result);
-    ready_.clear();
+  ReadResult all;
+  for (std::size_t i = 0; i < lanes_.size(); ++i) {
+    Deliver(lanes_[i], &(*out)[i]);
+    MergeReadResult(lanes_[i].result, &all);
   }
-  tracker_.SetLostFrames(connection_.lost_frames());
-  tracker_.Tick(WallNowS(), &result, Silence());
+  return all;
+}
+
+void MavlinkSource::Deliver(Lane& lane, std::vector<Sample>* out) {
+  if (!lane.ready.empty()) {
+    out->insert(out->end(), lane.ready.begin(), lane.ready.end());
+    lane.tracker.OnSamples(lane.ready.data(), static_cast<long>(lane.ready.size()), WallNowS(), &lane.result);
+    lane.ready.clear();
+  }
+  lane.tracker.SetLostFrames(connection_.lost_frames());
+  lane.tracker.Tick(WallNowS(), &lane.result, Silence(lane));
   // The heartbeats stopping is news even when the samples stopped first and the link is already
   // dead for want of them ("heartbeats arrive, but no HIGHRES_IMU" was its reason then): said
   // once per disappearance, and the dead link's reason becomes it.
   const bool gone = connection_.VehicleGone();
-  if (gone && !vehicle_gone_said_ && !result.went_dead) tracker_.OnSilenceReason(Silence(), WallNowS(), &result);
-  vehicle_gone_said_ = gone;
-  current_ = nullptr;
-  return result;
+  if (gone && !lane.vehicle_gone_said && !lane.result.went_dead)
+    lane.tracker.OnSilenceReason(Silence(lane), WallNowS(), &lane.result);
+  lane.vehicle_gone_said = gone;
 }
 
-void MavlinkSource::Notice(const std::string& text, SourceNoticeKind kind) {
-  tracker_.OnNotice(text, &Events(), kind);
+void MavlinkSource::Notice(Lane& lane, const std::string& text, SourceNoticeKind kind) {
+  lane.tracker.OnNotice(text, &lane.result, kind);
 }
 
-void MavlinkSource::OnLinkUp() { tracker_.OnLinkUp(WallNowS(), &Events()); }
+// The link's events are every instance's.
+void MavlinkSource::NoticeAll(const std::string& text, SourceNoticeKind kind) {
+  for (Lane& lane : lanes_) Notice(lane, text, kind);
+}
+
+void MavlinkSource::OnLinkUp() {
+  for (Lane& lane : lanes_) lane.tracker.OnLinkUp(WallNowS(), &lane.result);
+}
 
 void MavlinkSource::OnLinkLost(const std::string& why) {
-  tracker_.OnLinkLost(why, &Events());
+  for (Lane& lane : lanes_) lane.tracker.OnLinkLost(why, &lane.result);
   request_ = Request::kNotYet;  // a vehicle that comes back is asked again
 }
 
-void MavlinkSource::OnOpenFailed(const std::string& why) { tracker_.OnOpenFailed(why); }
+void MavlinkSource::OnOpenFailed(const std::string& why) {
+  for (Lane& lane : lanes_) lane.tracker.OnOpenFailed(why);
+}
 
 void MavlinkSource::OnBadFrames(long count, const std::string& latest) {
-  tracker_.OnMalformed(count, fmt::format("{}: {}", connection_.LinkName(), latest), &Events());
+  for (Lane& lane : lanes_)
+    lane.tracker.OnMalformed(count, fmt::format("{}: {}", connection_.LinkName(), latest), &lane.result);
 }
 
 void MavlinkSource::OnFrame(const Frame& frame, bool from_vehicle) {
@@ -158,37 +201,52 @@ void MavlinkSource::OnFrame(const Frame& frame, bool from_vehicle) {
   if (frame.message == kCommandAck && request_ == Request::kAwaitAck) {
     const CommandAck ack = DecodeCommandAck(frame.payload);
     if (ack.command != kCmdSetMessageInterval) return;
-    if (ack.result == 0) {
-      request_ = Request::kDone;
-      request_done_s_ = WallNowS();
-      request_outcome_ = fmt::format("asked {} at {:g} Hz with SET_MESSAGE_INTERVAL: accepted",
-                                     MessageName(WantedMessage()), spec_.rate_hz);
-    } else {
-      FallBackToDataStream(fmt::format("SET_MESSAGE_INTERVAL {}", CommandResultText(ack.result)));
-    }
+    if (ack.result == 0) OnRateAccepted();
+    else FallBackToDataStream(fmt::format("SET_MESSAGE_INTERVAL {}", CommandResultText(ack.result)));
     return;
   }
   if (const std::optional<ImuReading> reading = DecodeImu(frame.message, frame.payload)) OnImu(*reading);
 }
 
-std::uint32_t MavlinkSource::WantedMessage() const {
-  return spec_.message ? *spec_.message : kHighresImu;
+std::uint32_t MavlinkSource::WantedMessage(const Lane& lane) const {
+  return lane.forced ? *lane.forced : kHighresImu;
+}
+
+std::string MavlinkSource::WantedNames() const {
+  std::string names;
+  for (std::uint32_t message : to_ask_) names += (names.empty() ? "" : ", ") + MessageName(message);
+  return names;
 }
 
 void MavlinkSource::AdvanceRequest(double now_s) {
   if (spec_.rate_hz <= 0.0 || !connection_.open()) return;
-  if (request_ == Request::kNotYet && connection_.vehicle().known) SendRateRequest();
+  if (request_ == Request::kNotYet && connection_.vehicle().known) {
+    asked_ = 0;
+    SendRateRequest();
+  }
   if (request_ == Request::kAwaitAck && now_s >= ack_deadline_s_)
     FallBackToDataStream("SET_MESSAGE_INTERVAL not answered");
 }
 
+// One message at a time: a COMMAND_ACK names the command, not the message.
 void MavlinkSource::SendRateRequest() {
-  const std::array<float, 7> params = {static_cast<float>(WantedMessage()),
+  const std::array<float, 7> params = {static_cast<float>(to_ask_[asked_]),
                                        static_cast<float>(1e6 / spec_.rate_hz), 0, 0, 0, 0, 0};
   connection_.Send(kCommandLong, EncodeCommandLong(connection_.target_system(), connection_.target_component(),
                                                    kCmdSetMessageInterval, params));
   request_ = Request::kAwaitAck;
   ack_deadline_s_ = WallNowS() + kAckWaitS;
+}
+
+void MavlinkSource::OnRateAccepted() {
+  if (++asked_ < to_ask_.size()) {
+    SendRateRequest();
+    return;
+  }
+  request_ = Request::kDone;
+  request_done_s_ = WallNowS();
+  request_outcome_ = fmt::format("asked {} at {:g} Hz with SET_MESSAGE_INTERVAL: accepted", WantedNames(),
+                                 spec_.rate_hz);
 }
 
 void MavlinkSource::FallBackToDataStream(const std::string& why) {
@@ -201,109 +259,114 @@ void MavlinkSource::FallBackToDataStream(const std::string& why) {
   request_outcome_ = fmt::format("{} (asked {} at {:g} Hz): asked the raw-sensor stream at {} Hz "
                                  "with REQUEST_DATA_STREAM instead (older firmware's way; it is "
                                  "never acknowledged)",
-                                 why, MessageName(WantedMessage()), spec_.rate_hz, rate);
-  Notice(fmt::format("{}: {}", connection_.LinkName(), request_outcome_), SourceNoticeKind::kRateRequest);
+                                 why, WantedNames(), spec_.rate_hz, rate);
+  NoticeAll(fmt::format("{}: {}", connection_.LinkName(), request_outcome_), SourceNoticeKind::kRateRequest);
 }
 
 void MavlinkSource::OnImu(const ImuReading& reading) {
   ++streams_[{reading.message, reading.instance}];
-  if (reading.instance != spec_.imu) return;
-  if (chosen_) {
-    if (reading.message == *chosen_) Emit(reading);
+  for (Lane& lane : lanes_)
+    if (reading.instance == lane.imu) OnLaneImu(lane, reading);
+}
+
+void MavlinkSource::OnLaneImu(Lane& lane, const ImuReading& reading) {
+  if (lane.chosen) {
+    if (reading.message == *lane.chosen) Emit(lane, reading);
     return;
   }
-  if (spec_.message) {
-    if (reading.message == *spec_.message) {
-      Choose(reading.message);
-      Emit(reading);
+  if (lane.forced) {
+    if (reading.message == *lane.forced) {
+      Choose(lane, reading.message);
+      Emit(lane, reading);
     }
     return;
   }
   if (reading.message == kHighresImu) {
-    Choose(kHighresImu);
-    Emit(reading);
+    Choose(lane, kHighresImu);
+    Emit(lane, reading);
     return;
   }
-  if (first_other_s_ < 0.0) first_other_s_ = WallNowS();
-  std::vector<ImuReading>& held = held_[reading.message];
+  if (lane.first_other_s < 0.0) lane.first_other_s = WallNowS();
+  std::vector<ImuReading>& held = lane.held[reading.message];
   if (held.size() < kMaxHeld) held.push_back(reading);
 }
 
 // Without a HIGHRES_IMU: the best of what came, once it had time to come (and the rate request
 // was answered or given up).
-void MavlinkSource::ChooseIfDue(double now_s) {
-  if (chosen_ || held_.empty() || first_other_s_ < 0.0) return;
+void MavlinkSource::ChooseIfDue(Lane& lane, double now_s) {
+  if (lane.chosen || lane.held.empty() || lane.first_other_s < 0.0) return;
   const bool request_settled =
       spec_.rate_hz <= 0.0 || (request_ == Request::kDone && now_s >= request_done_s_ + 0.5);
   // Never wait long on a request nobody answers.
-  const bool due = (now_s >= first_other_s_ + kChooseWaitS && request_settled) ||
-                   now_s >= first_other_s_ + 3.0 * kChooseWaitS;
+  const bool due = (now_s >= lane.first_other_s + kChooseWaitS && request_settled) ||
+                   now_s >= lane.first_other_s + 3.0 * kChooseWaitS;
   if (!due) return;
-  std::uint32_t best = held_.begin()->first;
-  for (const auto& [message, readings] : held_)
+  std::uint32_t best = lane.held.begin()->first;
+  for (const auto& [message, readings] : lane.held)
     if (Preference(message) < Preference(best)) best = message;
-  Choose(best);
-  Notice(fmt::format("{}: no HIGHRES_IMU of IMU {} came; reading {} instead", connection_.LinkName(),
-                     spec_.imu, MessageName(best)),
+  // The readings held while choosing are dropped (Choose clears them), as before several IMUs:
+  // the choice's notice is then this Read's only news (samples in the same Read would put the
+  // link's own news over it in the status).
+  Choose(lane, best);
+  Notice(lane, fmt::format("{}: no HIGHRES_IMU of IMU {} came; reading {} instead", connection_.LinkName(),
+                           lane.imu, MessageName(best)),
          SourceNoticeKind::kCoarserReadings);
-  const std::vector<ImuReading> held = std::move(held_[best]);
-  held_.clear();
-  for (const ImuReading& r : held) Emit(r);
 }
 
-void MavlinkSource::Choose(std::uint32_t message) {
-  chosen_ = message;
-  held_.clear();
+void MavlinkSource::Choose(Lane& lane, std::uint32_t message) {
+  lane.chosen = message;
+  lane.held.clear();
   if (message == kRawImu) {
-    tracker_.SetUnit(ReadingUnit{}, 1.0);
+    lane.tracker.SetUnit(ReadingUnit{}, 1.0);
   } else {
     const ReadingUnit unit{ReadingUnit::Kind::kMps2, kCountsPerMps2};
-    tracker_.SetUnit(unit, message == kHighresImu ? kNaN : kStandardGravityMps2);  // 1 mG in counts
+    lane.tracker.SetUnit(unit, message == kHighresImu ? kNaN : kStandardGravityMps2);  // 1 mG in counts
   }
 }
 
-void MavlinkSource::Emit(const ImuReading& reading) {
+void MavlinkSource::Emit(Lane& lane, const ImuReading& reading) {
   Sample s;
   Eigen::Vector3d acc(reading.acc[0], reading.acc[1], reading.acc[2]);
   if (reading.message != kRawImu) {
     if (reading.message != kHighresImu) acc *= kStandardGravityMps2 / 1000.0;  // mG -> m/s^2
-    if (undo_) acc = undo_->SensorFromSent(acc);
+    if (lane.undo) acc = lane.undo->SensorFromSent(acc);
     acc *= kCountsPerMps2;
   }
   s.raw_counts = acc;
   s.temp_c = reading.temp_c;
   const double now_wall_s = WallNowS();
-  if (!std::isnan(last_vehicle_t_s_) && reading.time_s < last_vehicle_t_s_ - kRebootStepS) {
-    const double gap_s = std::max(now_wall_s - last_sample_wall_s_, 0.01);
-    offset_s_ = last_t_s_ + gap_s - reading.time_s;
-    ++reboots_;
-    Notice(fmt::format("{}: {} rebooted (its clock went back from {:.3f} s to {:.3f} s): the samples "
+  if (!std::isnan(lane.last_vehicle_t_s) && reading.time_s < lane.last_vehicle_t_s - kRebootStepS) {
+    const double gap_s = std::max(now_wall_s - lane.last_sample_wall_s, 0.01);
+    lane.offset_s = lane.last_t_s + gap_s - reading.time_s;
+    ++lane.reboots;
+    Notice(lane,
+           fmt::format("{}: {} rebooted (its clock went back from {:.3f} s to {:.3f} s): the samples "
                        "go on after a gap of {:.1f} s",
-                       connection_.LinkName(), connection_.vehicle().Describe(), last_vehicle_t_s_,
+                       connection_.LinkName(), connection_.vehicle().Describe(), lane.last_vehicle_t_s,
                        reading.time_s, gap_s),
            SourceNoticeKind::kRestarted);
   }
-  s.t_s = reading.time_s + offset_s_;
-  if (!std::isnan(last_t_s_) && s.t_s <= last_t_s_) {
-    if (reading.time_s == last_vehicle_t_s_) {
+  s.t_s = reading.time_s + lane.offset_s;
+  if (!std::isnan(lane.last_t_s) && s.t_s <= lane.last_t_s) {
+    if (reading.time_s == lane.last_vehicle_t_s) {
       // Same stamp twice (SCALED_IMU's milliseconds at a high rate): spread by a microsecond.
-      s.t_s = last_t_s_ + 1e-6;
-      ++ties_spread_;
+      s.t_s = lane.last_t_s + 1e-6;
+      ++lane.ties_spread;
     } else {
-      tracker_.OnMalformed(1, fmt::format("{}: {} time went back from {:.6f} s to {:.6f} s: dropped",
-                                          connection_.LinkName(), MessageName(reading.message),
-                                          last_vehicle_t_s_, reading.time_s),
-                           &Events());
+      lane.tracker.OnMalformed(1, fmt::format("{}: {} time went back from {:.6f} s to {:.6f} s: dropped",
+                                              connection_.LinkName(), MessageName(reading.message),
+                                              lane.last_vehicle_t_s, reading.time_s),
+                               &lane.result);
       return;
     }
   }
-  last_vehicle_t_s_ = reading.time_s;
-  last_t_s_ = s.t_s;
-  last_sample_wall_s_ = now_wall_s;
-  ready_.push_back(s);
+  lane.last_vehicle_t_s = reading.time_s;
+  lane.last_t_s = s.t_s;
+  lane.last_sample_wall_s = now_wall_s;
+  lane.ready.push_back(s);
 }
 
-std::string MavlinkSource::Silence() const {
+std::string MavlinkSource::Silence(const Lane& lane) const {
   if (!connection_.open()) return connection_.link_error();
   const VehicleIdentity& v = connection_.vehicle();
   const double age_s = connection_.HeartbeatAgeS();
@@ -312,20 +375,21 @@ std::string MavlinkSource::Silence() const {
     return fmt::format("no heartbeat from {} for {:.1f} s: the vehicle is gone (powered off, "
                        "rebooting, or the link lost)", v.Describe(), age_s);
   return fmt::format("heartbeats from {} arrive, but no {} of IMU {}", v.Describe(),
-                     spec_.message ? MessageName(*spec_.message) : "HIGHRES_IMU, SCALED_IMU or RAW_IMU",
-                     spec_.imu);
+                     lane.forced ? MessageName(*lane.forced) : "HIGHRES_IMU, SCALED_IMU or RAW_IMU",
+                     lane.imu);
 }
 
-std::string MavlinkSource::DescribeReading() const {
+std::string MavlinkSource::DescribeReading(std::size_t index) const {
+  const Lane& lane = lanes_.at(index);
   std::string text;
-  if (chosen_) {
-    text = fmt::format("{} of IMU {} from {}: {}", MessageName(*chosen_), spec_.imu,
-                       connection_.vehicle().Describe(), status().unit.Describe());
-    text += *chosen_ == kHighresImu ? " (resolution: float)"
-            : *chosen_ == kRawImu   ? " (resolution: 1 count)"
-                                    : " (resolution: 1 mG = 9.80665 counts)";
+  if (lane.chosen) {
+    text = fmt::format("{} of IMU {} from {}: {}", MessageName(*lane.chosen), lane.imu,
+                       connection_.vehicle().Describe(), lane.tracker.status().unit.Describe());
+    text += *lane.chosen == kHighresImu ? " (resolution: float)"
+            : *lane.chosen == kRawImu   ? " (resolution: 1 count)"
+                                        : " (resolution: 1 mG = 9.80665 counts)";
   } else {
-    text = fmt::format("no IMU message of IMU {} yet from {}", spec_.imu, connection_.vehicle().Describe());
+    text = fmt::format("no IMU message of IMU {} yet from {}", lane.imu, connection_.vehicle().Describe());
   }
   if (!request_outcome_.empty()) text += "; rate: " + request_outcome_;
   else if (spec_.rate_hz <= 0.0) text += "; rate: not asked (rate=0)";
@@ -337,10 +401,10 @@ std::string MavlinkSource::DescribeReading() const {
   if (c.other_messages > 0) text += fmt::format(" (latest: {})", MessageName(c.last_other_message));
   if (c.signed_frames > 0) text += fmt::format(", {} signed (signatures not checked)", c.signed_frames);
   if (c.v1_frames > 0) text += fmt::format(", {} MAVLink 1", c.v1_frames);
-  if (ties_spread_ > 0) text += fmt::format("; {} repeated time stamps spread by 1 us", ties_spread_);
-  if (reboots_ > 0) text += fmt::format("; the vehicle rebooted {} time{}", reboots_, reboots_ == 1 ? "" : "s");
-  text += undo_ ? "; the vehicle's own calibration undone: " + undo_->description
-                : "; the vehicle's own calibration: left in the readings";
+  if (lane.ties_spread > 0) text += fmt::format("; {} repeated time stamps spread by 1 us", lane.ties_spread);
+  if (lane.reboots > 0) text += fmt::format("; the vehicle rebooted {} time{}", lane.reboots, lane.reboots == 1 ? "" : "s");
+  text += lane.undo ? "; the vehicle's own calibration undone: " + lane.undo->description
+                    : "; the vehicle's own calibration: left in the readings";
   return text;
 }
 

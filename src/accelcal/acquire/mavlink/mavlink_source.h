@@ -38,6 +38,7 @@
 #include "accelcal/acquire/mavlink/accel_undo.h"
 #include "accelcal/acquire/mavlink/mavlink_connection.h"
 #include "accelcal/acquire/source/sample_source.h"
+#include "accelcal/acquire/source/sensor_set_source.h"
 #include "accelcal/acquire/source/source_options.h"
 #include "accelcal/acquire/source/status_tracker.h"
 
@@ -59,32 +60,66 @@ MavlinkSourceSpec ParseMavlinkSpec(const std::string& spec);
 
 class MavlinkSource final : public SampleSource, private mavlink::ConnectionObserver {
  public:
-  // Reads options' dead_after_s, gap_factor and reconnect_*. Opens nothing yet.
-  MavlinkSource(MavlinkSourceSpec spec, const SourceOptions& options);
+  // Reads options' dead_after_s, gap_factor and reconnect_*. Opens nothing yet. `imus`: the IMU
+  // instances read from the one connection, each its own stream with its own status (a vehicle
+  // with three IMUs: {0, 1, 2}; mavlink_sensor_set.h); empty: the spec's imu= alone. Read() and
+  // status() are the first instance's.
+  MavlinkSource(MavlinkSourceSpec spec, const SourceOptions& options, std::vector<int> imus = {});
   ~MavlinkSource() override;
 
   std::string Describe() const override { return spec_.Describe(); }
   ReadResult Read(double timeout_s, std::vector<Sample>* out) override;
-  const SourceStatus& status() const override { return tracker_.status(); }
+  const SourceStatus& status() const override { return lanes_.front().tracker.status(); }
   // "HIGHRES_IMU of IMU 0 from system 1 component 1 (ArduPilot): m/s^2, taken as counts of
   // 0.001 m/s^2 (resolution: float); rate: asked 100 Hz with SET_MESSAGE_INTERVAL, accepted; ...".
-  std::string DescribeReading() const override;
+  std::string DescribeReading() const override { return DescribeReading(0); }
+
+  // Every instance at once: out->per_sensor[i] gets instance imus[i]'s samples (resized first);
+  // returns as soon as one instance has samples, or at the timeout. The result merges theirs.
+  ReadResult ReadAll(double timeout_s, std::vector<std::vector<Sample>>* out);
+  std::size_t imu_count() const { return lanes_.size(); }
+  int imu(std::size_t lane) const { return lanes_.at(lane).imu; }
+  const SourceStatus& status(std::size_t lane) const { return lanes_.at(lane).tracker.status(); }
+  std::string DescribeReading(std::size_t lane) const;
 
   const MavlinkSourceSpec& spec() const { return spec_; }
   // The link, for a parameter exchange in the middle of the stream (samples keep coming in).
   mavlink::Connection& connection() { return connection_; }
-  // Takes the vehicle's correction back from every later sample (nullopt: as sent). Applies to
-  // HIGHRES_IMU and SCALED_IMU streams; RAW_IMU is the sensor's units already.
-  void SetUndo(std::optional<mavlink::AccelUndo> undo) { undo_ = std::move(undo); }
-  const std::optional<mavlink::AccelUndo>& undo() const { return undo_; }
-  // The chosen message (nullopt until chosen).
-  std::optional<std::uint32_t> message() const { return chosen_; }
-  // Every (message, IMU instance) seen from the vehicle with its frame count: a later
-  // several-IMU session takes one source per instance, or reads these.
+  // Takes the vehicle's correction back from every later sample of the first instance (nullopt:
+  // as sent). Applies to HIGHRES_IMU and SCALED_IMU streams; RAW_IMU is the sensor's units
+  // already.
+  void SetUndo(std::optional<mavlink::AccelUndo> undo) { lanes_.front().undo = std::move(undo); }
+  const std::optional<mavlink::AccelUndo>& undo() const { return lanes_.front().undo; }
+  // The first instance's chosen message (nullopt until chosen).
+  std::optional<std::uint32_t> message() const { return lanes_.front().chosen; }
+  // Every (message, IMU instance) seen from the vehicle with its frame count.
   const std::map<std::pair<std::uint32_t, int>, long>& imu_streams() const { return streams_; }
 
  private:
   enum class Request { kNotYet, kAwaitAck, kDone };
+
+  // One IMU instance's stream: its message (chosen or forced), its clock, its status.
+  struct Lane {
+    Lane(int imu_index, std::optional<std::uint32_t> forced_message, const SourceOptions& options,
+         double now_s)
+        : imu(imu_index), forced(forced_message), tracker(options.gap_factor, options.dead_after_s, now_s) {}
+    int imu;
+    std::optional<std::uint32_t> forced;  // msg=: kHighresImu, this instance's SCALED_IMU*, kRawImu
+    StatusTracker tracker;
+    ReadResult result;  // the events of the Read in progress (or since the last one)
+    std::optional<mavlink::AccelUndo> undo;
+    std::optional<std::uint32_t> chosen;
+    double first_other_s = -1.0;  // wall time the first non-preferred IMU message came
+    std::map<std::uint32_t, std::vector<mavlink::ImuReading>> held;  // while choosing
+    std::vector<Sample> ready;
+    double offset_s = 0.0;  // added to the vehicle's time stamps (reboots)
+    double last_vehicle_t_s = kNaN;
+    double last_t_s = kNaN;
+    double last_sample_wall_s = kNaN;
+    long ties_spread = 0;
+    long reboots = 0;
+    bool vehicle_gone_said = false;  // its heartbeats' stop was said (until they come again)
+  };
 
   void OnFrame(const mavlink::Frame& frame, bool from_vehicle) override;
   void OnLinkUp() override;
@@ -92,44 +127,35 @@ class MavlinkSource final : public SampleSource, private mavlink::ConnectionObse
   void OnOpenFailed(const std::string& why) override;
   void OnBadFrames(long count, const std::string& latest) override;
 
-  ReadResult& Events() { return current_ != nullptr ? *current_ : scratch_; }
-  void Notice(const std::string& text, SourceNoticeKind kind);
+  bool AnyReady() const;
+  void Deliver(Lane& lane, std::vector<Sample>* out);
+  void Notice(Lane& lane, const std::string& text, SourceNoticeKind kind);
+  void NoticeAll(const std::string& text, SourceNoticeKind kind);
   void OnImu(const mavlink::ImuReading& reading);
+  void OnLaneImu(Lane& lane, const mavlink::ImuReading& reading);
   void AdvanceRequest(double now_s);
   void SendRateRequest();
+  void OnRateAccepted();
   void FallBackToDataStream(const std::string& why);
-  void ChooseIfDue(double now_s);
-  void Choose(std::uint32_t message);
-  void Emit(const mavlink::ImuReading& reading);
-  std::uint32_t WantedMessage() const;
-  std::string Silence() const;
+  void ChooseIfDue(Lane& lane, double now_s);
+  void Choose(Lane& lane, std::uint32_t message);
+  void Emit(Lane& lane, const mavlink::ImuReading& reading);
+  std::uint32_t WantedMessage(const Lane& lane) const;
+  std::string WantedNames() const;
+  std::string Silence(const Lane& lane) const;
 
   MavlinkSourceSpec spec_;
   mavlink::Connection connection_;
-  StatusTracker tracker_;
-  ReadResult* current_ = nullptr;  // the Read in progress
-  ReadResult scratch_;             // events outside a Read (a parameter exchange)
-  std::optional<mavlink::AccelUndo> undo_;
+  std::vector<Lane> lanes_;  // at least one
 
   Request request_ = Request::kNotYet;
+  std::vector<std::uint32_t> to_ask_;  // the messages whose rate is asked, one after the other
+  std::size_t asked_ = 0;              // to_ask_[asked_] is the one asked now
   double ack_deadline_s_ = 0.0;
   double request_done_s_ = -1e300;
   double last_heartbeat_s_ = -1e300;  // wall time of the vehicle's latest heartbeat
   std::string request_outcome_;
-
-  std::optional<std::uint32_t> chosen_;
-  double first_other_s_ = -1.0;  // wall time the first non-preferred IMU message came
-  std::map<std::uint32_t, std::vector<mavlink::ImuReading>> held_;  // while choosing
   std::map<std::pair<std::uint32_t, int>, long> streams_;
-
-  std::vector<Sample> ready_;
-  double offset_s_ = 0.0;          // added to the vehicle's time stamps (reboots)
-  double last_vehicle_t_s_ = kNaN;
-  double last_t_s_ = kNaN;
-  double last_sample_wall_s_ = kNaN;
-  long ties_spread_ = 0;
-  long reboots_ = 0;
-  bool vehicle_gone_said_ = false;  // its heartbeats' stop was said (until they come again)
 };
 
 }  // namespace accelcal

@@ -4,9 +4,9 @@
 // (LineStream, with that sensor's columns), so a sensor's field that is not a number is that
 // sensor's malformed line, and the others' samples of the same line still count.
 //
-// Link handling as StreamSource's (stream_source.h): poll() and read() within the caller's
-// timeout, a serial or TCP link reopened with back-off after it drops (its partial line
-// dropped), a file or standard input finished at its end. Samples are delivered as fast as they
+// Link handling is StreamSource's own (link_reader.h: poll() and read() within the caller's
+// timeout, a serial or TCP link reopened with back-off after it drops, its partial line
+// dropped, a file or standard input finished at its end). Samples are delivered as fast as they
 // are read (no pacing by t). Each sensor has its own status; the link's events are every
 // sensor's.
 #pragma once
@@ -17,14 +17,14 @@
 
 #include "accelcal/acquire/source/byte_link.h"
 #include "accelcal/acquire/source/line_stream.h"
-#include "accelcal/acquire/source/reconnect_backoff.h"
+#include "accelcal/acquire/source/link_reader.h"
 #include "accelcal/acquire/source/sensor_set_source.h"
 #include "accelcal/acquire/source/source_options.h"
 #include "accelcal/acquire/source/status_tracker.h"
 
 namespace accelcal {
 
-class ColumnsSensorSet final : public SensorSetSource {
+class ColumnsSensorSet final : public SensorSetSource, private LinkEvents {
  public:
   // `columns`: one layout per sensor (SplitSensorColumns), as many as `fixture`'s sensors.
   // Reads options' stream settings (dead_after_s, gap_factor, reconnect_*, max_line_bytes,
@@ -49,19 +49,18 @@ class ColumnsSensorSet final : public SensorSetSource {
     ReadResult result;  // this call's
   };
 
-  void Fill(double deadline_s, SensorSetSamples* out);
-  bool TryOpen(double deadline_s);
-  void ReadAvailable(SensorSetSamples* out);
-  void Feed(std::string_view bytes, SensorSetSamples* out);
-  void EndOfData(const std::string& why, bool failed, SensorSetSamples* out);
+  void OnLinkOpen() override;
+  void OnLinkOpenFailed(const std::string& error) override;
+  void OnBytes(std::string_view bytes) override;
+  void OnLinkEnd(const std::string& described, bool failed, bool reopens) override;
+  // Sensor i's samples appended to out_ since `first`, counted in its status.
+  void Counted(std::size_t i, std::size_t first, double now_s);
 
-  std::unique_ptr<ByteLink> link_;
+  LinkReader reader_;
   Fixture fixture_;
   std::vector<std::unique_ptr<Lane>> lanes_;
-  ReconnectBackoff backoff_;
-  bool open_ = false;
-  bool input_done_ = false;
-  std::vector<char> buffer_;
+  SensorSetSamples* out_ = nullptr;  // the Read in progress
+  SensorSetSamples scratch_;         // samples outside a Read (none: bytes come only in a Read)
 };
 
 }  // namespace accelcal

@@ -72,19 +72,15 @@ bool WriteAll(int fd, const std::string& text) {
   return ::send(fd, text.data(), text.size(), MSG_NOSIGNAL) == static_cast<ssize_t>(text.size());
 }
 
-class RemoteBenchSource final : public SampleSource, public BenchControl {
+// The controls sent over TCP, for any source: `drain` reads and drops what arrived within its
+// timeout (true when something did), `now` is the source's latest t.
+class RemoteBenchClient final : public BenchControl {
  public:
-  RemoteBenchSource(std::unique_ptr<SampleSource> inner, HostPort bench)
-      : inner_(std::move(inner)), bench_(std::move(bench)) {}
-  ~RemoteBenchSource() override {
+  RemoteBenchClient(HostPort bench, std::function<bool(double)> drain, std::function<double()> now)
+      : bench_(std::move(bench)), drain_(std::move(drain)), now_(std::move(now)) {}
+  ~RemoteBenchClient() override {
     if (fd_ >= 0) ::close(fd_);
   }
-
-  std::string Describe() const override { return inner_->Describe(); }
-  ReadResult Read(double timeout_s, std::vector<Sample>* out) override { return inner_->Read(timeout_s, out); }
-  const SourceStatus& status() const override { return inner_->status(); }
-  std::string DescribeReading() const override { return inner_->DescribeReading(); }
-  BenchControl* bench() override { return this; }
 
   void PlaceStatic(const Eigen::Vector3d& up, double yaw_rad) override {
     Command(fmt::format("static {:.17g} {:.17g} {:.17g} {:.17g}", up.x(), up.y(), up.z(), yaw_rad));
@@ -98,7 +94,7 @@ class RemoteBenchSource final : public SampleSource, public BenchControl {
     Command(fmt::format("feet {:.17g} {:.17g}", tilt_deg.x(), tilt_deg.y()));
   }
   void LevelTurntable() override { Command("level"); }
-  double now_s() const override { return inner_->status().last_t_s; }
+  double now_s() const override { return now_(); }
 
  private:
   // hold, drain, then the command; throws accelcal::Error when the bench does not answer.
@@ -116,13 +112,10 @@ class RemoteBenchSource final : public SampleSource, public BenchControl {
     if (answer != want) Fail(fmt::format("'{}' answered '{}'", command, answer));
   }
   void Drain() {
-    std::vector<Sample> dropped;
     const double start_s = WallNowS();
     double last_s = start_s;
-    while (WallNowS() - last_s < kQuietS && WallNowS() - start_s < kMaxDrainS) {
-      dropped.clear();
-      if (inner_->Read(0.05, &dropped).samples > 0) last_s = WallNowS();
-    }
+    while (WallNowS() - last_s < kQuietS && WallNowS() - start_s < kMaxDrainS)
+      if (drain_(0.05)) last_s = WallNowS();
   }
   [[noreturn]] void Fail(const std::string& why) {
     if (fd_ >= 0) ::close(fd_);
@@ -131,16 +124,73 @@ class RemoteBenchSource final : public SampleSource, public BenchControl {
     throw Error(fmt::format("the remote bench at {}: {}", bench_.Describe(), why));
   }
 
-  std::unique_ptr<SampleSource> inner_;
   HostPort bench_;
+  std::function<bool(double)> drain_;
+  std::function<double()> now_;
   int fd_ = -1;
   std::string inbox_;
+};
+
+class RemoteBenchSource final : public SampleSource {
+ public:
+  RemoteBenchSource(std::unique_ptr<SampleSource> inner, HostPort bench)
+      : inner_(std::move(inner)),
+        client_(std::move(bench),
+                [this](double timeout_s) {
+                  std::vector<Sample> dropped;
+                  return inner_->Read(timeout_s, &dropped).samples > 0;
+                },
+                [this] { return inner_->status().last_t_s; }) {}
+
+  std::string Describe() const override { return inner_->Describe(); }
+  ReadResult Read(double timeout_s, std::vector<Sample>* out) override { return inner_->Read(timeout_s, out); }
+  const SourceStatus& status() const override { return inner_->status(); }
+  std::string DescribeReading() const override { return inner_->DescribeReading(); }
+  BenchControl* bench() override { return &client_; }
+
+ private:
+  std::unique_ptr<SampleSource> inner_;
+  RemoteBenchClient client_;
+};
+
+// Several sensors on the one simulated sensor's link (a vehicle's IMUs): the plate is placed.
+class RemoteBenchSet final : public SensorSetSource {
+ public:
+  RemoteBenchSet(std::unique_ptr<SensorSetSource> inner, HostPort bench)
+      : inner_(std::move(inner)),
+        client_(std::move(bench),
+                [this](double timeout_s) {
+                  SensorSetSamples dropped;
+                  return inner_->Read(timeout_s, &dropped).samples > 0;
+                },
+                [this] {
+                  double latest_s = kNaN;
+                  for (std::size_t i = 0; i < inner_->sensor_count(); ++i) {
+                    const double t_s = inner_->status(i).last_t_s;
+                    if (!(t_s <= latest_s)) latest_s = std::isnan(t_s) ? latest_s : t_s;
+                  }
+                  return latest_s;
+                }) {}
+
+  std::string Describe() const override { return inner_->Describe(); }
+  const Fixture& fixture() const override { return inner_->fixture(); }
+  ReadResult Read(double timeout_s, SensorSetSamples* out) override { return inner_->Read(timeout_s, out); }
+  const SourceStatus& status(std::size_t sensor) const override { return inner_->status(sensor); }
+  BenchControl* bench() override { return &client_; }
+
+ private:
+  std::unique_ptr<SensorSetSource> inner_;
+  RemoteBenchClient client_;
 };
 
 }  // namespace
 
 std::unique_ptr<SampleSource> WithRemoteBench(std::unique_ptr<SampleSource> source, const HostPort& bench) {
   return std::make_unique<RemoteBenchSource>(std::move(source), bench);
+}
+
+std::unique_ptr<SensorSetSource> WithRemoteBench(std::unique_ptr<SensorSetSource> set, const HostPort& bench) {
+  return std::make_unique<RemoteBenchSet>(std::move(set), bench);
 }
 
 RemoteBenchServer::RemoteBenchServer(const HostPort& listen, BenchControl* bench) : bench_(bench) {

@@ -25,11 +25,15 @@
 
 #include "accelcal/acquire/source/host_port.h"
 #include "accelcal/acquire/source/sample_source.h"
+#include "accelcal/acquire/source/sensor_set_source.h"
 
 namespace accelcal {
 
 // `source` with the controls of the bench served at `bench`. Connects at the first placement.
 std::unique_ptr<SampleSource> WithRemoteBench(std::unique_ptr<SampleSource> source, const HostPort& bench);
+// The same for several sensors on links the one bench feeds (a vehicle's IMUs, issue 31): the
+// placement moves them all; every sensor's link is drained before it.
+std::unique_ptr<SensorSetSource> WithRemoteBench(std::unique_ptr<SensorSetSource> set, const HostPort& bench);
 
 // The serving side, for `accelcal record`: listens, takes one client at a time.
 class RemoteBenchServer {

@@ -4,6 +4,7 @@
 
 #include "accelcal/base/error.h"
 #include "accelcal/base/sensor_columns.h"
+#include "accelcal/acquire/mavlink/mavlink_sensor_set.h"
 #include "accelcal/acquire/sim/scenario.h"
 #include "accelcal/acquire/source/columns_sensor_set.h"
 #include "accelcal/acquire/source/file_link.h"
@@ -101,6 +102,16 @@ std::unique_ptr<SensorSetSource> OpenSensorSet(const std::string& spec,
   }
   const SourceSpec s = ParseSourceSpec(spec);
   if (s.kind == SourceKind::kSim) return OpenSimSet(options, request);
+  if (s.kind == SourceKind::kMavlink) {
+    // One vehicle, its IMU instances in order: sensor i is IMU i.
+    const std::size_t n = request.fixture ? request.fixture->sensors.size()
+                                          : static_cast<std::size_t>(std::max(1, request.sensors));
+    if (n > 1) {
+      if (!request.columns.empty()) throw Error(fmt::format("--columns is for a text line, not '{}'", spec));
+      return std::make_unique<MavlinkSensorSet>(spec, request.fixture ? *request.fixture : NumberedFixture(n),
+                                                options);
+    }
+  }
   std::unique_ptr<ByteLink> link = TextLink(s, options);
   if (link == nullptr || request.columns.empty()) {
     const std::size_t n = request.fixture ? request.fixture->sensors.size()

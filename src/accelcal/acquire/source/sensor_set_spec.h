@@ -4,6 +4,7 @@
 //   sim + sensors N (--sensors)       a row of N healthy boards (sim::RowOfBoards)
 //   sim + a fixture file              its sensors as boards, healthy, mounted as it says
 //   file, -, serial, tcp + columns    one line of 3N columns (--columns t,ax,ay,az,ax,ay,az...)
+//   mavlink + N > 1 sensors           the IMU instances 0..N-1 of one vehicle (mavlink_sensor_set.h)
 //   a fixture whose sensors each name their own source   one link per sensor
 //
 // Serials come from the fixture when given (its sensors without their own source are the shared

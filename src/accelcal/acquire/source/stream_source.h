@@ -15,14 +15,14 @@
 
 #include "accelcal/acquire/source/byte_link.h"
 #include "accelcal/acquire/source/line_stream.h"
-#include "accelcal/acquire/source/reconnect_backoff.h"
+#include "accelcal/acquire/source/link_reader.h"
 #include "accelcal/acquire/source/sample_source.h"
 #include "accelcal/acquire/source/source_options.h"
 #include "accelcal/acquire/source/status_tracker.h"
 
 namespace accelcal {
 
-class StreamSource final : public SampleSource {
+class StreamSource final : public SampleSource, private LinkEvents {
  public:
   enum class Pacing {
     kAsFastAsPossible,  // deliver samples as soon as they are read
@@ -34,35 +34,32 @@ class StreamSource final : public SampleSource {
   StreamSource(std::unique_ptr<ByteLink> link, const SourceOptions& options, Pacing pacing);
   ~StreamSource() override;
 
-  std::string Describe() const override { return link_->Describe(); }
+  std::string Describe() const override { return reader_.Describe(); }
   ReadResult Read(double timeout_s, std::vector<Sample>* out) override;
   const SourceStatus& status() const override { return tracker_.status(); }
   std::string DescribeReading() const override;
 
  private:
-  void Fill(double deadline_s, ReadResult* result);
-  bool TryOpen(double deadline_s, ReadResult* result);
-  void ReadAvailable(ReadResult* result);
-  void Parse(std::string_view bytes, ReadResult* result);
-  void EndOfData(const std::string& why, bool failed, ReadResult* result);
+  void OnLinkOpen() override;
+  void OnLinkOpenFailed(const std::string& error) override;
+  void OnBytes(std::string_view bytes) override;
+  void OnLinkEnd(const std::string& described, bool failed, bool reopens) override;
   void Deliver(double now_s, std::vector<Sample>* out, ReadResult* result);
   bool Backlogged() const;
   double NextDueWallS() const;
   size_t pending() const { return parsed_.size() - next_; }
 
-  std::unique_ptr<ByteLink> link_;
+  LinkReader reader_;
   Pacing pacing_;
   LineStream lines_;
   StatusTracker tracker_;
-  ReconnectBackoff backoff_;
-  bool open_ = false;
-  bool input_done_ = false;     // no more bytes will come (end of file or stdin)
+  ReadResult* result_ = nullptr;  // the Read in progress, for the link's events
+  ReadResult scratch_;            // events outside a Read
   std::vector<Sample> parsed_;  // parsed but not yet delivered, from index next_
   size_t next_ = 0;
   double pace_origin_wall_s_;   // kByT: wall time the first sample was delivered
   double pace_origin_t_s_;      // kByT: its t
   double last_burst_wall_s_ = -1e300;  // kByT: wall time of the last delivery, s
-  std::vector<char> buffer_;
 };
 
 }  // namespace accelcal
