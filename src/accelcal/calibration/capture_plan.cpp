@@ -13,7 +13,7 @@
 namespace accelcal {
 namespace {
 
-constexpr double kQuantizationVarianceCounts2 = 1.0 / 12.0;  // as the fit floors it
+constexpr double kPlanQuantizationFloorCounts2 = 1.0 / 12.0;  // as the fit floors it
 // A capture's length when its maximum is lifted (the "how long would it take" question).
 constexpr double kUnboundedCaptureS = 3600.0;
 
@@ -27,7 +27,7 @@ FitCapture AsFitCapture(const PlannedCapture& planned, const PlannedSensor& sens
   c.n_samples = std::max(1L, std::lround(sensor.rate_hz * length_s));
   Eigen::Matrix3d per_sample = Eigen::Matrix3d::Zero();
   for (int a = 0; a < 3; ++a)
-    per_sample(a, a) = std::max(sensor.noise_counts(a) * sensor.noise_counts(a), kQuantizationVarianceCounts2);
+    per_sample(a, a) = std::max(sensor.noise_counts(a) * sensor.noise_counts(a), kPlanQuantizationFloorCounts2);
   c.mean_cov_counts2 = per_sample / static_cast<double>(c.n_samples);
   return c;
 }

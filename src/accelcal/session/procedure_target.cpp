@@ -4,14 +4,10 @@
 
 #include <fmt/format.h>
 
+#include "accelcal/base/gravity.h"
 #include "accelcal/session/procedure.h"
 
 namespace accelcal {
-namespace {
-
-constexpr double kStandardGravityMps2 = 9.80665;  // 1 g, the mg's own
-
-}  // namespace
 
 bool ProcedureTarget::Any() const {
   return std::isfinite(bias_mg) || std::isfinite(scale_ppm) || std::isfinite(misalignment_mrad);
@@ -19,7 +15,7 @@ bool ProcedureTarget::Any() const {
 
 UncertaintyTarget ToUncertaintyTarget(const ProcedureTarget& target, const SensorModel& nominal) {
   UncertaintyTarget t;
-  t.bias_counts = target.bias_mg * 1e-3 * kStandardGravityMps2 * nominal.scale_counts_per_mps2.minCoeff();
+  t.bias_counts = target.bias_mg * 1e-3 * kStandardGravityMps2 /* 1 g, the mg's own */ * nominal.scale_counts_per_mps2.minCoeff();
   t.scale_relative = target.scale_ppm * 1e-6;
   t.misalignment_rad = target.misalignment_mrad * 1e-3;
   return t;
