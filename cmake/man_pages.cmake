@@ -7,12 +7,11 @@
 # empty: then the section-5 pages are left out, with a warning).
 
 # The section-5 pages: name | source | the heading of its section in the source ("" the whole
-# file) | its NAME line. The text lives in README.md's sections for now; when the README is split
-# into docs/, a page's source becomes its docs/ file.
+# file) | its NAME line. The text lives in the docs/ pages (README.md's "Where things are").
 set(FORMAT_PAGES
-  "accelcal-procedure|README.md|## Procedures|the procedure file (TOML): the wizard's steps, the checks' tolerances, the pass/fail limits and the bench's equipment"
-  "accelcal-calibration|README.md|## Calibration file (JSON)|the calibration file (JSON) that fit, report and the wizard write and apply reads"
-  "accelcal-capture-set|README.md|## Capture-set file (CSV)|the capture-set file (CSV) that simulate and export write and fit reads")
+  "accelcal-procedure|docs/guide.md|## Procedures|the procedure file (TOML): the wizard's steps, the checks' tolerances, the pass/fail limits and the bench's equipment"
+  "accelcal-calibration|docs/formats.md|## Calibration file (JSON)|the calibration file (JSON) that fit, report and the wizard write and apply reads"
+  "accelcal-capture-set|docs/formats.md|## Capture-set file (CSV)|the capture-set file (CSV) that simulate and export write and fit reads")
 
 file(REMOVE_RECURSE "${MAN_DIR}/man1" "${MAN_DIR}/man5")
 file(MAKE_DIRECTORY "${MAN_DIR}/man1" "${MAN_DIR}/man5")

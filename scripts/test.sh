@@ -3,7 +3,7 @@
 # this. --sanitize runs the same tests under AddressSanitizer and UndefinedBehaviorSanitizer
 # instead (build-sanitize/, -O1 -g1: all checks kept, reports keep file:line): the sanitized
 # compile costs 1.8 times the plain one, and the two together no longer fit CI's 20 minutes on
-# 2 cores, so the sanitizer run is done before each merge to main (README, "Tests").
+# 2 cores, so the sanitizer run is done before each merge to main (docs/development.md, "Tests").
 set -euo pipefail
 cd "$(dirname "$0")/.."
 ./scripts/setup.sh

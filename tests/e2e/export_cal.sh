@@ -47,7 +47,7 @@ grep -q "note: effect radius_offset is not exported" "$work/out" || fail "radius
 # zero-g 2048) the values are (b - 2048) / 34.8 and 34.8 / k.
 expect 1 "$accelcal" export-cal "$work/cal.json" --to ardupilot
 grep -q "needs the sensor's nominal scale" "$work/err" || fail "nominal scale not asked for"
-expect 0 "$accelcal" export-cal "$work/cal.json" --to ardupilot --procedure "$src/procedures/seed_calibration.toml" -o "$work/a.param"
+expect 0 "$accelcal" export-cal "$work/cal.json" --to ardupilot --procedure "$src/procedures/full_calibration.toml" -o "$work/a.param"
 grep -q "^cannot hold: misalignment .* costs up to .* m/s^2" "$work/out" || fail "misalignment loss not stated"
 python3 - "$work/cal.json" "$work/a.param" <<'PY' || fail "ArduPilot values"
 import json, sys

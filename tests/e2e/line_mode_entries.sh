@@ -10,7 +10,7 @@ trap 'rm -rf "$work"' EXIT
 fail() { echo "FAIL: $*" >&2; cat "$work/out" >&2; exit 1; }
 
 # The seed procedure cut to its first turntable step (50 mm, 120 rpm).
-seed="$src/procedures/seed_calibration.toml"
+seed="$src/procedures/full_calibration.toml"
 { sed '/^\[\[step\]\]/,$d' "$seed"
   awk 'BEGIN { RS = ""; ORS = "\n\n" }
     $0 ~ "\\[\\[step\\]\\]\nid = \"tt_x_050\"" { sub(/^[^[]*\[\[step\]\]/, "[[step]]"); print }' "$seed"

@@ -126,14 +126,14 @@ grep -q "tcp:127.0.0.1:$peer_port: the vehicle's own calibration cannot be taken
   || { cat "$work/err"; fail "no PARAM answer: refusal"; }
 [ ! -e "$work/none.db" ] || fail "a session was created for a vehicle that does not answer"
 expect 1 "$accelcal" export-cal "$work/cal.json" --to "mavlink:tcp:127.0.0.1:$peer_port" \
-  --procedure "$source_dir/procedures/seed_calibration.toml" --apply
+  --procedure "$source_dir/procedures/full_calibration.toml" --apply
 grep -q "answered no PARAM_REQUEST_READ for .*: nothing was written" "$work/out" || { cat "$work/out"; fail "no answer: write-back"; }
 grep -q "^written: none" "$work/out" || fail "no answer: what was written"
 stop_bench
 
 start_bench 10 node "$vehicle" --tcp 0 --no-echo INS_ACCSCAL_X
 expect 1 "$accelcal" export-cal "$work/cal.json" --to "mavlink:tcp:127.0.0.1:$peer_port" \
-  --procedure "$source_dir/procedures/seed_calibration.toml" --apply
+  --procedure "$source_dir/procedures/full_calibration.toml" --apply
 grep -q "^written: INS_ACCOFFS_X, INS_ACCOFFS_Y, INS_ACCOFFS_Z$" "$work/out" || { cat "$work/out"; fail "no echo: written"; }
 grep -q "^stopped: tcp:127.0.0.1:$peer_port: no PARAM_VALUE echoed the PARAM_SET of INS_ACCSCAL_X" "$work/out" || { cat "$work/out"; fail "no echo: stop"; }
 grep -q "^not written: INS_ACCSCAL_Y, INS_ACCSCAL_Z$" "$work/out" || fail "no echo: not written"
@@ -142,7 +142,7 @@ stop_bench
 
 start_bench 10 node "$vehicle" --tcp 0 --wrong-echo INS_ACCOFFS_Y
 expect 1 "$accelcal" export-cal "$work/cal.json" --to "mavlink:tcp:127.0.0.1:$peer_port" \
-  --procedure "$source_dir/procedures/seed_calibration.toml" --apply
+  --procedure "$source_dir/procedures/full_calibration.toml" --apply
 grep -q "^stopped: tcp:127.0.0.1:$peer_port: INS_ACCOFFS_Y was set to .* but the vehicle echoed .*: it holds that, not the calibration" "$work/out" \
   || { cat "$work/out"; fail "wrong echo"; }
 grep -q "^written: INS_ACCOFFS_X$" "$work/out" || fail "wrong echo: written"

@@ -85,7 +85,7 @@ mkdir -p "$work/elsewhere" && cd "$work/elsewhere"
 [ "$("$installed" help-shipped procedures)" = "$(ls "$root/usr/share/accelcal/procedures")" ] ||
   fail "the installed program lists [$("$installed" help-shipped procedures | xargs)]"
 sed -i 's/^title = .*/title = "Full calibration, installed copy"/' \
-  "$root/usr/share/accelcal/procedures/seed_calibration.toml"
+  "$root/usr/share/accelcal/procedures/full_calibration.toml"
 set +e
 yes '' | "$installed" wizard --source sim --speed 0 --plain --session "$work/elsewhere/s.db" \
   > "$work/session.txt" 2> "$work/session.err"

@@ -11,7 +11,7 @@ source_dir=$2
 . "$source_dir/tests/e2e/lib/common.bash"
 
 sed -e 's/^capture_timeout_s = 60 /capture_timeout_s = 3 /' \
-  "$source_dir/procedures/seed_calibration.toml" > "$work/short.toml"
+  "$source_dir/procedures/full_calibration.toml" > "$work/short.toml"
 grep -q '^capture_timeout_s = 3 ' "$work/short.toml" || fail "short procedure: no capture_timeout_s"
 
 for mode in silent nan; do

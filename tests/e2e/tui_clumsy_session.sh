@@ -26,7 +26,7 @@ shots=${ACCELCAL_SCREENSHOTS:-}
 # The seed procedure with 3 s captures and one turntable radius per axis (12 captures, the limit
 # lowered to match): the checks are the same, the test time is not.
 sed -e 's/^capture_duration_s = 10 /capture_duration_s = 3 /' -e 's/^min_captures = 15 /min_captures = 12 /' \
-  "$SOURCE_DIR/procedures/seed_calibration.toml" |
+  "$SOURCE_DIR/procedures/full_calibration.toml" |
   awk 'BEGIN { RS = ""; ORS = "\n\n" } !/id = "tt_[xyz]_(050|150)"/' > "$work/short.toml"
 grep -q '^capture_duration_s = 3 ' "$work/short.toml" || fail "short procedure: no capture_duration_s"
 [ "$(grep -c '^kind = "turntable"' "$work/short.toml")" = 3 ] || fail "short procedure: not 3 turntable runs"

@@ -17,7 +17,7 @@ tmx() { tmux -L "$sock" "$@"; }
 trap 'tmx kill-server 2>/dev/null; rm -rf "$work"' EXIT
 
 # The seed procedure cut to its first turntable step.
-seed="$SOURCE_DIR/procedures/seed_calibration.toml"
+seed="$SOURCE_DIR/procedures/full_calibration.toml"
 { sed '/^\[\[step\]\]/,$d' "$seed"
   awk 'BEGIN { RS = ""; ORS = "\n\n" }
     $0 ~ "\\[\\[step\\]\\]\nid = \"tt_x_050\"" { sub(/^[^[]*\[\[step\]\]/, "[[step]]"); print }' "$seed"

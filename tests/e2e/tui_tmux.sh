@@ -95,7 +95,7 @@ check_restored full
 # A screen that waits does not change by itself, so the text is always seen before Enter goes.
 # The deadline only guards against a hang.
 # Usage: clumsy NAME SCENARIO STEP_ID TEXT
-seed_procedure="$SOURCE_DIR/procedures/seed_calibration.toml"
+seed_procedure="$SOURCE_DIR/procedures/full_calibration.toml"
 clumsy() {
   local name=$1 scenario=$2 step=$3 text=$4
   { sed '/^\[\[step\]\]/,$d' "$seed_procedure"

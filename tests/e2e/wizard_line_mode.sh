@@ -23,6 +23,13 @@ grep -q 'fit converged: 18 captures' "$work/out" || fail "the fit did not conver
 grep -q '^\[23/23\] Done' "$work/out" || fail "the wizard did not reach the end"
 grep -q 'Calibration complete' "$work/out" || fail "no completion message"
 grep -q 'a_zx' "$work/out" || fail "no misalignment in the report"
+grep -q 'Full calibration: level, 9 prism poses' "$work/out" || fail "the procedure is not named"
+# Issue 35: the end of a finished session said "time: session: about 20 s left (estimate)" (the
+# report step's reading allowance). Its last time line says the session ends.
+last_time=$(grep 'time: ' "$work/out" | tail -1)
+[[ $last_time == *"session: this is the last step; the session ends when you continue"* ]] ||
+  fail "the last step's time line: $last_time"
+if grep -n 'time: ' "$work/out" | tail -1 | grep -q ' left'; then fail "time left at the end: $last_time"; fi
 
 # End of input = save and leave, exit 0.
 set +e
@@ -32,6 +39,23 @@ code=$?
 set -e
 [[ $code -eq 0 ]] || fail "EOF exit $code"
 grep -q 'Saved' "$work/out2" || fail "EOF did not save and leave"
+
+# The procedure's former name (seed_calibration.toml, now full_calibration.toml) and its former
+# path in the source tree still open it; a session begun under one resumes under the other.
+set +e
+printf 'q\n' | "$accelcal" wizard --source sim --speed 0 --session "$work/old.db" --plain \
+  --procedure seed_calibration.toml > "$work/out4" 2> "$work/err4"
+code=$?
+set -e
+[[ $code -eq 0 ]] || fail "--procedure seed_calibration.toml exit $code: $(cat "$work/err4")"
+grep -q 'Full calibration' "$work/out4" || fail "the old name did not open the full calibration"
+set +e
+printf 'q\n' | (cd "$source_dir" && "$accelcal" wizard --source sim --speed 0 --session "$work/old.db" \
+  --plain --procedure procedures/seed_calibration.toml) > "$work/out5" 2> "$work/err5"
+code=$?
+set -e
+[[ $code -eq 0 ]] || fail "the old path exit $code: $(cat "$work/err5")"
+grep -q 'Full calibration' "$work/out5" || fail "the old path did not open the full calibration"
 
 # A malformed procedure: exit 1, FILE:LINE on stderr.
 printf 'title = "x"\n[sensor]\nnominal_scale_counts_per_mps2 = 34.8\nnominal_bias_counts = 2048\nbogus = 1\n' \

@@ -10,7 +10,7 @@
 //                                                           |a| - |f| and the file's residual;
 //                                                           exit 1 when one differs by > 1e-5
 //
-// What `apply` leaves out is added here from the README's definitions of the bench's effects,
+// What `apply` leaves out is added here from docs/model.md's definitions of the bench's effects,
 // written again (not the project's code): the size effect (axis j in the table's plane feels
 // -w^2 d_j extra, so its a^a gains w^2 d_j back, a^a = T^-1 a^p), and the reference
 // |f| = sqrt((g (1 - tilt_loss))^2 + (w^2 (r + dr))^2), w = (1 + rpm_scale) rpm 2 pi / 60.

@@ -6,8 +6,11 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include <complex>
+
 #include <Eigen/Geometry>
 #include <Eigen/LU>
+#include <unsupported/Eigen/FFT>
 
 namespace physgen {
 namespace {
@@ -137,9 +140,102 @@ Eigen::Vector3d NoiseFreeReading(const CaptureSetData& set, const CaptureData& c
              (1.0 + e.temp_scale(j) * dtemp) * response;
     if (t_s >= set.jump_t_s) raw(j) += e.bias_jump(j);
     if (c.spec.kind == Kind::kTurntable) raw(j) += e.turntable_bias(j);
+    if (e.settle_fraction(j) != 0.0) {
+      const double lag = (c.lag_at_change(j) - c.pose_u(j)) *
+                         std::exp(-std::max(0.0, t_s - c.change_s) / e.settle_tau_s);
+      raw(j) += e.settle_fraction(j) * s.scale_counts_per_mps2(j) * lag;
+    }
   }
   return raw;
 }
+
+namespace {
+
+// The mean input u = a^a (m/s^2) of capture c over its samples (the settling's pose input).
+Eigen::Vector3d MeanInput(const CaptureSetData& set, const CaptureData& c) {
+  const Eigen::Matrix3d t_inv = set.sensor.Misalignment().inverse();
+  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+  for (const Sample& smp : c.samples)
+    for (int j = 0; j < 3; ++j) sum(j) += (t_inv * SpecificForce(set, c, smp.t_s, j))(j);
+  return sum / static_cast<double>(c.samples.size());
+}
+
+// Settling: each capture's pose change, its input and the lagging input at the change (the
+// header comment's recursion; before the session the sensor rests +z up).
+void ScheduleSettling(CaptureSetData* set, const std::vector<double>& gaps_before_s) {
+  const Effects& e = set->effects;
+  Eigen::Vector3d u_prev = set->sensor.Misalignment().inverse() *
+                           Eigen::Vector3d(0.0, 0.0, set->bench.gravity_mps2);
+  Eigen::Vector3d lag_prev = u_prev;
+  double change_prev_s = 0.0;
+  for (size_t i = 0; i < set->captures.size(); ++i) {
+    CaptureData& c = set->captures[i];
+    c.pose_u = MeanInput(*set, c);
+    c.change_s = c.start_s - std::min(gaps_before_s[i], e.settle_lead_s);
+    const double decay = std::exp(-std::max(0.0, c.change_s - change_prev_s) / e.settle_tau_s);
+    c.lag_at_change = u_prev + (lag_prev - u_prev) * decay;
+    u_prev = c.pose_u;
+    lag_prev = c.lag_at_change;
+    change_prev_s = c.change_s;
+  }
+}
+
+// Kasdin's 1/f noise (alpha = 1) of n points with white innovations of std b: FFT convolution
+// of w_n with h_0 = 1, h_k = h_{k-1} (k - 1/2) / k.
+std::vector<double> FlickerSeries(long n, double b, std::mt19937_64& rng) {
+  std::normal_distribution<double> unit(0.0, 1.0);
+  long m = 1;
+  while (m < 2 * n) m *= 2;
+  std::vector<double> w(static_cast<size_t>(m), 0.0), h(static_cast<size_t>(m), 0.0);
+  for (long k = 0; k < n; ++k) w[static_cast<size_t>(k)] = b * unit(rng);
+  h[0] = 1.0;
+  for (long k = 1; k < n; ++k)
+    h[static_cast<size_t>(k)] = h[static_cast<size_t>(k - 1)] * (static_cast<double>(k) - 0.5) / static_cast<double>(k);
+  Eigen::FFT<double> fft;
+  std::vector<std::complex<double>> wf, hf;
+  fft.fwd(wf, w);
+  fft.fwd(hf, h);
+  for (size_t k = 0; k < wf.size(); ++k) wf[k] *= hf[k];
+  std::vector<double> x;
+  fft.inv(x, wf);
+  x.resize(static_cast<size_t>(n));
+  return x;
+}
+
+// The bias processes at every sample of every capture (random walk + flicker, per axis), less
+// their mean over the captures.
+void GenerateWander(CaptureSetData* set, std::mt19937_64& rng) {
+  const Effects& e = set->effects;
+  if (e.bias_walk.isZero() && e.flicker.isZero()) return;
+  const double dt = 1.0 / set->sensor.rate_hz;
+  const double end_s = set->captures.back().samples.back().t_s;
+  const long n = static_cast<long>(std::ceil(end_s / dt)) + 2;
+  std::normal_distribution<double> unit(0.0, 1.0);
+  std::vector<double> walk[3], flick[3];
+  for (int j = 0; j < 3; ++j) {
+    walk[j].assign(static_cast<size_t>(n), 0.0);
+    if (e.bias_walk(j) != 0.0)
+      for (long k = 1; k < n; ++k)
+        walk[j][static_cast<size_t>(k)] = walk[j][static_cast<size_t>(k - 1)] + e.bias_walk(j) * std::sqrt(dt) * unit(rng);
+    flick[j] = e.flicker(j) != 0.0 ? FlickerSeries(n, e.flicker(j), rng) : std::vector<double>(static_cast<size_t>(n), 0.0);
+  }
+  Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+  for (CaptureData& c : set->captures) {
+    Eigen::Vector3d cm = Eigen::Vector3d::Zero();
+    for (const Sample& smp : c.samples) {
+      const size_t k = static_cast<size_t>(std::clamp<long>(std::lround(smp.t_s / dt), 0, n - 1));
+      const Eigen::Vector3d v(walk[0][k] + flick[0][k], walk[1][k] + flick[1][k], walk[2][k] + flick[2][k]);
+      c.wander_counts.push_back(v);
+      cm += v;
+    }
+    mean += cm / static_cast<double>(c.samples.size());
+  }
+  mean /= static_cast<double>(set->captures.size());
+  for (CaptureData& c : set->captures)
+    for (Eigen::Vector3d& v : c.wander_counts) v -= mean;
+}
+
+}  // namespace
 
 CaptureSetData Generate(const Sensor& sensor, const Effects& effects, const Bench& bench,
                         const std::vector<CaptureSpec>& plan, std::mt19937_64& rng) {
@@ -154,7 +250,9 @@ CaptureSetData Generate(const Sensor& sensor, const Effects& effects, const Benc
   // 1. The schedule: start times, placements, phases; the references.
   double t = bench.first_start_s;
   double t_sum = 0.0, temp_sum = 0.0;
+  std::vector<double> gaps_before_s;  // for the first capture: the sensor rested since t = 0
   for (const CaptureSpec& spec : plan) {
+    gaps_before_s.push_back(set.captures.empty() ? t : t - set.captures.back().samples.back().t_s);
     CaptureData c;
     c.spec = spec;
     c.start_s = t;
@@ -183,11 +281,20 @@ CaptureSetData Generate(const Sensor& sensor, const Effects& effects, const Benc
                                         set.captures[middle].start_s);
   }
 
-  // 2. The samples.
+  // 2. The settling's schedule and the bias processes (a stream of their own, so that turning
+  //    them on leaves the rest of the data as it was).
+  if (!effects.settle_fraction.isZero()) ScheduleSettling(&set, gaps_before_s);
+
+  // 3. The samples.
+  std::mt19937_64 rng_copy = rng;  // the main stream is not advanced by the bias processes
+  std::mt19937_64 wander_rng(rng_copy() ^ 0x5851f42d4c957f2dULL);
+  GenerateWander(&set, wander_rng);
   std::normal_distribution<double> unit(0.0, 1.0);
   for (CaptureData& c : set.captures) {
-    for (Sample& smp : c.samples) {
+    for (size_t i = 0; i < c.samples.size(); ++i) {
+      Sample& smp = c.samples[i];
       Eigen::Vector3d raw = NoiseFreeReading(set, c, smp.t_s);
+      if (!c.wander_counts.empty()) raw += c.wander_counts[i];
       for (int j = 0; j < 3; ++j) {
         raw(j) += sensor.noise_counts(j) * unit(rng);
         if (sensor.quantize) raw(j) = std::clamp(std::round(raw(j)), sensor.adc_min, sensor.adc_max);
@@ -286,6 +393,9 @@ void WriteTruthJson(const CaptureSetData& set, const std::map<std::string, std::
   per_axis("asymmetric_scale", "asym", e.asym_scale, false);
   per_axis("bias_jump", "jump", e.bias_jump, false);
   per_axis("turntable_bias", "vre", e.turntable_bias, false);
+  per_axis("bias_walk", "K", e.bias_walk, false);
+  per_axis("flicker", "B", e.flicker, false);
+  per_axis("settling", "eps", e.settle_fraction, false);
   out << "  \"effects\": {";
   for (size_t i = 0; i < items.size(); ++i) out << (i ? ",\n" : "\n") << items[i];
   out << (items.empty() ? "}\n" : "\n  }\n") << "}\n";

@@ -55,7 +55,7 @@ void SetupExportCommand(CLI::App& app) {
   CLI::App* sub = app.add_subcommand(
       "export",
       "Write a session's accepted captures (every sample, with up_axis) as a capture-set file\n"
-      "(CSV, format in README.md) that `accelcal fit` reads. Works while a wizard is running.\n\n"
+      "(CSV, format in docs/formats.md) that `accelcal fit` reads. Works while a wizard is running.\n\n"
       "Examples:\n"
       "  accelcal export 20250301T140509Z -o captures.csv\n"
       "  accelcal export /tmp/s.db -o captures.csv && accelcal fit captures.csv");

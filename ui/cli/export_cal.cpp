@@ -159,7 +159,7 @@ void SetupExportCalCommand(CLI::App& app) {
       "The file goes to -o (the statements to stdout) or to stdout (the statements to stderr).\n\n"
       "Examples:\n"
       "  accelcal export-cal cal.json --to c-header -o accel_cal.h\n"
-      "  accelcal export-cal cal.json --to ardupilot --procedure procedures/seed_calibration.toml -o accel.param\n"
+      "  accelcal export-cal cal.json --to ardupilot --procedure procedures/full_calibration.toml -o accel.param\n"
       "  accelcal export-cal session.db --to px4 --nominal-scale-counts-per-mps2 34.8 --nominal-bias-counts 2048\n"
       "  accelcal export-cal cal.json --to kalibr --allan allan.json -o imu.yaml\n"
       "  accelcal export-cal session.db --to mavlink:serial:/dev/ttyACM0@115200 --apply");

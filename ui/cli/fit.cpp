@@ -139,7 +139,7 @@ void SetupFitCommand(CLI::App& app) {
       "  accelcal fit --recording imu.mcap --topic /imu/data -o cal.json\n"
       "  accelcal fit captures.csv --latitude -34.90 --altitude 43 -o cal.json");
   CLI::Option* captures = sub->add_option("captures", opts->captures_path,
-                                          "Capture-set file (CSV, format in README.md)")
+                                          "Capture-set file (CSV, format in docs/formats.md)")
                               ->check(InputFile());
   CLI::Option* recording = sub->add_option("--recording", opts->recording_path,
                                            "Continuous recording 't ax ay az [temp_c]' of static poses "
@@ -174,7 +174,7 @@ void SetupFitCommand(CLI::App& app) {
       ->capture_default_str();
   opts->format.Bind(*sub, "the recording (--recording)");
   sub->add_flag("--no-diagnose", opts->no_diagnose,
-                "Fit the seed's nine-parameter model only: do not look for missing effects");
+                "Fit the nine-parameter model only: do not look for missing effects");
   sub->add_flag("-q,--quiet", opts->quiet, "Print nothing but errors");
   sub->callback([opts, captures, recording] {
     if (captures->count() == 0 && recording->count() == 0)

@@ -10,7 +10,7 @@ namespace accelcal::cli {
 // standard output when `path` is empty. Throws accelcal::Error naming the file.
 void WriteOutputText(const std::string& path, const std::string& text);
 
-// A procedure shipped with the program ("seed_calibration.toml", "noise.toml"): installed in
+// A procedure shipped with the program ("full_calibration.toml", "noise.toml"): installed in
 // share/accelcal/procedures, or the source tree's for a program run from its build (shipped_files.h).
 std::string ShippedProcedurePath(const std::string& file_name);
 

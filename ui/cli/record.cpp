@@ -218,7 +218,7 @@ void SetupRecordCommand(CLI::App& app) {
       "Sources (--source): sim (the virtual bench), file:PATH (a recording, or a ROS bag's IMU\n"
       "topic: --topic; written in m/s^2 as the bag holds them), serial:DEVICE@BAUD,\n"
       "tcp:HOST:PORT, mavlink:LINK[,imu=N,rate=HZ], iio:DEVICE[,...], - (standard input).\n"
-      "Line protocol in README.md, 'Sample sources'.");
+      "Line protocol in docs/formats.md, 'Sample sources'.");
   sub->footer(
       "Examples:\n"
       "  accelcal record --source serial:/dev/ttyUSB0@115200 -o board.txt\n"

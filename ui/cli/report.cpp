@@ -23,7 +23,7 @@ struct ReportCommandOptions {
   std::string input;             // session path or name, or a calibration file (JSON)
   std::string format = "text";   // text | html | json | calibration
   std::string output_path;       // empty: stdout
-  std::string allan_path;        // allan.json (README "Reports"); empty: the session's, if any
+  std::string allan_path;        // allan.json (docs/certificate.md, "Reports"); empty: the session's, if any
   std::string noise_path;        // noise.json; empty: the session's, if any
   std::string procedure_path;    // limits from here; empty: the default procedure when it matches
 };
@@ -38,7 +38,7 @@ void RunReport(const ReportCommandOptions& o) {
   ReportRequest request;
   request.input = o.input;
   request.procedure_path = o.procedure_path;
-  request.default_procedure_path = ShippedProcedurePath("seed_calibration.toml");
+  request.default_procedure_path = ShippedProcedurePath("full_calibration.toml");
   request.allan_path = o.allan_path;
   request.noise_path = o.noise_path;
   const ReportModel model = BuildReportModel(ReportInputsFor(request));
@@ -77,7 +77,7 @@ void SetupReportCommand(CLI::App& app) {
   sub->add_option("--allan", opts->allan_path, "Allan-deviation analysis (JSON) to include");
   sub->add_option("--noise", opts->noise_path, "Noise analysis (JSON) to include");
   sub->add_option("--procedure", opts->procedure_path,
-                  "Procedure whose [limits] decide pass/fail (default: the seed procedure, when "
+                  "Procedure whose [limits] decide pass/fail (default: the full calibration, when "
                   "the session ran it)")
       ->transform(ShippedFile(kShippedProcedures));
   sub->callback([opts] { RunReport(*opts); });

@@ -39,6 +39,27 @@ bool IsRegularFile(const fs::path& p) {
   return fs::is_regular_file(p, ec);
 }
 
+// Shipped files renamed since they were first shipped: a script, a shell's history or a
+// session's notes that name the old file (by name or by its path in the source tree) still find
+// the new one.
+struct RenamedShipped {
+  std::string_view kind;
+  std::string_view old_name;
+  std::string_view new_name;
+};
+constexpr RenamedShipped kRenamedShipped[] = {
+    {kShippedProcedures, "seed_calibration.toml", "full_calibration.toml"},
+};
+
+// The shipped name `typed` now has when its file name (".toml" added when missing) is a
+// renamed one's old name; empty otherwise.
+std::string_view RenamedTo(std::string_view kind, const std::string& typed) {
+  const std::string name = fs::path(typed).filename().string();
+  for (const RenamedShipped& r : kRenamedShipped)
+    if (r.kind == kind && (name == r.old_name || name + ".toml" == r.old_name)) return r.new_name;
+  return {};
+}
+
 }  // namespace
 
 fs::path ShippedDirFrom(const fs::path& exe_dir, std::string_view kind) {
@@ -71,7 +92,15 @@ std::vector<std::string> ShippedNames(std::string_view kind) {
 
 std::string ResolveShipped(std::string_view kind, const std::string& typed) {
   std::error_code ec;
-  if (typed.empty() || typed.find('/') != std::string::npos || fs::exists(typed, ec)) return typed;
+  if (typed.empty() || fs::exists(typed, ec)) return typed;
+  if (const std::string_view renamed = RenamedTo(kind, typed); !renamed.empty()) {
+    try {
+      if (const fs::path now = ShippedDir(kind) / renamed; IsRegularFile(now)) return now.string();
+    } catch (const Error&) {
+      return typed;  // nothing shipped to look in: the reader says the file is not there
+    }
+  }
+  if (typed.find('/') != std::string::npos) return typed;
   fs::path dir;
   try {
     dir = ShippedDir(kind);

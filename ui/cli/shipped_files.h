@@ -27,9 +27,11 @@ std::filesystem::path ShippedDir(std::string_view kind);
 // The .toml files of ShippedDir(kind), by name, sorted.
 std::vector<std::string> ShippedNames(std::string_view kind);
 
-// `typed` as the path to open: itself when it names an existing file or holds a '/'; else the
-// shipped file of that name (".toml" added when missing) when there is one; else itself, for
-// the reader to refuse ("no such file").
+// `typed` as the path to open: itself when it names an existing file; else, when its file name is
+// the old name of a renamed shipped file (seed_calibration.toml, now full_calibration.toml),
+// that file as shipped now, whatever directory `typed` named; else itself when it holds a '/';
+// else the shipped file of that name (".toml" added when missing) when there is one; else
+// itself, for the reader to refuse ("no such file").
 std::string ResolveShipped(std::string_view kind, const std::string& typed);
 
 // A CLI11 transform applying ResolveShipped to an option's value. Its name (ShippedValidatorName)

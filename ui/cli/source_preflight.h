@@ -19,7 +19,7 @@ void RefuseAbsentSerialPort(const std::string& spec);
 // A MAVLink source: reads the vehicle's own accelerometer calibration, says it on `say`, and
 // takes it back out of the samples (`choice` "undo") or leaves it in ("as-is"). Throws
 // accelcal::Error (before anything is created) when it cannot be undone or no vehicle answers.
-// Other sources: nothing. What the wizard's device step will ask instead (README, "Autopilots").
+// Other sources: nothing. What the wizard's device step will ask instead (docs/devices.md).
 void PrepareVehicle(SampleSource& source, const std::string& choice, std::FILE* say);
 
 }  // namespace accelcal::cli

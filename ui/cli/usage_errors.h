@@ -1,6 +1,6 @@
 // How `accelcal` reports a command line it cannot take (CLI11's parse errors), in the one form of
 // every error: "accelcal: error: <what>" on stderr, with a "did you mean --session?" for a
-// mistyped option or subcommand, then where the usage is. Exit codes (README.md, "Exit status"):
+// mistyped option or subcommand, then where the usage is. Exit codes (docs/guide.md, "Using it": exit status):
 // 0 done (and --help, --version), 1 the job failed or its input was refused (a file missing or
 // unreadable, a refused value, a source that is not there), 2 the command line itself is wrong.
 #pragma once

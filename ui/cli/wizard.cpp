@@ -43,7 +43,7 @@ std::string DefaultOperator(bool sim) {
 int RunWizard(const WizardCommandOptions& options) {
   RefuseAbsentSerialPort(options.source);  // before the session file is created
   const Procedure procedure = LoadProcedure(
-      options.procedure_path.empty() ? ShippedProcedurePath("seed_calibration.toml") : options.procedure_path);
+      options.procedure_path.empty() ? ShippedProcedurePath("full_calibration.toml") : options.procedure_path);
   // `--source -`: stdin carries the samples, so the answers come from the terminal (refused
   // here, before anything is opened or written, when there is none).
   std::unique_ptr<TerminalAnswers> tty;
@@ -106,7 +106,7 @@ void SetupWizardCommand(CLI::App& app) {
       ->transform(ShippedFile(kShippedScenarios));
   sub->add_option("--procedure", options->procedure_path,
                   "Procedure file (TOML), or a shipped one's name (noise.toml); default: the shipped "
-                  "seed_calibration.toml")
+                  "full_calibration.toml")
       ->transform(ShippedFile(kShippedProcedures));
   sub->add_option("--place", options->place, "The lab or bench, offered at the welcome (for the report)");
   sub->add_option("--session", options->session_path,

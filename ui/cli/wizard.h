@@ -14,7 +14,7 @@ struct WizardCommandOptions {
   double speed = 1.0;               // sim: simulated seconds per wall second; 0 = flat out
   std::optional<std::uint64_t> seed;  // sim: overrides the scenario's seed
   std::string scenario_path;        // sim: scenario file; empty = the built-in default bench
-  std::string procedure_path;       // empty = the shipped seed_calibration.toml (shipped_files.h)
+  std::string procedure_path;       // empty = the shipped full_calibration.toml (shipped_files.h)
   std::string session_path;         // empty = a new session named by the time
   bool plain = false;               // line mode even on a terminal
   std::string place;                // offered at the welcome (the lab, the bench)

@@ -4,6 +4,7 @@
 
 #include "accelcal/base/error.h"
 #include "accelcal/calibration/calibration_budget.h"
+#include "accelcal/calibration/excess_scatter.h"
 
 namespace accelcal {
 
@@ -15,6 +16,9 @@ Calibration CalibrationOutcome::MakeCalibration(bool adopt_effects) const {
   Calibration cal = accelcal::MakeCalibration(diagnosis, adopt_effects, gravity, captures, source_name);
   if (cal.diagnosis) cal.diagnosis->ran = diagnosed;
   cal.reading_unit = reading_unit;
+  if (settling.detected) cal.limited_by.insert(cal.limited_by.begin(), {"settling", SettlingWords(settling)});
+  if (adopt_effects && !diagnosis.adopted.empty())
+    for (const NearTie& t : near_ties) cal.limited_by.push_back({"near_tie", NearTieWords(t)});
   if (references)
     cal.budget = MakeCalibrationBudget(diagnosis, adopt_effects, captures, gravity.gravity_mps2, *references);
   return cal;
@@ -38,6 +42,7 @@ CalibrationOutcome CalibrateCaptures(CalibrationRequest request) {
   if (request.check_turntable_runs)
     CheckTurntableRuns(out.captures, request.gravity,
                        {request.turntable_centripetal_tolerance, request.screening.adc_range});
+  if (request.settling) out.settling = HandleSettling(out.captures, *request.settling);
 
   FitOptions fit;
   fit.gravity = request.gravity;
@@ -50,6 +55,12 @@ CalibrationOutcome CalibrateCaptures(CalibrationRequest request) {
   DisagreementOptions disagreement = request.disagreement;
   if (!request.diagnose) disagreement.refuse = false;
   ResolveDisagreeingCaptures(out.captures, fit, diagnosis, disagreement, &out.diagnosis);
+  ApplyExcessScatter(out.captures, diagnosis.consistency_p, &out.diagnosis);
+  if (request.diagnose && !out.diagnosis.adopted.empty()) {
+    out.near_ties = FindNearTies(out.diagnosis, CapturesOfFit(out.diagnosis.final_fit, out.captures), fit);
+    WidenForNearTies(out.near_ties, &out.diagnosis.final_fit);
+    if (!out.diagnosis.stages.empty()) out.diagnosis.stages.back() = out.diagnosis.final_fit;
+  }
   return out;
 }
 

@@ -21,6 +21,8 @@
 #include "accelcal/calibration/capture_screening.h"
 #include "accelcal/calibration/diagnosis/diagnosis.h"
 #include "accelcal/calibration/fit/calibration_fit.h"
+#include "accelcal/calibration/near_tie.h"
+#include "accelcal/calibration/settling.h"
 
 namespace accelcal {
 
@@ -41,6 +43,9 @@ struct CalibrationRequest {
   bool check_turntable_runs = true;
   double turntable_centripetal_tolerance = TurntableRunCheckOptions{}.centripetal_tolerance;
   DisagreementOptions disagreement;   // refuse is set to false when !diagnose
+  // Captures still settling after their change of pose: their settled readings are used
+  // (calibration/settling.h); nullopt: not looked for.
+  std::optional<SettlingOptions> settling = SettlingOptions{};
   // The reference quantities' standard uncertainties (type B): when given, the calibration
   // carries its uncertainty budget (calibration/uncertainty_budget.h). The gravity's is taken
   // from `gravity` when this leaves it NaN.
@@ -55,6 +60,10 @@ struct CalibrationOutcome {
   bool diagnosed = false;
   DiagnosisReport diagnosis;          // base fit, adopted effects, final fit, stages
   std::optional<ReferenceUncertainties> references;  // the request's (gravity's filled in)
+  SettlingFinding settling;           // detected: the captures' settled readings were used
+  // Effects the captures can barely tell from the adopted ones (near_tie.h): the final fit's
+  // uncertainty includes each choice.
+  std::vector<NearTie> near_ties;
 
   // The base fit is usable (there is a calibration).
   bool usable() const { return diagnosis.base.IsUsable(); }

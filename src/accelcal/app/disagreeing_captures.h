@@ -29,7 +29,7 @@ struct DisagreementOptions {
   double min_abs_z = 10.0;             // a left-out prediction this many sigmas off, at least
   int max_left_out = 2;                // captures left out at most (and at most 1 in 9)
   // Above this chi2/dof (residuals ~30 times what the captures' noise explains) the fit is
-  // refused; the Xsens recording of the README, hand-held, shows 16.
+  // refused; the Xsens recording of docs/model.md, hand-held, shows 16.
   double refuse_chi2_per_dof = 1000.0;
   bool refuse = true;                  // false: step 2 warns instead (the base model asked for)
 };

@@ -44,11 +44,12 @@ void AddLimits(const ReportRequest& r, ReportInputs* in) {
     return;
   }
   // The session names its procedure by title: its limits are the default procedure's only when
-  // that is the one it ran (a calibration file alone states no procedure).
+  // that is the one it ran, under its title or a former one (a calibration file alone states no
+  // procedure).
   if (in->meta.procedure.empty() || r.default_procedure_path.empty()) return;
   try {
     const Procedure p = LoadProcedure(r.default_procedure_path);
-    if (p.title == in->meta.procedure) {
+    if (p.IsTitled(in->meta.procedure)) {
       in->limits = p.limits;
       SetEquipment(p, in);
     }

@@ -75,6 +75,15 @@ struct CaptureStats {
 
 CaptureStats ComputeStats(const std::vector<Sample>& samples);
 
+// A static capture's reading once settled, when it was still settling as it was taken
+// (calibration/settling.h): the asymptote of its samples and that estimate's covariance, which
+// the fit uses instead of the plain mean.
+struct SettledReading {
+  Eigen::Vector3d mean_counts = Eigen::Vector3d::Zero();
+  Eigen::Matrix3d mean_cov_counts2 = Eigen::Matrix3d::Identity();
+  Eigen::Vector3d offset_counts = Eigen::Vector3d::Zero();  // plain mean less the asymptote
+};
+
 struct Capture {
   int id = 0;
   CaptureKind kind = CaptureKind::kStatic;
@@ -93,6 +102,8 @@ struct Capture {
   // When the capture was left out of the fit: why (set by screening); empty when usable.
   std::string rejection_reason;
   bool used() const { return rejection_reason.empty(); }
+  // Set when the capture was still settling and its asymptote is used (calibration/settling.h).
+  std::optional<SettledReading> settled;
 
   // The statistics of `samples`, computed once and carried with the capture: handed over by the
   // capture engine, which accumulates them as the samples arrive (set_stats), or computed on

@@ -2,7 +2,7 @@
 // `apply` reads, and the byte streams of the file, standard-input, serial and TCP sources. Bytes
 // in, as they come (a whole file, blocks, or reads of any size), samples out.
 //
-// What it reads (README.md, "Recordings and sample streams"):
+// What it reads (docs/formats.md, "Reading other people's files"):
 // - Lines ended by LF or CRLF; a UTF-8 byte-order mark at the start is skipped; the first
 //   `skip_rows` lines are ignored whatever they hold; blank lines and lines whose first
 //   non-blank character is '#' (comments) are skipped anywhere.

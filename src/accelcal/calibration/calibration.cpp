@@ -5,6 +5,7 @@
 
 #include "accelcal/calibration/diagnosis/diagnosis.h"
 #include "accelcal/calibration/diagnosis/effect.h"
+#include "accelcal/calibration/fit/scatter_uncertainty.h"
 
 namespace accelcal {
 namespace {
@@ -30,6 +31,14 @@ CalibrationEffect MakeEffect(const AdoptedEffect& a) {
   e.corrects_readings = effect != nullptr && effect->CorrectsReadings();
   e.evidence = a.evidence;
   return e;
+}
+
+// The verdict's sentence for an uncertainty taken from the scatter between the captures.
+std::string ScatterLimitWords(const ScatterModel& scatter) {
+  return fmt::format("limited by the scatter between the captures: they disagree beyond their own "
+                     "noise and no effect explains it, most likely {}; the uncertainties come from "
+                     "that scatter (up to {:.1f} times what the noise alone gives)",
+                     DescribeScatter(scatter), scatter.ratio_to_noise);
 }
 
 }  // namespace
@@ -69,6 +78,7 @@ FitStatistics MakeFitStatistics(const FitSummary& s) {
   f.optimizer = fmt::format("NLopt SLSQP ({}, {} evaluations) + Gauss-Newton ({} iterations)",
                             s.optimizer_result, s.optimizer_evaluations, s.gauss_newton_iterations);
   f.warnings = s.warnings;
+  f.scatter = s.scatter;
   return f;
 }
 
@@ -123,6 +133,8 @@ Calibration MakeCalibration(const FitSummary& summary, const GravitySpec& gravit
     if (h.index < kNumBaseParameters)
       cal.held.push_back({std::string(ParameterName(h.index)), h.value, h.reason});
   cal.captures = MakeCalibrationCaptures(all, summary);
+  if (summary.scatter)
+    cal.limited_by.push_back({"scatter", ScatterLimitWords(*summary.scatter)});
   cal.stages.push_back({"base model", summary.residual_rms_mps2});
   for (CalibrationCapture& c : cal.captures) c.stage_residuals_mps2 = {c.residual_mps2};
   return cal;

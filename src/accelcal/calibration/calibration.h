@@ -87,6 +87,19 @@ struct FitStatistics {
   double most_correlated_rho = kNaN;
   std::string optimizer;           // in words
   std::vector<std::string> warnings;
+  // Set when the uncertainties come from the scatter between the captures (the residuals exceed
+  // their noise and no effect explains them): fit/scatter_uncertainty.h. Then uncertainty_scale
+  // is 1 and each 1-sigma is already the standard deviation of its t-distribution.
+  std::optional<ScatterModel> scatter;
+};
+
+// What limits a calibration beyond its captures' own noise (issue 29), for the verdict and the
+// certificate: the uncertainty taken from the scatter between the captures, captures that were
+// still settling, a choice between two effects these captures cannot tell apart, a reference pose
+// that moved over the session.
+struct UncertaintyLimit {
+  std::string kind;   // "scatter", "settling", "near_tie", "reference_drift"
+  std::string words;  // one sentence in plain words ("the calibration is limited by ...")
 };
 
 // What the diagnosis concluded (absent when it did not run).
@@ -132,6 +145,8 @@ struct Calibration {
   // The GUM budget of the nine parameters (type A and the reference quantities' type B,
   // expanded): absent when nobody asked for one (a file written before it existed).
   std::optional<UncertaintyBudget> budget;
+  // What limits it beyond the captures' noise; empty when nothing does (issue 29).
+  std::vector<UncertaintyLimit> limited_by;
 
   // The adopted effect called `name`; nullptr when there is none.
   const CalibrationEffect* FindEffect(std::string_view name) const;

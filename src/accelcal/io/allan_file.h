@@ -27,7 +27,7 @@
 //     }
 //   }
 // A figure that cannot be given (too short a record) is null, never a made-up number. The
-// report reads such a file (and the shape of README "Reports") as an AllanSection.
+// report reads such a file (and the shape of docs/certificate.md, "Reports") as an AllanSection.
 #pragma once
 
 #include <string>
@@ -42,7 +42,7 @@ std::string AllanFileText(const RecordAnalysis& analysis, const std::string& sou
                           double drift_window_s);
 // Writes `text` to `path` atomically. Throws accelcal::Error when it cannot.
 void WriteAllanFile(const std::string& path, const std::string& text);
-// An Allan file (or README's report shape) read strictly as the report's section; InputError
+// An Allan file (or docs/certificate.md's report shape) read strictly as the report's section; InputError
 // naming the file and field otherwise. ReadAllanFile reads `path` once (a pipe works).
 AllanSection ParseAllanText(const std::string& text, const std::string& source);
 AllanSection ReadAllanFile(const std::string& path);

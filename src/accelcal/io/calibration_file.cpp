@@ -73,6 +73,20 @@ json FitJson(const Calibration& cal) {
                       {"noise_rms_mps2", JsonNumber(cal.diagnosis->noise_rms_mps2)},
                       {"consistent_with_noise", cal.diagnosis->consistent_with_noise},
                       {"conclusion", cal.diagnosis->conclusion}};
+  if (s.scatter) {
+    json candidates = json::array();
+    for (const ScatterCandidate& c : s.scatter->candidates)
+      candidates.push_back({{"structure", std::string(ScatterStructureToString(c.structure))},
+                            {"size", JsonNumber(c.size)},
+                            {"unit", std::string(ScatterSizeUnit(c.structure))},
+                            {"log_likelihood", JsonNumber(c.log_likelihood)}});
+    j["scatter"] = {{"structure", std::string(ScatterStructureToString(s.scatter->structure))},
+                    {"size", JsonNumber(s.scatter->size)},
+                    {"unit", std::string(ScatterSizeUnit(s.scatter->structure))},
+                    {"min_dof", JsonNumber(s.scatter->min_dof)},
+                    {"ratio_to_noise", JsonNumber(s.scatter->ratio_to_noise)},
+                    {"candidates", candidates}};
+  }
   if (!cal.stages.empty()) {
     json stages = json::array();
     for (const ModelStage& st : cal.stages)
@@ -245,6 +259,33 @@ CalibrationCapture ReadCapture(const json& c, size_t index, const std::string& s
   return r;
 }
 
+ScatterStructure ReadScatterStructure(const json& j, const std::string& path, const std::string& source) {
+  ScatterStructure structure = ScatterStructure::kIndependent;
+  if (!ScatterStructureFromString(OptionalString(j, "structure", path, source), &structure))
+    FailField(source, path + "structure", "must be independent, flicker or random_walk");
+  return structure;
+}
+
+ScatterModel ReadScatter(const json& j, const std::string& path, const std::string& source) {
+  if (!j.is_object()) FailField(source, path.substr(0, path.size() - 1), "must be an object");
+  ScatterModel m;
+  m.structure = ReadScatterStructure(j, path, source);
+  m.size = OptionalFinite(j, "size", path, source);
+  m.min_dof = OptionalFinite(j, "min_dof", path, source);
+  m.ratio_to_noise = OptionalFinite(j, "ratio_to_noise", path, source);
+  if (j.contains("candidates") && !j["candidates"].is_null()) {
+    const json& c = j["candidates"];
+    if (!c.is_array()) FailField(source, path + "candidates", "must be an array");
+    for (size_t i = 0; i < c.size(); ++i) {
+      const std::string cp = fmt::format("{}candidates[{}].", path, i);
+      if (!c[i].is_object()) FailField(source, cp.substr(0, cp.size() - 1), "must be an object");
+      m.candidates.push_back({ReadScatterStructure(c[i], cp, source), OptionalFinite(c[i], "size", cp, source),
+                              OptionalFinite(c[i], "log_likelihood", cp, source)});
+    }
+  }
+  return m;
+}
+
 FitStatistics ReadFit(const json& f, const std::string& source, Calibration* cal) {
   FitStatistics s;
   if (f.is_null()) return s;
@@ -289,6 +330,7 @@ FitStatistics ReadFit(const json& f, const std::string& source, Calibration* cal
     o.conclusion = OptionalString(d, "conclusion", dp, source);
     cal->diagnosis = o;
   }
+  if (f.contains("scatter") && !f["scatter"].is_null()) s.scatter = ReadScatter(f["scatter"], p + "scatter.", source);
   if (f.contains("stages") && !f["stages"].is_null()) {
     const json& st = f["stages"];
     if (!st.is_array()) FailField(source, p + "stages", "must be an array");
@@ -364,6 +406,15 @@ Calibration CalibrationFromJson(const json& j, const std::string& source) {
   for (size_t i = 0; i < captures.size(); ++i) cal.captures.push_back(ReadCapture(captures[i], i, source));
   if (j.contains("uncertainty_budget") && !j.at("uncertainty_budget").is_null())
     cal.budget = detail::BudgetFromJson(j.at("uncertainty_budget"), source);
+  if (j.contains("limited_by") && !j.at("limited_by").is_null()) {
+    const json& l = j.at("limited_by");
+    if (!l.is_array()) FailField(source, "limited_by", "must be an array");
+    for (size_t i = 0; i < l.size(); ++i) {
+      const std::string lp = fmt::format("limited_by[{}].", i);
+      if (!l[i].is_object()) FailField(source, fmt::format("limited_by[{}]", i), "must be an object");
+      cal.limited_by.push_back({OptionalString(l[i], "kind", lp, source), OptionalString(l[i], "words", lp, source)});
+    }
+  }
   return cal;
 }
 
@@ -396,6 +447,11 @@ json CalibrationToJson(const Calibration& cal) {
           {"effects", effects},
           {"captures", captures}};
   if (cal.budget) out["uncertainty_budget"] = detail::BudgetToJson(*cal.budget);
+  if (!cal.limited_by.empty()) {
+    json limits = json::array();
+    for (const UncertaintyLimit& l : cal.limited_by) limits.push_back({{"kind", l.kind}, {"words", l.words}});
+    out["limited_by"] = limits;
+  }
   return out;
 }
 

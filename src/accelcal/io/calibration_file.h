@@ -1,4 +1,4 @@
-// The calibration file: JSON, format "accelcal-calibration/1" (schema in README.md), the file
+// The calibration file: JSON, format "accelcal-calibration/1" (schema in docs/formats.md), the file
 // form of the typed Calibration (calibration/calibration.h).
 //
 // Written with full round-trip precision; read strictly: a missing field, a wrong type, a

@@ -16,7 +16,7 @@
 //    "warnings": ["..."]}
 //
 // Numbers are written at full precision; a value that does not exist (NaN) is null. The report
-// reads such a file (or README "Reports"' shorter shape) as a NoiseSection.
+// reads such a file (or docs/certificate.md "Reports"' shorter shape) as a NoiseSection.
 #pragma once
 
 #include <string>

@@ -189,6 +189,21 @@ void ReadSteps(TomlTableReader& root, const StepDefaults& d, const std::string& 
   }
 }
 
+// former_titles: an array of strings (absent: none).
+std::vector<std::string> ReadFormerTitles(TomlTableReader& root) {
+  std::vector<std::string> titles;
+  const toml::node* node = root.Get("former_titles");
+  if (node == nullptr) return titles;
+  const toml::array* array = node->as_array();
+  if (array == nullptr) root.Fail(*node, "former_titles", "must be an array of strings");
+  for (const toml::node& item : *array) {
+    const toml::value<std::string>* text = item.as_string();
+    if (text == nullptr) root.Fail(item, "former_titles", "must be an array of strings");
+    titles.push_back(text->get());
+  }
+  return titles;
+}
+
 }  // namespace
 
 Procedure ParseProcedure(std::string_view toml_text, const std::string& source_name) {
@@ -197,6 +212,7 @@ Procedure ParseProcedure(std::string_view toml_text, const std::string& source_n
   p.source_name = source_name;
   TomlTableReader root(doc, "", source_name);
   p.title = root.String("title", std::nullopt);
+  p.former_titles = ReadFormerTitles(root);
   bool has_sensor = false;
   WithTable(root, "sensor", source_name, [&](TomlTableReader& r) {
     ReadSensor(r, p);

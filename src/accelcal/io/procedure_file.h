@@ -1,4 +1,4 @@
-// Reading a procedure (session/procedure.h) from its TOML file (README.md, "Procedures").
+// Reading a procedure (session/procedure.h) from its TOML file (docs/guide.md, "Procedures").
 #pragma once
 
 #include <string>

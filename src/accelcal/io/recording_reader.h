@@ -1,7 +1,7 @@
 // Reading a continuous recording into memory: one sample per line, as logged by a data logger
 // or exported by other tools (the imu_tk test data, tests/data/imu_tk/xsens_acc.mat, is
-// one). The reader is the one of every sample table (base/sample_reader.h; README.md,
-// "Recordings and sample streams"); the protocol's form, with no options, is:
+// one). The reader is the one of every sample table (base/sample_reader.h; docs/formats.md,
+// "Reading other people's files"); the protocol's form, with no options, is:
 //
 //   # comment
 //      2.9840000e-02   3.3108000e+04   3.3329000e+04   3.6429000e+04

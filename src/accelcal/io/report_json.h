@@ -1,5 +1,5 @@
 // The calibration report as JSON, format "accelcal-report/1": the report model field by field
-// (README "Reports"). NaN is written as null. It is a report, not a calibration: `accelcal
+// (docs/certificate.md, "Reports"). NaN is written as null. It is a report, not a calibration: `accelcal
 // apply` reads the calibration file (`accelcal export`, or `accelcal report --format
 // calibration`).
 #pragma once

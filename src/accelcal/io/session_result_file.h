@@ -3,7 +3,7 @@
 // missing), so that a report made later gives the verdict the wizard gave. `accelcal apply`
 // reads it as it reads a calibration file. And what a calibration file or a session's result
 // may carry beside the calibration for a report (the "allan", "noise" and "session_gaps" keys,
-// README "Reports").
+// docs/certificate.md, "Reports").
 #pragma once
 
 #include <string>

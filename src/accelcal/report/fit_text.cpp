@@ -62,6 +62,7 @@ std::string FormatFitReport(const Calibration& cal, const FitSummary& summary) {
   for (const std::string& w : cal.fit.warnings)
     if (std::find(summary.warnings.begin(), summary.warnings.end(), w) == summary.warnings.end())
       extra += "warning: " + w + "\n";
+  for (const UncertaintyLimit& l : cal.limited_by) extra += "the calibration is " + l.words + "\n";
   return "\n" + summary.FullReport() + extra + "\ncaptures:\n" + FormatCaptureTable(cal.captures);
 }
 

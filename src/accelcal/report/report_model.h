@@ -40,7 +40,7 @@ struct ReportMeta {
   std::string source;         // the sample source ("sim", "serial:/dev/ttyUSB0")
 };
 
-// One axis of an Allan-deviation analysis (the shape of allan.json, README "Reports").
+// One axis of an Allan-deviation analysis (the shape of allan.json, docs/certificate.md, "Reports").
 struct AllanAxis {
   double noise_density = kNaN;     // unit/sqrt(Hz)
   double bias_instability = kNaN;  // unit

@@ -1,5 +1,5 @@
-// The bench's equipment as a procedure lists it ([equipment] in the procedure file, README
-// "Procedures"), each item with its identification, the standard uncertainty it gives its
+// The bench's equipment as a procedure lists it ([equipment] in the procedure file,
+// docs/guide.md, "Procedures"), each item with its identification, the standard uncertainty it gives its
 // reference quantity, and what that is traced to: the type B inputs of the uncertainty budget
 // (calibration/uncertainty_budget.h) and the certificate's equipment list.
 //

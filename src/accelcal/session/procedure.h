@@ -1,5 +1,5 @@
 // A calibration procedure as data: the steps a wizard session walks through, read from TOML at
-// run time (procedures/*.toml, by io/procedure_file.h; the format is in README.md, "Procedures").
+// run time (procedures/*.toml, by io/procedure_file.h; the format is in docs/guide.md, "Procedures").
 //
 // Units: deg for tolerances shown to the operator, s for durations, m and rpm for the turntable,
 // g for the accelerometer's range, counts and counts per m/s^2 for the nominal model.
@@ -79,7 +79,18 @@ struct ProcedureRequirements {
 
 struct Procedure {
   std::string title;
+  // The titles this procedure had before (former_titles): a session records its procedure's
+  // title, and one recorded under a former title ran this procedure.
+  std::vector<std::string> former_titles;
   std::string source_name;  // the file it came from
+
+  // `recorded` (a session's procedure) names this procedure, by its title or a former one.
+  bool IsTitled(std::string_view recorded) const {
+    if (recorded == title) return true;
+    for (const std::string& former : former_titles)
+      if (recorded == former) return true;
+    return false;
+  }
   double range_g = 6.0;     // the accelerometer's full-scale range, +- g
   SensorModel nominal;      // datasheet scale and bias (no misalignment): the rough model
   AdcRange adc_range{0.0, 4095.0};  // the ADC's output range, counts

@@ -16,7 +16,7 @@
 
 short_procedure() {
   sed -e 's/^capture_duration_s = 10 /capture_duration_s = 3 /' \
-    "$source_dir/procedures/seed_calibration.toml" > "$work/short.toml"
+    "$source_dir/procedures/full_calibration.toml" > "$work/short.toml"
   grep -q '^capture_duration_s = 3 ' "$work/short.toml" || fail "short procedure: no capture_duration_s"
 }
 

@@ -2,7 +2,7 @@
 """Test files of the shapes loggers in the field write, from the physics alone.
 
 Independent of accelcal's code (the standard library only): the sensor is the lab chapter's
-model, raw = K T^-1 f + b with T = [[1, -a_yz, a_zy], [0, 1, -a_zx], [0, 0, 1]] (README.md, "The
+model, raw = K T^-1 f + b with T = [[1, -a_yz, a_zy], [0, 1, -a_zx], [0, 0, 1]] (docs/model.md, "The
 model"), f the specific force in the platform frame (|f| = g at rest), white noise per axis,
 rounded to whole counts. Each pose is placed with a random small rotation (the hand's error).
 

@@ -109,7 +109,7 @@ TEST(UncertaintyBudget, AgreesWithMonteCarloOnTheVirtualBench) {
   std::vector<Eigen::Matrix3d> chol;
   for (const FitCapture& c : b.used) chol.push_back(c.mean_cov_counts2.llt().matrixL());
   // 2000 draws in CI (~1 s; the 95.45 % half-width of 2000 draws is good to ~3 %);
-  // ACCELCAL_MC_DRAWS=8000 prints the figures of the README.
+  // ACCELCAL_MC_DRAWS=8000 prints the figures of docs/certificate.md.
   const char* env = std::getenv("ACCELCAL_MC_DRAWS");
   const int draws = env != nullptr ? std::max(100, std::atoi(env)) : 2000;
   std::vector<std::vector<double>> values(9);

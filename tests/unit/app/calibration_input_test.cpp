@@ -40,8 +40,8 @@ void WriteText(const fs::path& path, const std::string& text) {
   std::ofstream(path, std::ios::binary) << text;
 }
 
-std::string SeedProcedurePath() {
-  return std::string(ACCELCAL_SOURCE_DIR) + "/procedures/seed_calibration.toml";
+std::string FullProcedurePath() {
+  return std::string(ACCELCAL_SOURCE_DIR) + "/procedures/full_calibration.toml";
 }
 
 class CalibrationInputTest : public testing::SessionDirTest {
@@ -142,11 +142,11 @@ TEST_F(CalibrationInputTest, PipeIsReadOnceAsACalibrationFile) {
 // The report's metadata: the session's identity, and the default procedure's limits only when
 // the session ran it.
 TEST_F(CalibrationInputTest, ReportOfASessionCarriesItsMetaAndItsProcedureLimits) {
-  const Procedure seed = LoadProcedure(SeedProcedurePath());
+  const Procedure seed = LoadProcedure(FullProcedurePath());
   MakeSession(true, seed.title);
   ReportRequest request;
   request.input = path_;
-  request.default_procedure_path = SeedProcedurePath();
+  request.default_procedure_path = FullProcedurePath();
   const ReportInputs in = ReportInputsFor(request);
   EXPECT_EQ(in.meta.device, "SN-0042");
   EXPECT_EQ(in.meta.session_path, path_);
@@ -156,11 +156,27 @@ TEST_F(CalibrationInputTest, ReportOfASessionCarriesItsMetaAndItsProcedureLimits
   EXPECT_TRUE(*in.nominal_bias_counts == seed.nominal.bias_counts);
 }
 
+// A session recorded before the procedure was renamed names it by its former title ("Seed
+// calibration: ..."): it ran this procedure, so its report takes this procedure's limits.
+TEST_F(CalibrationInputTest, ReportOfASessionUnderTheProceduresFormerTitleCarriesItsLimits) {
+  const Procedure full = LoadProcedure(FullProcedurePath());
+  ASSERT_FALSE(full.former_titles.empty());
+  MakeSession(true, "Seed calibration: level, 9 prism poses, 9 turntable runs, fit, diagnosis");
+  ReportRequest request;
+  request.input = path_;
+  request.default_procedure_path = FullProcedurePath();
+  const ReportInputs in = ReportInputsFor(request);
+  EXPECT_EQ(in.meta.procedure, full.former_titles.front());
+  EXPECT_TRUE(in.limits.has_value());
+  ASSERT_TRUE(in.nominal_bias_counts.has_value());
+  EXPECT_TRUE(*in.nominal_bias_counts == full.nominal.bias_counts);
+}
+
 TEST_F(CalibrationInputTest, ReportOfAnotherProcedureStatesNoLimits) {
   MakeSession(true, "a procedure of another lab");
   ReportRequest request;
   request.input = path_;
-  request.default_procedure_path = SeedProcedurePath();
+  request.default_procedure_path = FullProcedurePath();
   EXPECT_FALSE(ReportInputsFor(request).limits.has_value());
   const fs::path file = dir_ / "cal.json";
   WriteText(file, CalibrationToJsonText(testing::ExportTestCalibration()));

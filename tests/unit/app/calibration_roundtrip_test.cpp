@@ -4,7 +4,7 @@
 // and in pairs, on capture sets of the independent physics bench (physics_captures.h).
 //
 // `apply` corrects the sensor's own effects only; the bench's effects of the session are added
-// here from the README's definitions, written again: the session's bias drift is taken off the
+// here from docs/model.md's definitions, written again: the session's bias drift is taken off the
 // mean reading; the size effect gives axis j in the table's plane back w^2 d_j of a^a
 // (a^a = T^-1 a^p); the reference is |f| = sqrt((g (1 - tilt_loss))^2 + (w^2 (r + dr))^2) with
 // w = (1 + rpm_scale) rpm 2 pi / 60.

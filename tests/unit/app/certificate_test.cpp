@@ -76,7 +76,7 @@ TEST(Equipment, ReadFromTheProcedureInSiUnits) {
 }
 
 TEST(Equipment, TheSeedProcedureListsTheBench) {
-  const Procedure p = LoadProcedure(std::string(ACCELCAL_SOURCE_DIR) + "/procedures/seed_calibration.toml");
+  const Procedure p = LoadProcedure(std::string(ACCELCAL_SOURCE_DIR) + "/procedures/full_calibration.toml");
   EXPECT_EQ(p.equipment.size(), 4u);
   for (const EquipmentItem& e : p.equipment) {
     EXPECT_TRUE(std::isfinite(e.standard_uncertainty)) << InfoOf(e.role).key;
@@ -102,7 +102,7 @@ ReportInputs BenchInputs(const std::vector<EquipmentItem>& equipment) {
   in.calibration = outcome.MakeCalibration(true);
   in.meta.session_name = "20261123T211200Z";
   in.meta.source = "sim";
-  in.meta.procedure = "Seed calibration";
+  in.meta.procedure = "Full calibration";
   in.equipment = equipment;
   in.nominal_bias_counts = Eigen::Vector3d::Constant(2048.0);
   return in;

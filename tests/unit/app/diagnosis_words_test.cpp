@@ -118,7 +118,7 @@ TEST(DiagnosisWordsTest, ARivalExplanationIsSaidInBenchWords) {
 TEST(DiagnosisWordsTest, NothingFoundSaysSoWithoutJargon) {
   DiagnosisReport r;
   r.consistent = true;
-  r.conclusion = "the seed's model explains the captures: no effect added";
+  r.conclusion = "the nine-parameter model explains the captures: no effect added";
   DiagnosisWords w = DiagnosisInPlainWords(r, kG);
   EXPECT_FALSE(w.asks);
   ASSERT_EQ(w.lines.size(), 1u);

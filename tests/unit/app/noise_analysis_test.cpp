@@ -224,7 +224,7 @@ TEST_F(NoiseSessionsTest, FindsTheDevicesRecordsSortedByCreation) {
   MakeSession("a", title, "SN-1", "2026-03-01T09:00:00.000Z", "noise", r);
   MakeSession("b", title, "SN-1", "2026-03-02T09:00:00.000Z", "", r);  // no record yet
   MakeSession("d", title, "SN-2", "2026-03-01T10:00:00.000Z", "noise", r);
-  MakeSession("e", "Seed calibration", "SN-1", "2026-03-01T11:00:00.000Z", "pose_pz", r);
+  MakeSession("e", "Full calibration", "SN-1", "2026-03-01T11:00:00.000Z", "pose_pz", r);
 
   const SessionListing all = ListSessions(dir_.string());
   ASSERT_EQ(all.sessions.size(), 5u);

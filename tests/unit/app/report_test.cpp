@@ -66,7 +66,7 @@ ReportInputs FixtureInputs() {
   in.meta.place = "Lab 2, bench 3";
   in.meta.session_name = "20250301T140509Z";
   in.meta.session_path = "/data/sessions/20250301T140509Z.db";
-  in.meta.procedure = "Seed calibration";
+  in.meta.procedure = "Full calibration";
   in.meta.source = "sim";
   in.limits = FixtureLimits();
   in.allan = ParseAllanJson(ReadJson("allan.json"), "allan.json");
@@ -634,7 +634,7 @@ TEST(ProcedureLimits, ParsedValidatedAndOptional) {
                    "negative");
   ExpectInputError([] { ParseProcedure(std::string(kProcedureHead) + "[limits]\nmin_captures = -3\n" + kProcedureSteps, "p.toml"); },
                    "negative count");
-  const Procedure seed = LoadProcedure(std::string(ACCELCAL_SOURCE_DIR) + "/procedures/seed_calibration.toml");
+  const Procedure seed = LoadProcedure(std::string(ACCELCAL_SOURCE_DIR) + "/procedures/full_calibration.toml");
   EXPECT_EQ(seed.limits.min_captures, 15);
   EXPECT_TRUE(seed.limits.Any());
 }

@@ -19,7 +19,7 @@ namespace accelcal::wizard_bench_words_test {
 namespace {
 
 Procedure ShortSeed() {
-  Procedure p = LoadProcedure(std::string(ACCELCAL_SOURCE_DIR) + "/procedures/seed_calibration.toml");
+  Procedure p = LoadProcedure(std::string(ACCELCAL_SOURCE_DIR) + "/procedures/full_calibration.toml");
   for (ProcedureStep& s : p.steps) s.duration_s = std::min(s.duration_s, 3.0);
   return p;
 }

@@ -32,7 +32,7 @@ void AnswerWelcome(WizardEngine& e, const std::string& gravity = "") {
 }
 
 TEST(WizardChecks, TheProcedureCanRefuseTheStandardGravity) {
-  Procedure p = StepsOf(SeedProcedure(), [](const ProcedureStep& s) { return Is(s, {"pose_pz"}); });
+  Procedure p = StepsOf(FullProcedure(), [](const ProcedureStep& s) { return Is(s, {"pose_pz"}); });
   p.requirements.local_gravity = true;
   WizardRig rig(p, sim::DefaultScenario());
   for (int i = 0; i < 3; ++i) rig.engine.Handle({IntentKind::kAccept, ""});
@@ -47,7 +47,7 @@ TEST(WizardChecks, TheProcedureCanRefuseTheStandardGravity) {
 }
 
 TEST(WizardChecks, TheProcedureCanRequireTheSerialAndTheOperator) {
-  const Procedure p = StepsOf(SeedProcedure(), [](const ProcedureStep& s) { return Is(s, {"pose_pz"}); });
+  const Procedure p = StepsOf(FullProcedure(), [](const ProcedureStep& s) { return Is(s, {"pose_pz"}); });
   ASSERT_TRUE(p.requirements.device_serial && p.requirements.operator_name);
   WizardRig rig(p, sim::DefaultScenario(), nullptr, WizardOptions{"test", "", "", {}, 2.0, {}});
   rig.engine.Handle({IntentKind::kAccept, ""});
@@ -63,7 +63,7 @@ TEST(WizardChecks, TheProcedureCanRequireTheSerialAndTheOperator) {
 
 // Issue 12, problem 3: the floor measured while the bench shook.
 TEST(WizardChecks, ANoiseFloorMeasuredOnAShakingBenchIsRefusedAndMeasuredAgain) {
-  const Procedure p = StepsOf(SeedProcedure(), [](const ProcedureStep& s) { return Is(s, {"pose_pz"}); });
+  const Procedure p = StepsOf(FullProcedure(), [](const ProcedureStep& s) { return Is(s, {"pose_pz"}); });
   sim::Scenario s = sim::DefaultScenario();
   s.technician.shakes = {{0.0, 7.0, 0.3}};
   WizardRig rig(p, s);
@@ -86,7 +86,7 @@ TEST(WizardChecks, ANoiseFloorMeasuredOnAShakingBenchIsRefusedAndMeasuredAgain) 
 // Without an expected noise the shaking floor passes; the first still capture proves it too
 // high, and the captures judged with it are left out and captured again.
 TEST(WizardChecks, AFloorThatProvesTooHighIsLoweredAndItsCapturesAreTakenAgain) {
-  Procedure p = StepsOf(SeedProcedure(), [](const ProcedureStep& s) {
+  Procedure p = StepsOf(FullProcedure(), [](const ProcedureStep& s) {
     return Is(s, {"pose_pz", "pose_mz", "pose_px", "pose_mx"});
   });
   p.expected_noise_counts = Eigen::Vector3d::Constant(kNaN);
@@ -109,7 +109,7 @@ TEST(WizardChecks, AFloorThatProvesTooHighIsLoweredAndItsCapturesAreTakenAgain) 
 
 // Issue 12, problem 4: `s` skipped a step without a word, and the report said PASS.
 TEST(WizardChecks, SkipAsksFirstAndASkippedRequiredStepMakesTheReportIncomplete) {
-  Procedure p = StepsOf(SeedProcedure(), [](const ProcedureStep& s) {
+  Procedure p = StepsOf(FullProcedure(), [](const ProcedureStep& s) {
     return s.kind == StepKind::kLevel || s.kind == StepKind::kStatic || s.kind == StepKind::kFit ||
            s.kind == StepKind::kReport;
   });
@@ -136,7 +136,7 @@ TEST(WizardChecks, SkipAsksFirstAndASkippedRequiredStepMakesTheReportIncomplete)
 
 // Issue 12, problem 5: a resumed session's clock went backwards.
 TEST(WizardChecks, AResumedSessionsCapturesGoOnOnOneClock) {
-  const Procedure p = StepsOf(SeedProcedure(), [](const ProcedureStep& s) {
+  const Procedure p = StepsOf(FullProcedure(), [](const ProcedureStep& s) {
     return Is(s, {"pose_pz", "pose_mz", "pose_px", "pose_mx"});
   });
   std::shared_ptr<SessionJournal> journal(MakeMemoryJournal());
@@ -173,7 +173,7 @@ sim::Scenario WrongMounting() {
 
 // Issue 12, problem 2: +y radial was accepted and stored as "+x radial".
 TEST(WizardChecks, AWrongTurntableMountingIsRefusedNamingTheRadialAxis) {
-  const Procedure p = StepsOf(SeedProcedure(), [](const ProcedureStep& s) { return Is(s, {"tt_x_100"}); });
+  const Procedure p = StepsOf(FullProcedure(), [](const ProcedureStep& s) { return Is(s, {"tt_x_100"}); });
   WizardRig rig(p, WrongMounting());
   AnswerWelcome(rig.engine);
   std::string hint;
@@ -191,7 +191,7 @@ TEST(WizardChecks, AWrongTurntableMountingIsRefusedNamingTheRadialAxis) {
 }
 
 TEST(WizardChecks, TheWrongMountingsRefusalSaysWhatTheSamplesShow) {
-  const Procedure p = StepsOf(SeedProcedure(), [](const ProcedureStep& s) { return Is(s, {"tt_x_100"}); });
+  const Procedure p = StepsOf(FullProcedure(), [](const ProcedureStep& s) { return Is(s, {"tt_x_100"}); });
   WizardRig rig(p, WrongMounting());
   AnswerWelcome(rig.engine);
   const std::vector<std::string> problems = AcceptUntil(rig.engine, Never);
@@ -202,7 +202,7 @@ TEST(WizardChecks, TheWrongMountingsRefusalSaysWhatTheSamplesShow) {
 // Issue 13, item 3: a tilted turntable is refused with leveling advice, leveled, and its
 // remaining tilt's swing taken out of the samples.
 TEST(WizardChecks, ATiltedTurntableIsRefusedLeveledAndItsSwingRemoved) {
-  const Procedure p = StepsOf(SeedProcedure(), [](const ProcedureStep& s) { return Is(s, {"tt_x_100"}); });
+  const Procedure p = StepsOf(FullProcedure(), [](const ProcedureStep& s) { return Is(s, {"tt_x_100"}); });
   sim::Scenario s = sim::DefaultScenario();
   s.effects.turntable_tilt_rad = 2.0 * M_PI / 180.0;
   s.technician.leveling_gain = 0.8;  // 2 deg -> 0.4 deg, within the 0.5 deg tolerance
@@ -220,7 +220,7 @@ TEST(WizardChecks, ATiltedTurntableIsRefusedLeveledAndItsSwingRemoved) {
 }
 
 TEST(WizardChecks, ATableTiltedByItsFeetIsLeveledAsTheFeetAreTurned) {
-  const Procedure p = StepsOf(SeedProcedure(), [](const ProcedureStep& s) { return s.kind == StepKind::kLevel; });
+  const Procedure p = StepsOf(FullProcedure(), [](const ProcedureStep& s) { return s.kind == StepKind::kLevel; });
   sim::Scenario s = sim::DefaultScenario();
   s.bench.table_tilt_deg = Eigen::Vector2d(4.0, -3.0);
   WizardRig rig(p, s);

@@ -21,8 +21,8 @@
 namespace accelcal::wizard_engine_test {
 namespace {
 
-Procedure SeedProcedure() {
-  return LoadProcedure(std::string(ACCELCAL_SOURCE_DIR) + "/procedures/seed_calibration.toml");
+Procedure FullProcedure() {
+  return LoadProcedure(std::string(ACCELCAL_SOURCE_DIR) + "/procedures/full_calibration.toml");
 }
 
 SimOptions Fast(double bump_probability = 0.0) {
@@ -84,7 +84,7 @@ auto TitleIs(const std::string& title) {
 }
 
 Procedure ShortStaticProcedure(int poses) {
-  Procedure p = SeedProcedure();
+  Procedure p = FullProcedure();
   std::vector<ProcedureStep> steps;
   for (const ProcedureStep& s : p.steps) {
     if (s.kind == StepKind::kStatic && poses-- > 0) steps.push_back(s);
@@ -95,7 +95,7 @@ Procedure ShortStaticProcedure(int poses) {
 }
 
 TEST(WizardEngineTest, AcceptingEverythingCompletesTheSeedCalibration) {
-  Rig rig(SeedProcedure());
+  Rig rig(FullProcedure());
   EXPECT_EQ(rig.engine.View().screen, WizardScreen::kWelcome);
   EXPECT_EQ(rig.engine.View().step_count, 23);
   AcceptUntil(rig.engine, Never);
@@ -112,7 +112,7 @@ TEST(WizardEngineTest, AcceptingEverythingCompletesTheSeedCalibration) {
 }
 
 TEST(WizardEngineTest, WelcomeTakesTypedAnswersAndGoesBack) {
-  Rig rig(SeedProcedure());
+  Rig rig(FullProcedure());
   ASSERT_TRUE(rig.engine.View().input.has_value());
   EXPECT_EQ(rig.engine.View().input->key, "device");
   rig.engine.Handle({IntentKind::kSubmitText, "SN42"});
@@ -154,7 +154,7 @@ TEST(WizardEngineTest, WelcomeTakesTypedAnswersAndGoesBack) {
 }
 
 TEST(WizardEngineTest, LevelingByReversalPassesOnTheLevelSimTable) {
-  Rig rig(SeedProcedure());
+  Rig rig(FullProcedure());
   AcceptUntil(rig.engine, TitleIs("Level the table"));
   PassNoiseFloor(rig.engine);
   EXPECT_TRUE(std::isfinite(rig.engine.View().tilt_deg.x()));  // live, before the reversal
@@ -169,7 +169,7 @@ TEST(WizardEngineTest, LevelingByReversalPassesOnTheLevelSimTable) {
 }
 
 TEST(WizardEngineTest, SkipRecordsTheStepAndBackReturnsToIt) {
-  Rig rig(SeedProcedure());
+  Rig rig(FullProcedure());
   AcceptUntil(rig.engine, TitleIs("+z up"));
   PollUntilQuestion(rig.engine);
   rig.engine.Handle({IntentKind::kSkip, ""});
@@ -187,7 +187,7 @@ TEST(WizardEngineTest, SkipRecordsTheStepAndBackReturnsToIt) {
 // Issue 15: b on an accepted capture offers to take it again (wizard_redo_test.cpp); it replaces
 // nothing unless asked (before, b said "nothing to go back to").
 TEST(WizardEngineTest, BackOffersAnAcceptedCaptureAgainAndReplacesNothingUnlessAsked) {
-  Rig rig(SeedProcedure());
+  Rig rig(FullProcedure());
   AcceptUntil(rig.engine, TitleIs("-z up"));
   rig.engine.Handle({IntentKind::kBack, ""});
   EXPECT_EQ(rig.engine.View().step_title, "+z up");
@@ -199,7 +199,7 @@ TEST(WizardEngineTest, BackOffersAnAcceptedCaptureAgainAndReplacesNothingUnlessA
 }
 
 TEST(WizardEngineTest, RetryRestartsARunningCapture) {
-  Rig rig(SeedProcedure());
+  Rig rig(FullProcedure());
   AcceptUntil(rig.engine, TitleIs("+z up"));
   rig.engine.Handle({IntentKind::kAccept, ""});
   rig.engine.Poll(0.0);
@@ -211,7 +211,7 @@ TEST(WizardEngineTest, RetryRestartsARunningCapture) {
 }
 
 TEST(WizardEngineTest, QuitLeavesWithEverythingAcceptedRecorded) {
-  Rig rig(SeedProcedure());
+  Rig rig(FullProcedure());
   AcceptUntil(rig.engine, TitleIs("+x up"));
   rig.engine.Handle({IntentKind::kQuit, ""});
   const WizardView v = rig.engine.View();
@@ -221,7 +221,7 @@ TEST(WizardEngineTest, QuitLeavesWithEverythingAcceptedRecorded) {
 }
 
 TEST(WizardEngineTest, TurntableInputsAreRefusedWithTheReasonThenAccepted) {
-  Rig rig(SeedProcedure());
+  Rig rig(FullProcedure());
   AcceptUntil(rig.engine, [](const WizardView& v) { return v.input && v.input->key == "radius"; });
   EXPECT_EQ(rig.engine.View().input->default_text, "50 mm");
   rig.engine.Handle({IntentKind::kSubmitText, "12 m"});
@@ -256,7 +256,7 @@ TEST(WizardEngineTest, TurntableInputsAreRefusedWithTheReasonThenAccepted) {
 // the radius field, "300 rpm" there got "unknown unit 'rpm' for a radius", the refused 600 rpm
 // became the default, "0,12" was not understood and blanks were "not a speed".
 TEST(WizardEngineTest, TurntableEntryTraps) {
-  Rig rig(SeedProcedure());
+  Rig rig(FullProcedure());
   AcceptUntil(rig.engine, [](const WizardView& v) { return v.input && v.input->key == "radius"; });
   auto input = [&rig] { return *rig.engine.View().input; };
   rig.engine.Handle({IntentKind::kSubmitText, "   "});  // blanks: the default, as empty
@@ -292,7 +292,7 @@ TEST(WizardEngineTest, TurntableEntryTraps) {
 
 // Blanks at the welcome take the default, as an empty answer does (line mode trims them).
 TEST(WizardEngineTest, BlankWelcomeAnswerTakesTheDefault) {
-  Rig rig(SeedProcedure());
+  Rig rig(FullProcedure());
   rig.engine.Handle({IntentKind::kSubmitText, "  "});
   EXPECT_EQ(rig.journal->Inputs().at("welcome").at("device"), "SN1");
 }
@@ -372,7 +372,7 @@ sim::Scenario QuadraticScenario() {
 }
 
 TEST(WizardEngineTest, DiagnosisAdoptsTheEffectOnEnter) {
-  Rig rig(SeedProcedure(), Fast(), QuadraticScenario());
+  Rig rig(FullProcedure(), Fast(), QuadraticScenario());
   AcceptUntil(rig.engine, [](const WizardView& v) { return v.screen == WizardScreen::kDiagnosis; });
   const WizardView v = rig.engine.View();
   // Issue 15: in plain words, the recommended choice on Enter (was "Adopt ...? Enter adopts").
@@ -386,7 +386,7 @@ TEST(WizardEngineTest, DiagnosisAdoptsTheEffectOnEnter) {
 }
 
 TEST(WizardEngineTest, DiagnosisDeclinedKeepsTheBaseModel) {
-  Rig rig(SeedProcedure(), Fast(), QuadraticScenario());
+  Rig rig(FullProcedure(), Fast(), QuadraticScenario());
   AcceptUntil(rig.engine, [](const WizardView& v) { return v.screen == WizardScreen::kDiagnosis; });
   rig.engine.Handle({IntentKind::kAnswerNo, ""});
   EXPECT_EQ(rig.journal->DoneSteps().at("diagnosis").rfind("declined", 0), 0u);
@@ -398,13 +398,13 @@ TEST(WizardEngineTest, DiagnosisDeclinedKeepsTheBaseModel) {
 TEST(WizardEngineTest, ResumeContinuesAtTheFirstMissingStepWithoutDuplicates) {
   std::shared_ptr<SessionJournal> journal(MakeMemoryJournal());
   {
-    Rig first(SeedProcedure(), Fast(), sim::DefaultScenario(), journal);
+    Rig first(FullProcedure(), Fast(), sim::DefaultScenario(), journal);
     AcceptUntil(first.engine, TitleIs("+x up"));
     first.engine.Handle({IntentKind::kAccept, ""});
     first.engine.Poll(0.0);  // the +x capture is under way when the run dies
   }
   ASSERT_EQ(journal->Captures().size(), 2u);
-  Rig second(SeedProcedure(), Fast(), sim::DefaultScenario(), journal);
+  Rig second(FullProcedure(), Fast(), sim::DefaultScenario(), journal);
   WizardView v = second.engine.View();
   EXPECT_TRUE(v.resumed);
   EXPECT_EQ(v.step_title, "+x up");

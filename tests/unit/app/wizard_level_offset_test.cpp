@@ -22,7 +22,7 @@ namespace {
 
 // The seed's leveling and one pose after it.
 Procedure LevelProcedure() {
-  Procedure p = LoadProcedure(std::string(ACCELCAL_SOURCE_DIR) + "/procedures/seed_calibration.toml");
+  Procedure p = LoadProcedure(std::string(ACCELCAL_SOURCE_DIR) + "/procedures/full_calibration.toml");
   p.steps = {p.steps[0], p.steps[1]};
   return p;
 }

@@ -25,7 +25,7 @@ namespace accelcal::wizard_redo_test {
 namespace {
 
 Procedure ShortStaticProcedure(int poses) {
-  Procedure p = LoadProcedure(std::string(ACCELCAL_SOURCE_DIR) + "/procedures/seed_calibration.toml");
+  Procedure p = LoadProcedure(std::string(ACCELCAL_SOURCE_DIR) + "/procedures/full_calibration.toml");
   std::vector<ProcedureStep> steps;
   for (const ProcedureStep& s : p.steps) {
     if (s.kind == StepKind::kStatic && poses-- > 0) steps.push_back(s);

@@ -17,8 +17,8 @@
 namespace accelcal::wizard_resume_summary_test {
 namespace {
 
-Procedure SeedProcedure() {
-  return LoadProcedure(std::string(ACCELCAL_SOURCE_DIR) + "/procedures/seed_calibration.toml");
+Procedure FullProcedure() {
+  return LoadProcedure(std::string(ACCELCAL_SOURCE_DIR) + "/procedures/full_calibration.toml");
 }
 
 // A still capture of `up` (platform frame) through the seed's nominal model.
@@ -48,7 +48,7 @@ TEST(WizardResumeSummaryTest, ListsTheStepsInTheProceduresOrderByTitle) {
   SimOptions sim_options;
   sim_options.speed = 0.0;
   SimSource sim(sim::DefaultScenario(), sim_options);
-  WizardEngine engine(SeedProcedure(), sim, *journal, WizardOptions{"test", "op", "SN1", {}, 2.0, {}});
+  WizardEngine engine(FullProcedure(), sim, *journal, WizardOptions{"test", "op", "SN1", {}, 2.0, {}});
   const std::vector<std::string> lines = engine.View().lines;
   ASSERT_GE(lines.size(), 7u);
   EXPECT_EQ(lines[0], "Resuming session test: 2 captures and 4 steps already recorded.");
@@ -70,7 +70,7 @@ TEST(WizardResumeSummaryTest, NamesASupersededCaptureBesideItsRedo) {
   journal->RecordCapture("pose_pz", StillCapture(1, "+z up", Eigen::Vector3d::UnitZ(), 10.0));
   journal->RecordRedoCapture("pose_pz#2", StillCapture(2, "+z up", Eigen::Vector3d::UnitZ(), 20.0), "pose_pz");
   SessionModel model(*journal);
-  const std::vector<std::string> lines = ResumeSummaryLines(SeedProcedure(), model, "welcome");
+  const std::vector<std::string> lines = ResumeSummaryLines(FullProcedure(), model, "welcome");
   ASSERT_EQ(lines.size(), 2u);
   EXPECT_EQ(lines[1], "  +z up: done (capture 2; capture 1 taken again, superseded)");
 }

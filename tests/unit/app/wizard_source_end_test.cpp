@@ -25,7 +25,7 @@ std::string ShortRecording() {
 TEST(WizardSourceEnd, WhileTheNoiseFloorIsMeasuredItIsAskedForAgain) {
   const std::unique_ptr<SampleSource> source = OpenSource("file:" + ShortRecording(), {});
   const std::unique_ptr<SessionJournal> journal = MakeMemoryJournal();
-  WizardEngine engine(testing::SeedProcedure(), *source, *journal, WizardOptions{"test", "op", "SN1", {}, 2.0, {}});
+  WizardEngine engine(testing::FullProcedure(), *source, *journal, WizardOptions{"test", "op", "SN1", {}, 2.0, {}});
   for (int i = 0; i < 5; ++i) engine.Handle({IntentKind::kAccept, ""});  // the welcome
   ASSERT_EQ(engine.View().prompt.rfind("Noise floor:", 0), 0u) << engine.View().prompt;
   engine.Handle({IntentKind::kAccept, ""});  // measure it

@@ -18,8 +18,8 @@
 
 namespace accelcal::testing {
 
-inline Procedure SeedProcedure() {
-  return LoadProcedure(std::string(ACCELCAL_SOURCE_DIR) + "/procedures/seed_calibration.toml");
+inline Procedure FullProcedure() {
+  return LoadProcedure(std::string(ACCELCAL_SOURCE_DIR) + "/procedures/full_calibration.toml");
 }
 
 inline SimOptions FastSim() {

@@ -1,4 +1,4 @@
-// Issue 13 item 5: what a magnitude fit cannot see (README "The model"). On exact, noise-free
+// Issue 13 item 5: what a magnitude fit cannot see (docs/model.md, "The model"). On exact, noise-free
 // captures of the seed's plan, written here from raw = K M f + b with M chosen by the test:
 //  - a mounting rotation (M = T^-1 R) is invisible: the fit returns T, K and b exactly, |a^p| is
 //    right, and the direction of a^p is off by the whole rotation;

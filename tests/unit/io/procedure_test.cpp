@@ -1,5 +1,6 @@
 // The shipped procedures load; malformed ones are refused with file, line and what is wrong.
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -20,8 +21,13 @@ int Count(const Procedure& p, StepKind kind) {
   return n;
 }
 
-TEST(ProcedureTest, SeedCalibrationLoads) {
-  const Procedure p = LoadProcedure(Shipped("seed_calibration.toml"));
+TEST(ProcedureTest, FullCalibrationLoads) {
+  const Procedure p = LoadProcedure(Shipped("full_calibration.toml"));
+  EXPECT_EQ(p.title, "Full calibration: level, 9 prism poses, 9 turntable runs, fit, diagnosis");
+  // Its title before the rename (seed_calibration.toml): sessions recorded under it are its.
+  EXPECT_TRUE(p.IsTitled("Seed calibration: level, 9 prism poses, 9 turntable runs, fit, diagnosis"));
+  EXPECT_TRUE(p.IsTitled(p.title));
+  EXPECT_FALSE(p.IsTitled("Full calibration"));
   EXPECT_EQ(Count(p, StepKind::kLevel), 1);
   EXPECT_EQ(Count(p, StepKind::kStatic), 9);
   EXPECT_EQ(Count(p, StepKind::kTurntable), 9);
@@ -72,6 +78,18 @@ std::string Refusal(const std::string& text) {
     return std::to_string(e.line()) + ": " + e.message();
   }
   return "accepted";
+}
+
+TEST(ProcedureTest, FormerTitlesAreAnArrayOfStrings) {
+  const std::string sensor = "[sensor]\nnominal_scale_counts_per_mps2 = 34.8\nnominal_bias_counts = 2048\n"
+                             "[[step]]\nid = \"a\"\nkind = \"static\"\nup = [0, 0, 1]\n";
+  const Procedure p = ParseProcedure("title = \"new\"\nformer_titles = [\"old\", \"older\"]\n" + sensor, "p.toml");
+  EXPECT_EQ(p.former_titles, (std::vector<std::string>{"old", "older"}));
+  EXPECT_TRUE(p.IsTitled("older"));
+  EXPECT_TRUE(ParseProcedure("title = \"t\"\n" + sensor, "p.toml").former_titles.empty());
+  EXPECT_NE(Refusal("title = \"t\"\nformer_titles = \"old\"\n" + sensor).find("2: "), std::string::npos);
+  EXPECT_NE(Refusal("title = \"t\"\nformer_titles = [1]\n" + sensor).find("must be an array of strings"),
+            std::string::npos);
 }
 
 TEST(ProcedureTest, MalformedProceduresAreRefusedWithLineAndReason) {

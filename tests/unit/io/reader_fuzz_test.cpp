@@ -136,7 +136,7 @@ TEST(ReaderFuzz, Calibration) {
 }
 
 TEST(ReaderFuzz, Procedure) {
-  const std::string seed = FileText(std::string(ACCELCAL_SOURCE_DIR) + "/procedures/seed_calibration.toml");
+  const std::string seed = FileText(std::string(ACCELCAL_SOURCE_DIR) + "/procedures/full_calibration.toml");
   ASSERT_FALSE(seed.empty());
   Fuzz("procedure", seed, [](const std::string& t) { ParseProcedure(t, "procedure.toml"); }, 20);
 }
@@ -150,7 +150,7 @@ namespace {
 // What the procedure fuzz found first: a turntable step whose up_axis is the default radial
 // axis (+x), with no "radial" key, dereferenced the missing key's node (a crash).
 TEST(ReaderFuzz, ProcedureDefaultRadialAlongUpAxisIsAnError) {
-  std::string text = FileText(std::string(ACCELCAL_SOURCE_DIR) + "/procedures/seed_calibration.toml");
+  std::string text = FileText(std::string(ACCELCAL_SOURCE_DIR) + "/procedures/full_calibration.toml");
   const size_t at = text.find("radial = \"+x\"\nup_axis = \"+z\"");
   ASSERT_NE(at, std::string::npos);
   text.replace(at, std::string("radial = \"+x\"\nup_axis = \"+z\"").size(), "up_axis = \"+x\"");

@@ -92,7 +92,7 @@ TEST(CaptureMessages, AGiveUpOnStillnessSaysWhyInWords) {
 // ---- the time -------------------------------------------------------------------------------
 
 TEST(TimeEstimate, TheSessionIsTheRemainingStepsAndTheirHandling) {
-  const Procedure p = testing::SeedProcedure();
+  const Procedure p = testing::FullProcedure();
   const auto none_done = [](const ProcedureStep&) { return false; };
   double by_hand = 0.0;
   const TimeAllowances a;
@@ -122,7 +122,7 @@ TEST(TimeEstimate, TheSessionIsTheRemainingStepsAndTheirHandling) {
 
 // The seed procedure with 3 s captures (the checks are the same; the test time is not).
 Procedure ShortProcedure() {
-  Procedure p = testing::SeedProcedure();
+  Procedure p = testing::FullProcedure();
   for (ProcedureStep& s : p.steps)
     if (s.kind == StepKind::kStatic || s.kind == StepKind::kTurntable) s.duration_s = 3.0;
   return p;
@@ -181,7 +181,7 @@ TEST(CaptureFlow, EveryCaptureScreenSaysItsTimeAndTheSessions) {
   double last_left_s = kNaN;
   double first_session_s = kNaN;
   for (const WizardView& v : views) {
-    if (!v.finished) {
+    if (!v.finished && v.time_text != LastStepTimeText()) {
       EXPECT_TRUE(Contains(v.time_text, "(estimate)")) << v.step_title << ": " << v.prompt;
       if (std::isnan(first_session_s)) first_session_s = v.session_left_s;
     }
@@ -203,6 +203,33 @@ TEST(CaptureFlow, EveryCaptureScreenSaysItsTimeAndTheSessions) {
   // The estimate at the welcome covers the whole procedure: 10 static steps, 9 turntable runs...
   EXPECT_GT(first_session_s, 10 * 60.0);
   EXPECT_LT(first_session_s, 40 * 60.0);
+}
+
+// Issue 35: the report, the last step, said "session: about 20 s left (estimate)" (its reading
+// allowance) at the end of a finished session, in line mode and in the TUI alike (both show the
+// view's time_text). The last step's result says the session ends; every earlier screen keeps
+// its estimate.
+TEST(CaptureFlow, TheLastStepSaysTheSessionEndsNotThatTimeIsLeft) {
+  testing::WizardRig rig(ShortProcedure(), Clumsy("clumsy_bump.toml"));
+  const std::vector<WizardView> views = WholeSession(rig.engine);
+  ASSERT_TRUE(views.back().finished);
+  const WizardView* last_timed = nullptr;
+  for (const WizardView& v : views)
+    if (!v.time_text.empty()) last_timed = &v;
+  ASSERT_NE(last_timed, nullptr);
+  EXPECT_EQ(last_timed->step_title, ShortProcedure().steps.back().title);
+  EXPECT_EQ(last_timed->time_text, LastStepTimeText());
+  EXPECT_FALSE(Contains(last_timed->time_text, "left")) << last_timed->time_text;
+  EXPECT_EQ(last_timed->session_left_s, 0.0);
+  // Only the last step says so: the fit and the diagnosis before it still count the report.
+  int ending = 0;
+  for (const WizardView& v : views) ending += v.time_text == LastStepTimeText();
+  EXPECT_GT(ending, 0);
+  for (const WizardView& v : views) {
+    if (v.time_text == LastStepTimeText()) {
+      EXPECT_EQ(v.step_title, last_timed->step_title);
+    }
+  }
 }
 
 TEST(CaptureFlow, AnAcceptedCaptureIsConfirmedWithItsFiguresUntilTheNextKey) {
@@ -288,6 +315,9 @@ TEST(CaptureFlow, LineModeSaysTheWordsTheDetailTheTimeTheConfirmationAndTheVerdi
   EXPECT_TRUE(Contains(text, "): still settling after you let go: wait\n")) << tail;
   EXPECT_TRUE(Contains(text, "s left of this capture; gives up in ")) << tail;
   EXPECT_TRUE(Contains(text, "(estimate)")) << tail;
+  // Issue 35: its last time line is the last step's, and says the session ends.
+  const std::string last_time = text.substr(text.rfind("time: "));
+  EXPECT_EQ(last_time.substr(0, last_time.find('\n')), "time: " + LastStepTimeText()) << tail;
   EXPECT_TRUE(Contains(text, "\n  +z up done: 3.0 s, |a| ~")) << tail;
   EXPECT_TRUE(Contains(text, "  Verdict: PASS\n")) << tail;
   // The final summary says the verdict once: its prompt does not repeat it.

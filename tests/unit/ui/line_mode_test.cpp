@@ -23,7 +23,7 @@ struct LineRig {
           return o;
         }()),
         journal(MakeMemoryJournal()),
-        engine(LoadProcedure(std::string(ACCELCAL_SOURCE_DIR) + "/procedures/seed_calibration.toml"),
+        engine(LoadProcedure(std::string(ACCELCAL_SOURCE_DIR) + "/procedures/full_calibration.toml"),
                sim, *journal, WizardOptions{"line", "op", "SN1", {}, 2.0, {}}) {}
   SimSource sim;
   std::unique_ptr<SessionJournal> journal;

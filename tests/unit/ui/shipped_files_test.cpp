@@ -3,6 +3,7 @@
 // and a procedure or scenario named by its shipped name.
 #include <algorithm>
 #include <filesystem>
+#include <fstream>
 
 #include <unistd.h>
 
@@ -51,6 +52,23 @@ TEST_F(ShippedFiles, AShippedOneIsNamedByItsFileName) {
   const std::vector<std::string> scenarios = ShippedNames(kShippedScenarios);
   EXPECT_NE(std::find(scenarios.begin(), scenarios.end(), "bench_default.toml"), scenarios.end());
   EXPECT_TRUE(std::is_sorted(scenarios.begin(), scenarios.end()));
+}
+
+TEST_F(ShippedFiles, TheFullCalibrationIsFoundByItsFormerName) {
+  // procedures/seed_calibration.toml became full_calibration.toml: the old name, with or without
+  // ".toml", and the old path in the source tree (a script's, a session's notes) find the new file.
+  const std::string full = (fs::path(ACCELCAL_SOURCE_DIR) / "procedures/full_calibration.toml").string();
+  EXPECT_EQ(ResolveShipped(kShippedProcedures, "seed_calibration.toml"), full);
+  EXPECT_EQ(ResolveShipped(kShippedProcedures, "seed_calibration"), full);
+  EXPECT_EQ(ResolveShipped(kShippedProcedures, "procedures/seed_calibration.toml"), full);
+  EXPECT_EQ(ResolveShipped(kShippedProcedures,
+                           (fs::path(ACCELCAL_SOURCE_DIR) / "procedures/seed_calibration.toml").string()),
+            full);
+  // Not a scenario's old name; and a file of that name that exists is itself.
+  EXPECT_EQ(ResolveShipped(kShippedScenarios, "seed_calibration.toml"), "seed_calibration.toml");
+  const fs::path own = root_ / "seed_calibration.toml";
+  { std::ofstream(own) << "# a lab's own\n"; }
+  EXPECT_EQ(ResolveShipped(kShippedProcedures, own.string()), own.string());
 }
 
 TEST_F(ShippedFiles, ATransformResolvesAnOptionsValue) {

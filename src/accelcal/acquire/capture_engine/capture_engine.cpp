@@ -56,7 +56,7 @@ CaptureEngine::CaptureEngine(CaptureRequest request, const CaptureEngineOptions&
       settle_(options.stability, context_.noise_floor, options.settle_window_s),
       capture_monitor_(options.stability, context_.noise_floor, StaticStabilityMonitor::kGrowing) {
   ThrowIfInvalid("capture request", request_.Validate());
-  ThrowIfInvalid("capture engine options", options_.Validate());
+  ThrowIfInvalid("capture options", options_.Validate());
   ThrowIfInvalid("capture context", context_.Validate());
   Restart();
 }

@@ -1,7 +1,7 @@
 // The line-protocol core of every byte-stream source (stdin, file, serial, TCP): bytes in, as
 // they arrive in reads of any size, samples out.
 //
-// Protocol (README.md, "Sample sources"): one sample per line `t ax ay az [temp_c]`, fields
+// Protocol (docs/formats.md, "Sample sources"): one sample per line `t ax ay az [temp_c]`, fields
 // separated by blanks and/or one comma, t in s strictly increasing, raw counts, '#' comments,
 // blank lines, LF or CRLF; or what a SampleFormat says (columns, a header row, skipped rows, a
 // rate for a stream without time). The lines go through the one sample reader

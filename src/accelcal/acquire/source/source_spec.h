@@ -9,7 +9,7 @@
 //   mavlink:LINK[,imu=N,...]    a flight controller's IMU over MAVLink (mavlink/mavlink_source.h)
 //   iio:DEVICE[,root=DIR,...]   a Linux IIO accelerometer or ADC (iio/iio_source.h)
 //
-// file, serial, tcp and - carry the line protocol of line_stream.h (README.md, "Sample sources").
+// file, serial, tcp and - carry the line protocol of line_stream.h (docs/formats.md, "Sample sources").
 #pragma once
 
 #include <memory>

@@ -64,4 +64,6 @@ std::string WaitingTimeText(double capture_s, double timeout_s, double session_l
   return text;
 }
 
+std::string LastStepTimeText() { return "session: this is the last step; the session ends when you continue"; }
+
 }  // namespace accelcal

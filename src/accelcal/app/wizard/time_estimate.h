@@ -51,4 +51,7 @@ std::string CaptureTimeText(double capture_s, double capture_left_s, double give
 // NaN: no capture on this step (only the session's estimate).
 std::string WaitingTimeText(double capture_s, double timeout_s, double session_left_s);
 
+// The time line of the last step's result (the report): the session is over once it is read.
+std::string LastStepTimeText();
+
 }  // namespace accelcal

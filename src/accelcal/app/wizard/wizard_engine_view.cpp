@@ -100,6 +100,13 @@ void WizardEngine::SetTimeView(WizardView& v) const {
     v.time_text = WaitingTimeText(kNaN, kNaN, v.session_left_s);
     return;
   }
+  // The last step's result on screen (the report): nothing is left to wait for, so no time is
+  // left either (its reading allowance is the technician's, not the session's).
+  if (flow_ == Flow::kStep && Current()->ShowsResult() && SessionLeftS(true) == 0.0) {
+    v.session_left_s = 0.0;
+    v.time_text = LastStepTimeText();
+    return;
+  }
   v.time_text = WaitingTimeText(Current()->WaitingCaptureS(flow_ == Flow::kStep), step().timeout_s, v.session_left_s);
 }
 

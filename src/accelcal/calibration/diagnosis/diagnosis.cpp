@@ -555,7 +555,7 @@ DiagnosisReport Diagnose(const std::vector<FitCapture>& captures, const FitOptio
   TakeParametersFromFinalFit(adopted, &report);
   const ResidualStats last = StatsOf(report.final_fit);
   if (report.adopted.empty())
-    report.conclusion = report.consistent ? "the seed's model explains the captures: no effect added"
+    report.conclusion = report.consistent ? "the nine-parameter model explains the captures: no effect added"
                                           : "the residuals exceed the noise (no effect looked for)";
   else
     report.conclusion = fmt::format("{} effect(s) added; residual RMS {:.5f} -> {:.5f} m/s^2 (noise explains "

@@ -49,7 +49,7 @@ class Effect {
   virtual double ParameterScale(int i, const SensorModel& base, const EffectContext& ctx) const = 0;
   // Empty when the captures can identify the effect; otherwise why not, in words.
   virtual std::string WhyNotIdentifiable(const std::vector<FitCapture>& captures) const = 0;
-  // The captures that identify it, in words (README's effects table; what to capture next).
+  // The captures that identify it, in words (docs/model.md's effects table; what to capture next).
   virtual std::string_view CapturePlan() const = 0;
   // Empty when parameters `theta` are physically plausible for a bench calibration (the
   // datasheet's or the procedure's bounds, stated in the message), given the base model and the

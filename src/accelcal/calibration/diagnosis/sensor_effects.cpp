@@ -348,7 +348,7 @@ class TemperatureBias final : public TemperatureEffect<TemperatureBias> {
  public:
   std::string_view Name() const override { return "temperature_bias"; }
   std::string_view Story() const override {
-    return "the zero-g level moves with temperature (the seed names it as a variable effect)";
+    return "the zero-g level moves with temperature (the lab chapter names it as a variable effect)";
   }
   int NumParameters() const override { return 3; }
   std::string ParameterName(int i) const override { return PerAxis("tc_bias", i); }
@@ -438,7 +438,7 @@ class BiasDrift final : public DifferentiableEffect<BiasDrift> {
  public:
   std::string_view Name() const override { return "bias_drift"; }
   std::string_view Story() const override {
-    return "the zero-g level drifts steadily during the session (the seed's random drift, over "
+    return "the zero-g level drifts steadily during the session (the lab chapter's random drift, over "
            "the session's span)";
   }
   int NumParameters() const override { return 3; }
@@ -478,7 +478,7 @@ class BiasDrift final : public DifferentiableEffect<BiasDrift> {
   std::string_view RegressorName() const override { return "time"; }
   double Regressor(const FitCapture& c) const override { return c.mean_t_s; }
   int CorrectionStage() const override { return 0; }
-  bool CorrectsReadings() const override { return false; }  // a session artifact, see README
+  bool CorrectsReadings() const override { return false; }  // a session artifact, see docs/model.md
   std::string_view PlainName() const override { return "a drifting zero-g level"; }
   std::optional<BenchStatement> InBenchTerms(std::span<const double> drift, std::span<const double>,
                                              std::string_view, double) const override {

@@ -62,6 +62,10 @@ FitCapture MakeFitCapture(const Capture& capture) {
   constexpr double kQuantizationVarianceCounts2 = 1.0 / 12.0;
   for (int i = 0; i < 3; ++i) cov(i, i) = std::max(cov(i, i), kQuantizationVarianceCounts2);
   c.mean_cov_counts2 = cov / double(std::max<long>(stats.n, 1));
+  if (capture.settled) {
+    c.mean_counts = capture.settled->mean_counts;
+    c.mean_cov_counts2 = capture.settled->mean_cov_counts2;
+  }
   return c;
 }
 

@@ -26,7 +26,8 @@ struct FitCapture {
   double mean_temp_c = kNaN;
 };
 
-// Statistics of `capture` for the fit (the capture must have at least 2 finite samples).
+// Statistics of `capture` for the fit (the capture must have at least 2 finite samples). A
+// capture that was still settling (Capture::settled) gives its settled reading and its covariance.
 FitCapture MakeFitCapture(const Capture& capture);
 
 }  // namespace accelcal

@@ -18,6 +18,30 @@ std::string_view FitTerminationToString(FitTermination t) {
   return "?";
 }
 
+std::string_view ScatterStructureToString(ScatterStructure s) {
+  switch (s) {
+    case ScatterStructure::kIndependent: return "independent";
+    case ScatterStructure::kFlicker: return "flicker";
+    case ScatterStructure::kRandomWalk: return "random_walk";
+  }
+  return "?";
+}
+
+bool ScatterStructureFromString(std::string_view text, ScatterStructure* out) {
+  for (ScatterStructure s : {ScatterStructure::kIndependent, ScatterStructure::kFlicker,
+                             ScatterStructure::kRandomWalk}) {
+    if (text == ScatterStructureToString(s)) {
+      *out = s;
+      return true;
+    }
+  }
+  return false;
+}
+
+std::string_view ScatterSizeUnit(ScatterStructure s) {
+  return s == ScatterStructure::kRandomWalk ? "counts/sqrt(s)" : "counts";
+}
+
 bool FitSummary::IsHeld(int i) const { return FindHeld(i) != nullptr; }
 
 const HeldParameter* FitSummary::FindHeld(int i) const {
@@ -64,6 +88,12 @@ std::string FitSummary::FullReport() const {
   if (uncertainty_scale > 1.0)
     out += fmt::format("uncertainties scaled by {:.2f} = sqrt(chi2/dof): the residuals exceed "
                        "what the captures' noise explains\n", uncertainty_scale);
+  if (scatter)
+    out += fmt::format("uncertainties from the scatter between the captures ({} structure, size "
+                       "{:.3g} {}; up to {:.1f} times the noise-only 1-sigma, at least {:.1f} degrees "
+                       "of freedom): the residuals exceed what the captures' noise explains\n",
+                       ScatterStructureToString(scatter->structure), scatter->size,
+                       ScatterSizeUnit(scatter->structure), scatter->ratio_to_noise, scatter->min_dof);
   if (most_correlated.first >= 0)
     out += fmt::format("most correlated: {} and {} (rho = {:+.3f})\n",
                        parameter_labels[most_correlated.first],

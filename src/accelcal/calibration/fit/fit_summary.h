@@ -4,12 +4,14 @@
 // only when IsUsable(); otherwise `message` says why there is no calibration.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include <Eigen/Core>
 
+#include "accelcal/base/capture.h"
 #include "accelcal/base/sensor_model.h"
 
 namespace accelcal {
@@ -46,6 +48,32 @@ struct HeldParameter {
   std::string reason;   // in words: why, and what to capture to determine it
 };
 
+// The structures of the scatter between captures (scatter_uncertainty.h), in the order tried.
+enum class ScatterStructure { kIndependent, kFlicker, kRandomWalk };
+
+// "independent", "flicker", "random_walk" (as stored in files), and back (false: unknown).
+std::string_view ScatterStructureToString(ScatterStructure s);
+bool ScatterStructureFromString(std::string_view text, ScatterStructure* out);
+// The unit of a structure's size: "counts" or "counts/sqrt(s)".
+std::string_view ScatterSizeUnit(ScatterStructure s);
+
+// One structure fitted to a fit's residuals.
+struct ScatterCandidate {
+  ScatterStructure structure = ScatterStructure::kIndependent;
+  double size = kNaN;            // s, B (counts) or K (counts/sqrt(s))
+  double log_likelihood = kNaN;  // restricted (REML), over the error contrasts
+};
+
+// How a fit's uncertainty was taken from the scatter between its captures, when the residuals
+// exceed their noise and no effect explains them (scatter_uncertainty.h).
+struct ScatterModel {
+  ScatterStructure structure = ScatterStructure::kIndependent;  // the one used
+  double size = kNaN;              // its size, in ScatterSizeUnit(structure)
+  double min_dof = kNaN;           // the smallest effective degrees of freedom over the parameters
+  double ratio_to_noise = kNaN;    // the largest 1-sigma over its noise-only value, nine parameters
+  std::vector<ScatterCandidate> candidates;  // every structure tried
+};
+
 struct FitSummary {
   FitTermination termination = FitTermination::kNotRun;
   std::string message;                 // one line: what happened, or why it failed
@@ -56,6 +84,12 @@ struct FitSummary {
   Eigen::VectorXd uncertainty;         // 1-sigma, same units; NaN for a held parameter
   Eigen::MatrixXd covariance;
   double uncertainty_scale = 1.0;      // sqrt(max(1, chi2/dof)) applied to the covariance's sigmas
+  // Set when the uncertainty comes from the scatter between the captures instead (then
+  // uncertainty_scale is 1): scatter_uncertainty.h.
+  std::optional<ScatterModel> scatter;
+  // Effective degrees of freedom of each parameter's 1-sigma (same indices); empty: those of the
+  // fit (dof when uncertainty_scale > 1, else infinite).
+  Eigen::VectorXd uncertainty_dof;
   std::vector<HeldParameter> held;     // not fitted (empty: all were)
 
   std::vector<CaptureResidual> residuals;  // one per capture used, in input order
