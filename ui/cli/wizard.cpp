@@ -66,6 +66,7 @@ int RunWizard(const WizardCommandOptions& options) {
   wizard.default_operator = DefaultOperator(options.source == "sim");
   wizard.default_device = options.source == "sim" ? "SIM-0001" : "";
   wizard.default_place = options.place;
+  wizard.fixed_duration_s = options.fixed_duration_s;
   wizard.gravity = options.gravity;
   wizard.report_beside = session;
   WizardEngine engine(procedure, *source, *journal, wizard);
@@ -112,6 +113,10 @@ void SetupWizardCommand(CLI::App& app) {
   sub->add_option("--session", options->session_path,
                   "Session file: created when new, resumed when it exists (default: a new one)");
   sub->add_flag("--plain", options->plain, "Plain line mode even on a terminal");
+  sub->add_option("--fixed-duration", options->fixed_duration_s,
+                  "Every capture this long, s, as before the plan (for comparison); default: the "
+                  "procedure's [target] plans each capture's length")
+      ->check(CLI::PositiveNumber);
   sub->add_option("--vehicle-calibration", options->vehicle_calibration,
                   "mavlink: the vehicle's own accelerometer calibration: undo (take it out of every "
                   "sample: the nine parameters describe the sensor) or as-is")

@@ -18,6 +18,7 @@ struct WizardCommandOptions {
   std::string session_path;         // empty = a new session named by the time
   bool plain = false;               // line mode even on a terminal
   std::string place;                // offered at the welcome (the lab, the bench)
+  double fixed_duration_s = 0.0;    // > 0: every capture this long (no plan by the target), s
   std::string bench_control;        // HOST:PORT of a remote virtual bench's controls (tests)
   std::string vehicle_calibration = "undo";  // mavlink: undo | as-is
   GravitySpec gravity;

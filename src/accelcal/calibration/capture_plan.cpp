@@ -122,11 +122,11 @@ struct Allocation {
 // its minimum, then give a step to the capture that lowers the shortfall most per second.
 Allocation Allocate(const std::vector<PlannedCapture>& captures, const std::vector<Eigen::MatrixXd>& a,
                     const std::vector<bool>& taken, const Eigen::VectorXd& allow, bool unbounded,
-                    const PlanOptions& options) {
+                    const PlanOptions& options, const std::vector<double>* from = nullptr) {
   Allocation out;
   out.lengths.assign(captures.size(), 0.0);
   for (size_t i = 0; i < captures.size(); ++i)
-    if (taken[i]) out.lengths[i] = captures[i].min_capture_s;
+    if (taken[i]) out.lengths[i] = from ? std::max((*from)[i], captures[i].min_capture_s) : captures[i].min_capture_s;
   if ((allow.array() <= 0.0).any()) return out;
   for (;;) {
     const Eigen::MatrixXd cov = InverseInformation(a, out.lengths);
@@ -205,12 +205,21 @@ Allocation AllocateWithTypeB(const std::vector<PlannedCapture>& captures,
     if (!out.met) return out;
     at = out.lengths;
   }
-  // The type-B part at the final lengths: one more step when it grew past the allowance.
-  const Eigen::MatrixXd cov = InverseInformation(a, out.lengths);
-  const Eigen::VectorXd type_b = TypeBParts(captures, out.lengths, sensor, cov, options);
-  const Eigen::VectorXd allow = Allowances(target, sensor.nominal, type_b, options);
-  for (int j = 0; j < kNumBaseParameters; ++j)
-    if (cov(j, j) > allow(j)) out.met = false;
+  // The type-B part at the final lengths: when it moved the allowance past the lengths, go on
+  // from them with the allowance it gives (a few rounds; the type-B part moves little).
+  for (int round = 0; round < 4; ++round) {
+    const Eigen::MatrixXd cov = InverseInformation(a, out.lengths);
+    const Eigen::VectorXd type_b = TypeBParts(captures, out.lengths, sensor, cov, options);
+    const Eigen::VectorXd allow = Allowances(target, sensor.nominal, type_b, options);
+    bool met = true;
+    for (int j = 0; j < kNumBaseParameters; ++j)
+      if (cov(j, j) > allow(j)) met = false;
+    if (met) return out;
+    const std::vector<double> from = out.lengths;
+    out = Allocate(captures, a, taken, allow, unbounded, options, &from);
+    if (!out.met) return out;
+  }
+  out.met = false;
   return out;
 }
 
@@ -340,6 +349,30 @@ CapturePlan PlanCaptures(const std::vector<PlannedCapture>& captures, const Plan
       plan.message = "the reference quantities' uncertainty alone exceeds the target";
     else
       plan.message = "the target needs captures longer than the procedure's maximum";
+  }
+  return plan;
+}
+
+CapturePlan PlanOfLengths(const std::vector<PlannedCapture>& captures, const std::vector<double>& lengths_s,
+                          const PlannedSensor& sensor, const UncertaintyTarget& target,
+                          const PlanOptions& options) {
+  CapturePlan plan;
+  AddTimes(captures, lengths_s, &plan);
+  plan.parameters = PredictUncertainty(captures, lengths_s, sensor, target, options);
+  plan.feasible = true;
+  for (const PlannedParameter& p : plan.parameters) {
+    if (!std::isfinite(p.predicted_a)) plan.feasible = false;  // the nine not determined
+    if (std::isfinite(p.target_expanded) && !(p.predicted_expanded <= p.target_expanded)) plan.feasible = false;
+  }
+  if (!plan.feasible) plan.message = "the fixed lengths do not reach the target";
+  plan.unbounded_total_s = plan.TotalS();
+  for (size_t i = 0; i < captures.size(); ++i) {
+    PlannedLength l;
+    l.id = captures[i].id;
+    l.taken = lengths_s[i] > 0.0;
+    l.capture_s = lengths_s[i];
+    l.samples = l.taken ? std::lround(std::ceil(lengths_s[i] * sensor.rate_hz - 1e-9)) : 0;
+    plan.captures.push_back(std::move(l));
   }
   return plan;
 }

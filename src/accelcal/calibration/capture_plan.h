@@ -145,6 +145,12 @@ std::vector<PlannedParameter> PredictUncertainty(const std::vector<PlannedCaptur
                                                  const UncertaintyTarget& target,
                                                  const PlanOptions& options);
 
+// The plan of given lengths (a fixed plan: each capture as long as the procedure says; 0 = not
+// taken): its times and predicted uncertainty; feasible when it meets `target`.
+CapturePlan PlanOfLengths(const std::vector<PlannedCapture>& captures, const std::vector<double>& lengths_s,
+                          const PlannedSensor& sensor, const UncertaintyTarget& target,
+                          const PlanOptions& options);
+
 // The plan reaching `target` in the least bench time (see the header).
 CapturePlan PlanCaptures(const std::vector<PlannedCapture>& captures, const PlannedSensor& sensor,
                          const UncertaintyTarget& target, const PlanOptions& options);

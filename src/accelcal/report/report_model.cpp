@@ -244,6 +244,8 @@ ReportModel BuildReportModel(const ReportInputs& in) {
   for (std::string& why : IncompleteReasons(in.gaps, cal)) m.incomplete.push_back(std::move(why));
   if (all_pass && !m.incomplete.empty()) m.verdict = Verdict::kIncomplete;
   m.budget = cal.budget;
+  m.bench_time = in.bench_time;
+  if (m.bench_time && m.budget) FillReachedU(*m.budget, &*m.bench_time);
   m.certificate = MakeCertificate(in, m);
   return m;
 }

@@ -13,6 +13,7 @@ std::string CaptureRequest::Validate() const {
   if (!(std::isfinite(timeout_s) && timeout_s > duration_s))
     return fmt::format("timeout_s is {} s, must be longer than the capture ({} s)", timeout_s,
                        duration_s);
+  if (stop_samples < 0) return fmt::format("stop_samples is {}, must be >= 0 (0: by duration_s)", stop_samples);
   if (kind == CaptureKind::kTurntable) return turntable.Validate();
   if (!(expected.up.allFinite() && expected.up.norm() > 0.0))
     return "the expected up direction must be a finite, non-zero vector";

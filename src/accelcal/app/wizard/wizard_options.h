@@ -28,10 +28,15 @@ struct WizardOptions {
   std::string report_beside = {};
   // The lab or bench offered at the welcome (may be empty): the report's "place".
   std::string default_place = {};
+  // > 0: every capture this long, s (--fixed-duration: the fixed plan, for comparison); 0: the
+  // procedure's [target] plans each capture's length (bench_plan.h), or, without a target, each
+  // step's own duration.
+  double fixed_duration_s = 0.0;
 
   // Empty when the options are usable; else why not.
   std::string Validate() const {
     if (!(quiet_period_s > 0.0)) return "quiet_period_s must be positive";
+    if (!(fixed_duration_s >= 0.0)) return "fixed_duration_s must not be negative";
     if (std::string why = gravity.Validate(); !why.empty()) return "gravity: " + why;
     return "";
   }

@@ -13,6 +13,7 @@
 
 #include "accelcal/acquire/capture_engine/orientation_check.h"
 #include "accelcal/acquire/source/sample_source.h"
+#include "accelcal/app/wizard/bench_plan.h"
 #include "accelcal/app/wizard/calibration_steps.h"
 #include "accelcal/app/wizard/session_clock.h"
 #include "accelcal/app/wizard/session_model.h"
@@ -75,6 +76,7 @@ struct WizardSession {
   SessionClock clock;       // every sample on one clock across resumes
   StepAcquisition acq;      // the noise floor, the capture or the record being acquired
   NoiseFloorStep noise_floor;
+  BenchPlan bench_plan;     // each capture's length for the procedure's target (bench_plan.h)
   std::vector<CapturedPose> captured;  // the static poses of the session still used
   int next_capture_id = 1;
   bool adopt_effects = true;  // the diagnosis's choice (Enter adopts, n keeps the base model)

@@ -71,6 +71,10 @@ class AcquiringStep : public StepController {
   virtual void BackFromCapture() { EnterPlace(); }
   // The turntable's capture screen speaks of turning, not stillness.
   virtual bool Turning() const { return false; }
+  // The capture's length, s: the step's own; a capture the plan sizes, the plan's (bench_plan.h).
+  virtual double CaptureS() const { return step_.duration_s; }
+  // The capture's request with the plan's stop rule (a kept capture's kinds call it).
+  CaptureRequest Planned(CaptureRequest request) const;
   // The phases of the kind's own (phase_ == kOwn): keys, view.
   virtual void HandleOwn(const Intent& intent);
   virtual void SetOwnView(WizardView& /*v*/) const {}
@@ -79,6 +83,7 @@ class AcquiringStep : public StepController {
   const ProcedureStep& step_;
   WizardSession& session_;
   Phase phase_ = Phase::kPlace;
+  double accepted_elapsed_s_ = kNaN;  // the capture engine's sample time at the last acceptance
 
  private:
   void OnCaptureRejected();

@@ -24,6 +24,10 @@ class StaticStep final : public AcquiringStep {
     session_.sequence.ContinueFromFirstOpenStep();
   }
 
+  // The plan's length, ended by its stop rule (bench_plan.h).
+  CaptureRequest MakeRequest() const override { return Planned(AcquiringStep::MakeRequest()); }
+  double CaptureS() const override { return session_.bench_plan.CaptureS(step_); }
+
   void SetPlaceView(WizardView& v) const override {
     v.screen = WizardScreen::kPlacePose;
     v.prompt = IsTiltedPose(step_.up)
