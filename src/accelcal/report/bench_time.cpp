@@ -34,13 +34,13 @@ std::string BenchSecondsText(double s) {
   return fmt::format("{:.0f} min {:02.0f} s", std::floor(s / 60.0), std::fmod(s, 60.0));
 }
 
-// A parameter's U in the report's units: counts, ppm of the nominal-free scale's value is not
-// known here, so scale in counts per m/s^2; misalignment in mrad.
+// A parameter's U in its unit (misalignment in mrad), and the unit's name.
 std::string UText(int index, double u) {
   if (!std::isfinite(u)) return "-";
-  if (index >= 6) return fmt::format("{:.3g} mrad", u * 1e3);
-  if (index >= 3) return fmt::format("{:.3g} counts/(m/s^2)", u);
-  return fmt::format("{:.3g} counts", u);
+  return fmt::format("{:.3g}", index >= kMisYZ ? u * 1e3 : u);
+}
+const char* UUnit(int index) {
+  return index >= kMisYZ ? "mrad" : index >= kScaleX ? "counts/(m/s^2)" : "counts";
 }
 
 }  // namespace
@@ -92,9 +92,9 @@ std::vector<std::string> BenchTimeLines(const ReportBenchTime& b) {
     const BenchParameterU& p = b.parameters[j];
     if (!std::isfinite(p.planned) && !std::isfinite(p.reached)) continue;
     const int index = static_cast<int>(j);
-    lines.push_back(fmt::format("  {:<8} U(k=2) planned {}, reached {}{}", p.name, UText(index, p.planned),
-                                UText(index, p.reached),
-                                std::isfinite(p.target) ? ", target " + UText(index, p.target) : ""));
+    if (lines.size() == 1) lines.push_back(fmt::format("{:<8} {:>9} {:>9} {:>9}  U (k=2)", "", "planned", "reached", "target"));
+    lines.push_back(fmt::format("{:<8} {:>9} {:>9} {:>9}  {}", p.name, UText(index, p.planned), UText(index, p.reached),
+                                UText(index, p.target), UUnit(index)));
   }
   return lines;
 }
