@@ -4,9 +4,10 @@
 #
 #   short_procedure            writes $work/short.toml: the seed procedure with 3 s captures
 #                              (the checks are the same; CI time is not)
-#   wizard SCENARIO DB ANSWERS  runs the wizard on the sim at speed 0 with the answers given
-#                              (one per line, printf-style) and then empty ones; output in
-#                              $work/out, status checked
+#   wizard SCENARIO DB ANSWERS [OPTION...]
+#                              runs the wizard on the sim at speed 0 with the answers given
+#                              (one per line, printf-style) and then empty ones (the options
+#                              after them go to the wizard); output in $work/out, status checked
 #   calibration DB             writes $work/cal.json, the session's calibration
 #   within_truth K             every parameter of $work/cal.json within K sigma of the default
 #                              bench's truth (scenarios/bench_default.toml); else prints them
@@ -20,14 +21,20 @@ short_procedure() {
   grep -q '^capture_duration_s = 3 ' "$work/short.toml" || fail "short procedure: no capture_duration_s"
 }
 
-wizard() {  # SCENARIO DB ANSWERS
+wizard() {  # SCENARIO DB ANSWERS [OPTION...]
   local scenario=$1 db=$2 answers=$3
   set +e
-  { printf "$answers"; yes ''; } | "$accelcal" wizard --source sim --speed 0 \
+  # The answers end in Enter for ever: a screen that answers Enter with itself would go round
+  # until ctest's timeout; the limit says so instead (wizard_way_back's effects_demo part did).
+  { printf "$answers"; yes ''; } | timeout 200 "$accelcal" wizard --source sim --speed 0 \
     --scenario "$source_dir/scenarios/$scenario" --procedure "$work/short.toml" --session "$db" \
-    --plain > "$work/out" 2> "$work/err"
+    --plain "${@:4}" > "$work/out" 2> "$work/err"
   local code=${PIPESTATUS[1]}
   set -e
+  if [ "$code" -eq 124 ]; then
+    grep -v '^> *$' "$work/out" | tail -20 >&2
+    fail "the wizard did not end in 200 s: a screen answered Enter with itself (a loop)"
+  fi
   [ "$code" -eq 0 ] || { tail -20 "$work/out" >&2; cat "$work/err" >&2; fail "wizard exited $code"; }
 }
 

@@ -355,14 +355,30 @@ TEST(WizardEngineTest, AnUnusableFitBlocksTheWizard) {
   WizardView v = rig.engine.View();
   EXPECT_EQ(v.screen, WizardScreen::kFit);
   EXPECT_NE(v.problem.find("not usable"), std::string::npos) << v.problem;
-  rig.engine.Handle({IntentKind::kAccept, ""});
   rig.engine.Handle({IntentKind::kSkip, ""});
   rig.engine.Handle({IntentKind::kRetry, ""});
   v = rig.engine.View();
   EXPECT_EQ(v.step_title, "Fit the nine-parameter model");
   EXPECT_FALSE(v.problem.empty());
+  EXPECT_FALSE(v.finished);
   EXPECT_FALSE(rig.journal->Result().has_value());
   EXPECT_EQ(rig.journal->DoneSteps().count("fit"), 0u);
+}
+
+// The reproduction of e2e wizard_way_back's 300 s timeout: Enter at a refused fit did nothing,
+// so answering Enter (a script's `yes ''`, a person by reflex) went round for ever. Enter there
+// now saves and quits, the problem on the last screen; nothing accepted is lost.
+TEST(WizardEngineTest, EnterAtARefusedFitSavesAndQuitsInsteadOfGoingRound) {
+  Rig rig(ShortStaticProcedure(3));
+  AcceptUntil(rig.engine, Never, 200);
+  const WizardView v = rig.engine.View();
+  EXPECT_TRUE(v.finished);
+  EXPECT_FALSE(rig.engine.completed());
+  EXPECT_NE(v.prompt.find("Saved."), std::string::npos) << v.prompt;
+  EXPECT_NE(v.problem.find("not usable"), std::string::npos) << v.problem;
+  EXPECT_EQ(rig.journal->Captures().size(), 3u);
+  EXPECT_EQ(rig.journal->DoneSteps().count("fit"), 0u);
+  EXPECT_FALSE(rig.journal->Result().has_value());
 }
 
 sim::Scenario QuadraticScenario() {

@@ -89,6 +89,7 @@ class WizardEngine final : public WizardDriver, private StepSequence {
   void RestartStep() override { EnterStep(current_); }
   void AskSkip() override;
   void GoBack() override;
+  void SaveAndLeave() override { Quit(); }
   void RecordCapture(const Capture& capture) override;
   int ReplacedCaptureId() const override { return Redoing() ? redo_capture_id_ : 0; }
   double SessionLeftS(bool current_started) const override;

@@ -39,6 +39,9 @@ class StepSequence {
   virtual void RestartStep() = 0;
   virtual void AskSkip() = 0;  // s: asks before the step is skipped
   virtual void GoBack() = 0;   // b: to an earlier capture step, when the step goes no further back
+  // What q does, asked by a step at a dead end: everything accepted is saved, the wizard ends
+  // and the session resumes at this step.
+  virtual void SaveAndLeave() = 0;
   // Records `capture`, accepted at the current step (in a redo, superseding the capture taken
   // again), before the wizard moves on.
   virtual void RecordCapture(const Capture& capture) = 0;

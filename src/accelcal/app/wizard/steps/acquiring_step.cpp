@@ -26,6 +26,8 @@ void AcquiringStep::Handle(const Intent& intent) {
       return;
     case Phase::kProblem:
       if (!again) return;
+      // Refused again and again: Enter no longer repeats what failed (r still does).
+      if (accept && refusals_in_row_ >= kRefusalsBeforeLeaving) return session_.sequence.SaveAndLeave();
       BeforeRetry();
       Begin();
       return;
@@ -68,6 +70,7 @@ bool AcquiringStep::Acquiring() const {
 
 void AcquiringStep::EnterPlace() {
   session_.acq.Stop();
+  refusals_in_row_ = 0;
   if (!session_.noise_floor.floor()) {
     session_.noise_floor.Ask();
     phase_ = Phase::kNoiseFloor;
@@ -140,6 +143,7 @@ void AcquiringStep::OnAcquisition(AcquisitionEvent event) {
       if (session_.noise_floor.OnMeasured()) phase_ = Phase::kPlace;
       break;
     case AcquisitionEvent::kCaptureAccepted:
+      refusals_in_row_ = 0;
       accepted_elapsed_s_ = session_.acq.capturing() ? session_.acq.capture_snapshot().elapsed_s : kNaN;
       OnCaptureAccepted(session_.acq.TakeCapture());
       break;
@@ -186,6 +190,18 @@ void AcquiringStep::OnCaptureRejected() {
   session_.screen.hint = session_.acq.ended_silent()
                              ? "check the cable or the sample server; Enter tries again, q leaves"
                              : RejectedHint();
+  if (++refusals_in_row_ >= kRefusalsBeforeLeaving)
+    session_.screen.hint = fmt::format(
+        "not accepted {} times in a row: {} (the same again will not do); r tries again, s skips it, "
+        "Enter saves and quits (the session resumes at this step)",
+        refusals_in_row_, ProblemToCheck());
+}
+
+// What the technician checks before trying again: the hint without its "Enter tries again".
+std::string AcquiringStep::ProblemToCheck() const {
+  std::string check = session_.acq.ended_silent() ? "check the cable or the sample server" : RejectedHint();
+  if (const size_t cut = check.find("; Enter tries again"); cut != std::string::npos) check.resize(cut);
+  return check;
 }
 
 std::string AcquiringStep::RejectedHint() const {
@@ -221,9 +237,11 @@ void AcquiringStep::SetCaptureView(WizardView& v) const {
   v.screen = phase_ == Phase::kProblem ? WizardScreen::kError : WizardScreen::kCapturing;
   v.keys = {{"r", "retry"}, {"s", "skip"}, {"b", "back"}, {"q", "save and quit"}};
   if (phase_ == Phase::kProblem) {
-    v.prompt = "The capture was not accepted.";
+    const bool leaves = refusals_in_row_ >= kRefusalsBeforeLeaving;
+    v.prompt = leaves ? fmt::format("The capture was not accepted {} times in a row.", refusals_in_row_)
+                      : "The capture was not accepted.";
     v.detail = session_.screen.detail;
-    v.keys.insert(v.keys.begin(), KeyHint{"Enter", "try again"});
+    v.keys.insert(v.keys.begin(), KeyHint{"Enter", leaves ? "save and quit" : "try again"});
     return;
   }
   const CaptureSnapshot snap = session_.acq.capture_snapshot();

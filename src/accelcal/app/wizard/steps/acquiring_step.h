@@ -24,7 +24,10 @@ class AcquiringStep : public StepController {
   void Handle(const Intent& intent) override;
   bool Acquiring() const override;
   void OnAcquisition(AcquisitionEvent event) override;
-  void OnSourceEnded() override { phase_ = Phase::kProblem; }
+  void OnSourceEnded() override {
+    phase_ = Phase::kProblem;
+    ++refusals_in_row_;  // nothing more will come: trying again and again ends too
+  }
   void Halt() override { session_.acq.Stop(); }
   bool BackWithin() override;
   bool AtStart() const override;
@@ -86,8 +89,15 @@ class AcquiringStep : public StepController {
   double accepted_elapsed_s_ = kNaN;  // the capture engine's sample time at the last acceptance
 
  private:
+  // Captures of the step refused in a row before Enter saves and quits instead of trying the
+  // same again (a script or a person answering Enter would otherwise go round for ever).
+  static constexpr int kRefusalsBeforeLeaving = 3;
+
   void OnCaptureRejected();
+  std::string ProblemToCheck() const;
   void SetCaptureView(WizardView& v) const;
+
+  int refusals_in_row_ = 0;  // since the placement was asked or a capture accepted
 };
 
 // A step whose sensor is placed on the prism by hand (a static pose, a record): placing it and
