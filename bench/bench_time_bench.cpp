@@ -17,6 +17,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <random>
 #include <string>
 #include <vector>
@@ -25,6 +26,7 @@
 #include <fmt/core.h>
 
 #include "accelcal/app/calibration_pipeline.h"
+#include "accelcal/app/wizard/step_registry.h"
 #include "accelcal/io/procedure_file.h"
 #include "accelcal/session/equipment.h"
 #include "accelcal/session/procedure_plan.h"
@@ -37,7 +39,12 @@ constexpr int kSeeds = 200;
 constexpr double kGravityMps2 = 9.80665;       // the physics bench's
 constexpr double kGravitySigmaMps2 = 2e-5;     // a measured local gravity (a good lab's)
 
-Procedure FullCalibration() { return LoadProcedure(std::string(ACCELCAL_SOURCE_DIR) + "/procedures/full_calibration.toml"); }
+// The shipped procedure: its step kinds (the closing repeat pose's among them) registered first,
+// as the program's main does.
+Procedure FullCalibration() {
+  RegisterStepKinds();
+  return LoadProcedure(std::string(ACCELCAL_SOURCE_DIR) + "/procedures/full_calibration.toml");
+}
 
 GravitySpec MeasuredGravity() { return GravitySpec::Given(kGravityMps2, kGravitySigmaMps2); }
 
@@ -197,31 +204,72 @@ void PrintCase(const SensorCase& c, const SessionPlan& session, const PlanFigure
                                          fixed.target_met, fixed.usable).c_str());
 }
 
-void BM_BenchTimeMonteCarlo(benchmark::State& state) {
-  const Procedure p = FullCalibration();
+// The planner's margin (PlanOptions::margin): the fit's U comes out above the planner's
+// prediction on average (its scatter-limited and settling terms), so a plan aimed at the target
+// itself misses it in about half the seeds. The default sensor with exact references (U is type
+// A alone, every target reachable), planned at each margin: the seeds whose every U is within the
+// target, the mean ratio of the reached to the planned U, and the bench time.
+void PrintMarginSweep(const Procedure& p) {
+  const Eigen::Vector3d noise(1.5, 1.5, 1.7);
+  const PlannedSensor sensor = PlannedSensorOf(p, noise, 100.0);
+  const UncertaintyTarget target = ToUncertaintyTarget(p.target, p.nominal);
+  physgen::Sensor nominal;
+  nominal.noise_counts = noise;
+  std::fprintf(stderr, "\n== the planner's margin: default sensor, references exact, %d seeds ==\n", kSeeds);
+  std::fprintf(stderr, "%s", fmt::format("{:>6} {:>10} {:>12} {:>16} {:>14}\n", "margin", "bench s", "capture s",
+                                         "target met", "reached/planned").c_str());
+  for (const double margin : {0.85, 0.80, 0.75, 0.70}) {
+    PlanOptions options;
+    options.gravity_mps2 = kGravityMps2;
+    options.references = References(p, true);
+    options.min_captures = p.limits.min_captures;
+    options.margin = margin;
+    const CapturePlan plan = PlanCaptures(PlannedCapturesOf(p, kGravityMps2), sensor, target, options);
+    const PlanFigures f = MonteCarlo(p, plan, nominal, sensor, true, 1000 + 7919 * 3);
+    double ratio = 0.0;
+    int n = 0;
+    for (int j = 0; j < kNumBaseParameters; ++j)
+      if (std::isfinite(target.ForParameter(j, sensor.nominal))) {
+        ratio += f.mean_u(j) / plan.parameters[static_cast<size_t>(j)].predicted_expanded;
+        ++n;
+      }
+    std::fprintf(stderr, "%s", fmt::format("{:>6.2f} {:>10.0f} {:>12.0f} {:>9}/{:<6} {:>14.3f}\n", margin, plan.TotalS(),
+                                           plan.capture_s, f.target_met, f.usable, n > 0 ? ratio / n : kNaN).c_str());
+  }
+}
+
+// The five cases against the fixed procedure; the default sensor's figures as counters.
+void RunCases(const Procedure& p, benchmark::State& state) {
   const std::vector<SensorCase> cases = {{"default", {1.5, 1.5, 1.7}},
                                          {"noisy", {8.0, 8.0, 8.0}},
                                          {"quiet", {0.5, 0.5, 0.5}},
                                          {"default, references exact", {1.5, 1.5, 1.7}, true},
                                          {"noisy, references exact", {8.0, 8.0, 8.0}, true}};
-  for (auto _ : state) {
-    for (size_t i = 0; i < cases.size(); ++i) {
-      const SensorCase& c = cases[i];
-      const SessionPlan session =
-          PlanSession(p, c.noise_counts, 100.0, kGravityMps2, References(p, c.exact_references));
-      physgen::Sensor nominal;
-      nominal.noise_counts = c.noise_counts;
-      const PlanFigures plan = MonteCarlo(p, session.plan, nominal, session.sensor, c.exact_references, 1000 + 7919 * i);
-      const PlanFigures fixed = MonteCarlo(p, session.fixed, nominal, session.sensor, c.exact_references, 1000 + 7919 * i);
-      PrintCase(c, session, plan, fixed);
-      if (i == 0) {
-        state.counters["plan_bench_s"] = session.plan.TotalS();
-        state.counters["fixed_bench_s"] = session.fixed.TotalS();
-        state.counters["plan_coverage_min"] = plan.covered.minCoeff();
-        state.counters["fixed_coverage_min"] = fixed.covered.minCoeff();
-        state.counters["target_met"] = static_cast<double>(plan.target_met) / std::max(plan.usable, 1);
-      }
+  for (size_t i = 0; i < cases.size(); ++i) {
+    const SensorCase& c = cases[i];
+    const SessionPlan session =
+        PlanSession(p, c.noise_counts, 100.0, kGravityMps2, References(p, c.exact_references));
+    physgen::Sensor nominal;
+    nominal.noise_counts = c.noise_counts;
+    const PlanFigures plan = MonteCarlo(p, session.plan, nominal, session.sensor, c.exact_references, 1000 + 7919 * i);
+    const PlanFigures fixed = MonteCarlo(p, session.fixed, nominal, session.sensor, c.exact_references, 1000 + 7919 * i);
+    PrintCase(c, session, plan, fixed);
+    if (i == 0) {
+      state.counters["plan_bench_s"] = session.plan.TotalS();
+      state.counters["fixed_bench_s"] = session.fixed.TotalS();
+      state.counters["plan_coverage_min"] = plan.covered.minCoeff();
+      state.counters["fixed_coverage_min"] = fixed.covered.minCoeff();
+      state.counters["target_met"] = static_cast<double>(plan.target_met) / std::max(plan.usable, 1);
     }
+  }
+}
+
+// ACCELCAL_BENCH_MARGIN_ONLY set: the margin sweep alone.
+void BM_BenchTimeMonteCarlo(benchmark::State& state) {
+  const Procedure p = FullCalibration();
+  for (auto _ : state) {
+    if (std::getenv("ACCELCAL_BENCH_MARGIN_ONLY") == nullptr) RunCases(p, state);
+    PrintMarginSweep(p);
   }
 }
 BENCHMARK(BM_BenchTimeMonteCarlo)->Iterations(1)->Unit(benchmark::kSecond);

@@ -10,7 +10,7 @@
 #      (tests may look inside);
 #   3. third-party headers stay in their layer: nlohmann-json and toml++ in io, SQLite in
 #      session and bags (a ROS 2 bag is an SQLite file), the chunk codecs (zstd, lz4, bz2) in
-#      bags, CLI11 and curses in ui/ only;
+#      bags, libpq in lab, CLI11 and curses in ui/ only;
 #   4. no relative include ("../x.h", "detail/x.h" from beside it) in src/, ui/ or tests/unit/:
 #      the core's headers are named from their layer (accelcal/<layer>/...), which the checks
 #      above and the build's include directories see; a relative path escapes both.
@@ -115,6 +115,8 @@ for layer in "${layers[@]}"; do
         [ "$layer" = session ] || [ "$layer" = bags ] || report "$file:$line: sqlite3.h outside session and bags" ;;
       zstd.h|zstd_errors.h|lz4.h|lz4frame.h|lz4hc.h|bzlib.h)
         [ "$layer" = bags ] || report "$file:$line: $header outside bags (the chunk codecs are the bag readers')" ;;
+      libpq-fe.h|libpq/*|postgresql/*|pqxx/*)
+        [ "$layer" = lab ] || report "$file:$line: $header outside lab (PostgreSQL lives in the lab store)" ;;
       CLI/*|curses.h|ncurses.h|ncurses/*|term.h)
         report "$file:$line: $header in the core (terminal and command-line code lives in ui/)" ;;
     esac
@@ -144,6 +146,7 @@ while IFS=: read -r file line marked; do
   case "$header" in
     accelcal/*/detail/*) report "$file:$line: ui includes $header, a private header of the core" ;;
     nlohmann/*|toml++/*|sqlite3.h|zstd.h|lz4*.h|bzlib.h) report "$file:$line: ui includes $header (the core's io, session and bags own it)" ;;
+    libpq-fe.h|libpq/*|postgresql/*|pqxx/*) report "$file:$line: ui includes $header (the core's lab owns it)" ;;
   esac
 done < <(includes ui)
 

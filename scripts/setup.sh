@@ -11,7 +11,7 @@ packages=(
   g++ cmake make pkg-config tmux jq lowdown
   libeigen3-dev libnlopt-cxx-dev libncurses-dev libsqlite3-dev libtomlplusplus-dev
   nlohmann-json3-dev libcli11-dev libfmt-dev libgtest-dev libbenchmark-dev
-  libzstd-dev liblz4-dev libbz2-dev
+  libzstd-dev liblz4-dev libbz2-dev libpq-dev
 )
 # The .deb: CPack asks dpkg-shlibdeps (dpkg-dev), which asks file(1), for its Depends.
 package_packages=(dpkg-dev file)
@@ -20,8 +20,10 @@ package_packages=(dpkg-dev file)
 # manual pages (tests/e2e/man_pages.sh, package_deb.sh); libiio's tools read the fake IIO tree
 # beside accelcal (tests/e2e/iio_devices.sh). Node.js and its npm run the peers written elsewhere
 # that the tests install into the build directory when they first need them: the bag writers and
-# readers (tests/e2e/bags_*.sh) and the MAVLink test vehicle on node-mavlink (tests/peers/).
-test_packages=(chromium poppler-utils man-db libiio-utils nodejs)
+# readers (tests/e2e/bags_*.sh) and the MAVLink test vehicle on node-mavlink (tests/peers/). The
+# PostgreSQL server runs the lab store's tests (tests/lab/pg_server.sh starts a private one, as
+# the user postgres the package creates, when the tests run as root).
+test_packages=(chromium poppler-utils man-db libiio-utils nodejs postgresql)
 case "${1:-}" in
   --no-test) ;;
   --package) packages+=("${package_packages[@]}") ;;

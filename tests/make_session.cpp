@@ -22,6 +22,7 @@
 
 #include <fmt/core.h>
 
+#include "accelcal/app/wizard/step_registry.h"
 #include "accelcal/base/error.h"
 #include "accelcal/calibration/fit/calibration_fit.h"
 #include "accelcal/io/calibration_file.h"
@@ -140,6 +141,7 @@ void MakeNoiseSession(const std::string& path, const std::string& procedure_path
 }  // namespace
 
 int main(int argc, char** argv) {
+  accelcal::RegisterStepKinds();  // before any procedure is read
   if (argc == 8 && std::strcmp(argv[2], "--noise") == 0) {
     try {
       MakeNoiseSession(argv[1], argv[3], argv[4], argv[5], argv[6], argv[7]);

@@ -1,7 +1,10 @@
 // The plain line mode: prompts on a stream, one answer per line. For pipes, scripts and
 // terminals without curses; `yes '' | accelcal wizard --plain` takes every default.
 #include <poll.h>
+#include <unistd.h>
 
+#include <algorithm>
+#include <cerrno>
 #include <cmath>
 #include <istream>
 #include <ostream>
@@ -49,6 +52,26 @@ class Printer {
  public:
   explicit Printer(std::ostream& out) : out_(out) {}
 
+  // What the source noticed, in words, with its figures on a detail line under it. Also called
+  // while a question waits: a notice that arrives then is said before the answer acknowledges it.
+  // True when it said one.
+  bool ShowSourceNotice(const WizardView& v) {
+    if (v.source_notice == source_notice_) return false;
+    source_notice_ = v.source_notice;
+    if (v.source_notice.empty()) return false;
+    out_ << "  source: " << v.source_notice << '\n';
+    if (!v.source_detail.empty()) out_ << "    detail: " << v.source_detail << '\n';
+    return true;
+  }
+
+  // A notice said while a question waits: the question's input line again under it, so the
+  // output still ends with the question (what a technician, or a script, answers).
+  void ShowNoticeWhileAsking(const WizardView& v) {
+    if (!ShowSourceNotice(v)) return;
+    PrintInputLine(v);
+    out_.flush();
+  }
+
   void Show(const WizardView& v) {
     if (v.step_index != step_index_ || v.step_title != step_title_) {
       step_index_ = v.step_index;
@@ -66,6 +89,7 @@ class Printer {
       notice_ = v.notice;
       if (!v.notice.empty()) out_ << "  " << v.notice << '\n';
     }
+    ShowSourceNotice(v);
     if (v.problem != problem_) {
       problem_ = v.problem;
       if (!v.problem.empty()) out_ << "  problem: " << v.problem << '\n';
@@ -89,8 +113,9 @@ class Printer {
     prompt_ = head;
     progress_quarter_ = quarter;
     out_ << "  " << v.prompt << '\n';
-    // The figures behind the words, and the time, under it.
-    if (!v.detail.empty()) out_ << "    detail: " << v.detail << '\n';
+    // The figures behind the words, and the time, under it; a normal wait (settling after the
+    // prism is let go) has nothing to explain: its figures are not printed (issue 27, item 9).
+    if (!v.detail.empty() && !v.waiting) out_ << "    detail: " << v.detail << '\n';
     if (!v.time_text.empty()) out_ << "    time: " << v.time_text << '\n';
   }
 
@@ -121,6 +146,10 @@ class Printer {
       if (!v.time_text.empty()) out_ << "  time: " << v.time_text << '\n';
       if (!error.empty()) out_ << "  refused: " << error << '\n';
     }
+    PrintInputLine(v);
+  }
+
+  void PrintInputLine(const WizardView& v) {
     if (v.input) {
       out_ << fmt::format("{} [{}]> ", v.input->label, v.input->default_text);
     } else if (!v.finished) {
@@ -135,6 +164,7 @@ class Printer {
   std::string error_;
   std::string problem_;
   std::string notice_;
+  std::string source_notice_;
   std::vector<std::string> lines_;
   int progress_quarter_ = -1;
   long record_minute_ = -1;
@@ -144,20 +174,75 @@ class Printer {
 
 namespace {
 
-// True when a line can be read from `in` without waiting (its buffer holds data, or its file
-// descriptor is readable: a terminal hands over whole lines).
-bool LineWaiting(std::istream& in, int fd) {
-  if (fd < 0) return false;
-  if (in.rdbuf()->in_avail() > 0) return true;
-  pollfd p{fd, POLLIN, 0};
-  return ::poll(&p, 1, 0) > 0 && (p.revents & (POLLIN | POLLHUP)) != 0;
-}
+// How long line mode waits for a typed line before it reads the source again, s: while a
+// question waits the link is read and what the question does not use dropped, as the full
+// screen does, so samples never pile up to be judged by the next capture (issue 27, item 6).
+constexpr double kQuestionPollS = 0.05;
+
+// Where the answers come from: a stream (a script's string, always ready), or a file
+// descriptor read directly (stdin, the terminal), so that line mode can wait for a line with a
+// timeout: a stream's own buffer would hide lines already read from the descriptor.
+class LineInput {
+ public:
+  virtual ~LineInput() = default;
+  // A whole line (or the end of input) can be read now; waits up to `timeout_s` for one.
+  virtual bool Wait(double timeout_s) = 0;
+  // The next line, waiting for it; false at the end of input.
+  virtual bool ReadLine(std::string* line) = 0;
+};
+
+class StreamInput final : public LineInput {
+ public:
+  explicit StreamInput(std::istream& in) : in_(in) {}
+  bool Wait(double) override { return true; }
+  bool ReadLine(std::string* line) override { return static_cast<bool>(std::getline(in_, *line)); }
+
+ private:
+  std::istream& in_;
+};
+
+class DescriptorInput final : public LineInput {
+ public:
+  explicit DescriptorInput(int fd) : fd_(fd) {}
+
+  bool Wait(double timeout_s) override {
+    if (Ready()) return true;
+    pollfd p{fd_, POLLIN, 0};
+    const int rc = ::poll(&p, 1, static_cast<int>(std::lround(std::max(0.0, timeout_s) * 1000.0)));
+    if (rc < 0 && errno == EINTR) return false;
+    if (rc != 0) Fill();  // readable, hung up, or an error (which read() then reports)
+    return Ready();
+  }
+
+  bool ReadLine(std::string* line) override {
+    while (!Wait(1.0)) {
+    }
+    const size_t end = buffer_.find('\n');
+    if (end == std::string::npos && buffer_.empty()) return false;  // the end of input
+    *line = buffer_.substr(0, end);
+    buffer_.erase(0, end == std::string::npos ? buffer_.size() : end + 1);
+    return true;
+  }
+
+ private:
+  bool Ready() const { return ended_ || buffer_.find('\n') != std::string::npos; }
+  void Fill() {
+    char bytes[4096];
+    const ssize_t n = ::read(fd_, bytes, sizeof bytes);
+    if (n > 0) buffer_.append(bytes, static_cast<size_t>(n));
+    else if (n == 0 || (errno != EINTR && errno != EAGAIN)) ended_ = true;
+  }
+
+  int fd_;
+  std::string buffer_;
+  bool ended_ = false;
+};
 
 // While busy: `q` quits at once; other lines are ignored (said once), so that an Enter pressed
 // during a capture does not answer the next question. False at the end of input.
-bool ReadWhileBusy(WizardDriver& driver, std::istream& in, std::ostream& out, bool* told) {
+bool ReadWhileBusy(WizardDriver& driver, LineInput& in, std::ostream& out, bool* told) {
   std::string answer;
-  if (!std::getline(in, answer)) return false;
+  if (!in.ReadLine(&answer)) return false;
   if (TrimLine(answer) == "q") {
     driver.Handle({IntentKind::kQuit, ""});
   } else if (!*told) {
@@ -167,9 +252,9 @@ bool ReadWhileBusy(WizardDriver& driver, std::istream& in, std::ostream& out, bo
   return true;
 }
 
-}  // namespace
-
-int RunLineMode(WizardDriver& driver, std::istream& in, std::ostream& out, int interrupt_fd) {
+// The loop. `read_while_busy`: lines are read while the wizard is busy (a terminal, where `q`
+// must be read at once); else only when a question is asked (a pipe: the answers keep order).
+int Run(WizardDriver& driver, LineInput& in, std::ostream& out, bool read_while_busy) {
   bool told_busy = false;
   Printer printer(out);
   out << driver.View().procedure << '\n' << "session: " << driver.View().session << '\n';
@@ -178,13 +263,18 @@ int RunLineMode(WizardDriver& driver, std::istream& in, std::ostream& out, int i
     printer.Show(v);
     if (v.finished) return 0;
     if (Busy(v)) {
-      if (LineWaiting(in, interrupt_fd) && !ReadWhileBusy(driver, in, out, &told_busy))
-        interrupt_fd = -1;  // end of input: the wizard goes on, and quits at its next question
+      if (read_while_busy && in.Wait(0.0) && !ReadWhileBusy(driver, in, out, &told_busy))
+        read_while_busy = false;  // end of input: the wizard goes on, and quits at its next question
       driver.Poll(0.1);
       continue;
     }
+    // A question waits: the source is read meanwhile, so the next capture starts fresh.
+    while (!in.Wait(kQuestionPollS)) {
+      driver.Poll(0.0);
+      printer.ShowNoticeWhileAsking(driver.View());
+    }
     std::string answer;
-    if (!std::getline(in, answer)) {
+    if (!in.ReadLine(&answer)) {
       // End of input: save and leave (everything accepted is already in the journal).
       out << '\n';
       driver.Handle({IntentKind::kQuit, ""});
@@ -198,6 +288,18 @@ int RunLineMode(WizardDriver& driver, std::istream& in, std::ostream& out, int i
     driver.Handle(ToIntent(TrimLine(answer), v));
     driver.Poll(0.0);
   }
+}
+
+}  // namespace
+
+int RunLineMode(WizardDriver& driver, std::istream& in, std::ostream& out) {
+  StreamInput input(in);
+  return Run(driver, input, out, false);
+}
+
+int RunLineModeOn(WizardDriver& driver, int fd, bool terminal, std::ostream& out) {
+  DescriptorInput input(fd);
+  return Run(driver, input, out, terminal);
 }
 
 }  // namespace accelcal::ui

@@ -7,6 +7,7 @@
 #include <CLI/CLI.hpp>
 #include <fmt/core.h>
 
+#include "accelcal/app/wizard/step_registry.h"
 #include "accelcal/base/version.h"
 #include "accelcal/base/error.h"
 #include "accelcal/base/safe_text.h"
@@ -28,6 +29,8 @@ std::string VersionText() {
 }  // namespace
 
 int main(int argc, char** argv) {
+  // The step kinds defined beside their wizard controllers, before any procedure is read.
+  accelcal::RegisterStepKinds();
   CLI::App app{
       "accelcal: calibrate the three-axis accelerometer of an IMU (the nine-parameter model of\n"
       "scale K, bias b and misalignment T) from static poses and turntable runs.\n\n"
@@ -60,9 +63,11 @@ int main(int argc, char** argv) {
   accelcal::cli::SetupExportCalCommand(app);
   accelcal::cli::SetupHistoryCommand(app);
   accelcal::cli::SetupReportCommand(app);
+  accelcal::cli::SetupRefitCommand(app);
   accelcal::cli::SetupWizardCommand(app);
   accelcal::cli::SetupAllanCommand(app);
   accelcal::cli::SetupNoiseCommand(app);
+  accelcal::cli::SetupLabCommand(app);
   accelcal::cli::SetupDeviceInfoCommand(app);
   accelcal::cli::SetupBagInfoCommand(app);
   accelcal::cli::SetupHelpCommands(app, "accelcal " + VersionText());  // last: it walks the others

@@ -49,6 +49,9 @@ flat "$work/out.killed" "taken out of every sample" || fail "the vehicle's calib
 bench_wizard '' "$mav" "$work/mav.db" "$work/autopilot.toml"
 said "Resuming session"
 said "Verdict:"
+# The write-back is offered after the report; `yes ''` answers Enter, which writes nothing (the
+# values before, read by export-cal --apply below, are still the vehicle's own).
+said "Write this calibration into the vehicle? Nothing is written without your yes."
 calibration "$work/mav.db" && mv "$work/cal.json" "$work/mav.json"
 same "$work/tcp.json" "$work/mav.json" 4 --scale 34.8 --zero 2048
 
@@ -88,6 +91,7 @@ bench_wizard 'BENCH-7\ntester\n' "mavlink:tcp:127.0.0.1:$peer_port" "$work/clums
 stop_bench
 flat "$work/peer.err" "vehicle: back after the reboot" || { cat "$work/peer.err"; fail "the vehicle did not reboot"; }
 said "problem: no samples:"  # the reboot, seen mid-session
+said "source: The device restarted"  # ... and said in the bench's words
 said "Verdict:"
 said "the bench was knocked"
 calibration "$work/clumsy.db" && mv "$work/cal.json" "$work/clumsy.json"

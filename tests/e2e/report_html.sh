@@ -59,8 +59,8 @@ r = json.load(open(sys.argv[1]))
 assert r["format"] == "accelcal-report/1", r["format"]
 assert r["device"] == "SIM-0001", r["device"]
 assert len(r["parameters"]) == 9 and all(p["sigma"] > 0 for p in r["parameters"])
-assert len(r["captures"]) == 18 and r["fit"]["captures_used"] == 18
-assert r["verdict"] in ("PASS", "FAIL") and len(r["limits"]) == 6
+assert len(r["captures"]) == 19 and r["fit"]["captures_used"] == 19
+assert r["verdict"] in ("PASS", "FAIL") and len(r["limits"]) == 9
 assert r["allan"]["unit"] == "m/s^2" and len(r["allan"]["axes"]["z"]["tau_s"]) == 14
 assert r["noise"]["axes"]["x"]["std"] == 1.21
 assert r["residuals"]["stages"][0]["name"] == "base model"

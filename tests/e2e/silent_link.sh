@@ -16,10 +16,10 @@ grep -q '^capture_timeout_s = 3 ' "$work/short.toml" || fail "short procedure: n
 
 for mode in silent nan; do
   start_silent_server "$mode" 0
-  # Serial, operator, place, gravity, equipment, then Enter to measure the noise floor; then
-  # end of input.
+  # Serial, operator, place, gravity, equipment (twice: its example ids are refused once), then
+  # Enter to measure the noise floor; then end of input.
   set +e
-  printf 'SN1\nme\n\n\n\n\n' | timeout 60 "$accelcal" wizard --source "tcp:127.0.0.1:$port" \
+  printf 'SN1\nme\n\n\n\n\n\n' | timeout 60 "$accelcal" wizard --source "tcp:127.0.0.1:$port" \
     --procedure "$work/short.toml" --session "$work/$mode.db" --plain > "$work/out" 2> "$work/err"
   code=$?
   set -e

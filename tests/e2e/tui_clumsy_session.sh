@@ -140,4 +140,37 @@ case "$(flat)" in
   *) fail "after q the terminal does not say how to resume" ;;
 esac
 echo "quit: the terminal says how to resume"
+
+# --- 3. The finished session opened again: its verdict, and "Refit it with new inputs?" (issue
+# 27, item 5); a correction typed there refits it, the earlier calibration kept.
+cat > "$work/again.sh" <<EOS
+cd "$work"
+"$ACCELCAL" wizard --source sim --speed 0 --scenario "$SOURCE_DIR/scenarios/clumsy_bump.toml" \
+  --procedure "$work/short.toml" --session "$work/full.db"
+echo "EXIT=\$?" > "$work/again.exit"
+sleep 120
+EOS
+tmx new-session -d -s again -x 100 -y 30 "bash '$work/again.sh'"
+deadline=$((SECONDS + 30)) offered=0
+while [ $SECONDS -lt $deadline ]; do
+  sleep 0.2; screen_of again
+  case "$(flat)" in *"Refit it with new inputs?"*"Verdict: PASS"*|*"Verdict: PASS"*"Refit it with new inputs?"*) offered=1; break ;; esac
+done
+[ $offered = 1 ] || fail "the finished session did not offer the refit with its verdict"
+tmx send-keys -t again -l 'place Lab 2'
+tmx send-keys -t again Enter
+deadline=$((SECONDS + 60)) refitted=0
+while [ $SECONDS -lt $deadline ]; do
+  sleep 0.2; screen_of again
+  case "$(flat)" in *"any key leave"*) refitted=1; break ;; esac
+done
+[ $refitted = 1 ] || fail "the refit did not reach its final screen"
+f=$(flat)
+for text in "Refitted (refit 1)" "place:" "-> Lab 2" "Verdict: PASS" "Calibration complete."; do
+  case "$f" in *"$text"*) ;; *) fail "the refit's screen lacks '$text'" ;; esac
+done
+tmx send-keys -t again q
+for i in $(seq 1 100); do [ -s "$work/again.exit" ] && break; sleep 0.1; done
+[ "$(cat "$work/again.exit" 2>/dev/null)" = "EXIT=0" ] || fail "again: exit status: $(cat "$work/again.exit" 2>/dev/null)"
+echo "again: the finished session refitted from the full screen"
 echo "PASS"

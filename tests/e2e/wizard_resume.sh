@@ -49,10 +49,10 @@ done
 
 # The final run completes and the session has its calibration.
 run_wizard >"$work/final" 2>&1 || { tail "$work/final" >&2; fail "final run failed"; }
-[ "$(captures_now)" -eq 18 ] || fail "expected 18 captures at the end, got $(captures_now)"
+[ "$(captures_now)" -eq 19 ] || fail "expected 19 captures at the end, got $(captures_now)"
 [ "$(sort "$work/ids" | uniq -d | wc -l)" -eq 0 ] || fail "a capture twice at the end"
 "$accelcal" sessions "$work/s.db" >"$work/list"
-grep -Eq ' 18 (open|done) +yes$' "$work/list" || { cat "$work/list"; fail "session not complete"; }
+grep -Eq ' 19 (open|done) +yes$' "$work/list" || { cat "$work/list"; fail "session not complete"; }
 "$accelcal" report "$work/s.db" >"$work/report" || fail "report"
 grep -q "^2. Parameters (1-sigma uncertainties)$" "$work/report" || fail "report text"
 [ "$previous" -eq 18 ] || [ "$resumed" -gt 0 ] || fail "no round was interrupted mid-session"

@@ -24,13 +24,13 @@ said "Taking '+z up' again: capture 1 stays until this one is accepted"
 said "'+z up' taken again: capture 2 replaces capture 1 (kept in the session, marked superseded, out of the fit and the report)."
 said "Verdict: PASS"
 expect 0 "$accelcal" export "$work/redo.db" -o "$work/redo.csv"
-grep -q "18 captures of session" "$work/out" || fail "export: $(cat "$work/out")"
+grep -q "19 captures of session" "$work/out" || fail "export: $(cat "$work/out")"
 grep -q "not written: 1 capture taken again (superseded by the redo)" "$work/err" || fail "export did not name the superseded capture"
 grep -v '^#' "$work/redo.csv" | tail -n +2 | cut -d, -f1 | sort -u > "$work/ids"
 grep -qx 1 "$work/ids" && fail "the superseded capture 1 was exported"
 grep -qx 2 "$work/ids" || fail "the redo's capture 2 was not exported"
 "$accelcal" report "$work/redo.db" > "$work/report"
-flat "$work/report" "18 captures: 18 used by the fit, 0 left out." || fail "the report does not hold the 18 current captures"
+flat "$work/report" "19 captures: 19 used by the fit, 0 left out." || fail "the report does not hold the 19 current captures"
 grep -Eq '^ +1 \+z up ' "$work/report" && fail "the report lists the superseded capture 1"
 
 # 2. Quit after +z up and a skipped -z up; the rerun lists what the session holds, in order.
@@ -40,7 +40,7 @@ said "Resuming session"
 said "Welcome: done Level the table: done +z up: done (capture 1) -z up: skipped"
 grep -q "done: pose_\|done: welcome" "$work/out" && fail "the summary still shows internal ids"
 
-# 3. The diagnosis: welcome 5, noise floor 1, leveling 3, 9 poses, 9 runs x 3, fit 1 = 46
+# 3. The diagnosis: welcome 5, noise floor 1, leveling 3, 9 poses, 9 runs x 3, the repeat 1, fit 1 = 47
 #    answers, then d (statistics), d (plain again), Enter (the recommended choice).
 #    effects_demo's long radius and bent response put the uncalibrated centripetal reading near
 #    the capture check's 10 % (some runs refused, each refusal one more answer): 20 % here, since
@@ -51,7 +51,7 @@ grep -q "done: pose_\|done: welcome" "$work/out" && fail "the summary still show
 #    3.5 s): the fit is refused (part 4).
 sed -i 's/^turntable_tolerance = 0.10 /turntable_tolerance = 0.20 /' "$work/short.toml"
 grep -q '^turntable_tolerance = 0.20 ' "$work/short.toml" || fail "short procedure: no turntable_tolerance"
-wizard effects_demo.toml "$work/fx.db" "$(printf '\\n%.0s' $(seq 46))d\\nd\\n\\n" --fixed-duration 3
+wizard effects_demo.toml "$work/fx.db" "$(printf '\\n%.0s' $(seq 47))d\\nd\\n\\n" --fixed-duration 3
 said "- the turntable radius seems"
 said "mm longer than entered"
 said "- the sensor's output is not quite a straight line: at 1 g it bends by"
@@ -61,12 +61,12 @@ said "Effects adopted: radius_offset"
 
 # 4. The same bench with the plan's captures: the fit is refused (part 3 says why); Enter at the
 #    refused fit saves and quits with the problem said, the captures kept; a rerun resumes there.
-wizard effects_demo.toml "$work/refused.db" ''
+expect_exit=1 wizard effects_demo.toml "$work/refused.db" ''
 said "problem: the fit is not usable: the captures disagree with each other"
 said "The session cannot go on from here as it is: Enter saves and quits (it resumes here)."
 said "Saved. Everything accepted is in session $work/refused.db"
 [ "$(grep -c 'problem: the fit is not usable' "$work/out")" -le 2 ] || fail "the refused fit was shown again and again"
-wizard effects_demo.toml "$work/refused.db" ''
+expect_exit=1 wizard effects_demo.toml "$work/refused.db" ''
 said "Resuming session"
 said "Fit the nine-parameter model"
 said "Saved. Everything accepted is in session $work/refused.db"

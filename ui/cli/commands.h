@@ -21,9 +21,11 @@ void SetupExportCommand(CLI::App& app);
 void SetupExportCalCommand(CLI::App& app);
 void SetupHistoryCommand(CLI::App& app);
 void SetupReportCommand(CLI::App& app);
+void SetupRefitCommand(CLI::App& app);
 void SetupWizardCommand(CLI::App& app);
 void SetupAllanCommand(CLI::App& app);
 void SetupNoiseCommand(CLI::App& app);
+void SetupLabCommand(CLI::App& app);
 void SetupDeviceInfoCommand(CLI::App& app);
 void SetupBagInfoCommand(CLI::App& app);
 // The hidden commands that write the manual pages and the completion from `app` (set up last,

@@ -93,6 +93,9 @@ void RunFit(const FitCommandOptions& o) {
   }
   request.diagnose = !o.no_diagnose;
   request.reading_unit = loaded.reading_unit;
+  // The gravity's uncertainty is known here (the bench's radius and speed are not): the budget
+  // holds it, and says what it lacks.
+  request.references = ReferenceUncertainties{};
   const CalibrationOutcome outcome = CalibrateCaptures(std::move(request));
   const FitSummary& summary = outcome.Fit(true);
 
@@ -110,7 +113,7 @@ void RunFit(const FitCommandOptions& o) {
     if (const std::string note = GravityAmbiguityNote(gravity, outcome.diagnosis.adopted_names());
         !note.empty())
       std::cout << "\ngravity: " << note << "\n";
-    std::cout << FormatFitReport(cal, summary);
+    std::cout << "\n" << FormatExpandedResults(cal) << FormatFitReport(cal, summary);
   }
   if (!o.output_path.empty()) {
     WriteCalibrationFile(o.output_path, cal);
@@ -125,7 +128,8 @@ void SetupFitCommand(CLI::App& app) {
   CLI::App* sub = app.add_subcommand(
       "fit",
       "Fit the nine calibration parameters (bias, scale, misalignment) to a capture set or to a\n"
-      "continuous recording of static poses, print them with their 1-sigma uncertainties and every\n"
+      "continuous recording of static poses, print them with their expanded uncertainty U (k = 2: the\n"
+      "fit's and the gravity's) and their 1-sigma, and every\n"
       "capture's residual, and write the calibration file. When the residuals exceed what the\n"
       "captures' noise explains, find the effect the model lacks (nonlinearity, cross-axis coupling,\n"
       "temperature, drift, radius offset, speed error, size effect, turntable tilt), add it, and\n"

@@ -32,4 +32,12 @@ GravitySpec GravityFlags::Resolve() const {
   return spec;
 }
 
+std::string GravityFlags::Given() const {
+  if (gravity != nullptr && gravity->count() > 0) return "--gravity " + gravity_text;
+  if (latitude == nullptr || latitude->count() == 0) return "";
+  std::string given = "--latitude " + latitude->as<std::string>();
+  if (altitude != nullptr && altitude->count() > 0) given += " --altitude " + altitude->as<std::string>();
+  return given;
+}
+
 }  // namespace accelcal::cli

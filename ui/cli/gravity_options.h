@@ -21,6 +21,8 @@ struct GravityFlags {
   void Bind(CLI::App& app);
   // The chosen gravity; throws accelcal::Error when it fails validation.
   GravitySpec Resolve() const;
+  // A gravity flag was given (--gravity or --latitude), as typed ("--latitude 0"); empty: none.
+  std::string Given() const;
 };
 
 }  // namespace accelcal::cli

@@ -129,8 +129,8 @@ void RunRecord(const RecordCommandOptions& o) {
   }
   if (!o.scenario_path.empty()) source_options.scenario = sim::LoadScenario(o.scenario_path);
   std::unique_ptr<SampleSource> source = OpenSource(o.source_spec, source_options);
-  if (!o.quiet) PrepareVehicle(*source, o.vehicle_calibration, stderr);
-  else PrepareVehicle(*source, o.vehicle_calibration, nullptr);
+  if (!o.quiet) PrepareVehicle(*source, o.vehicle_calibration, stderr, stderr);
+  else PrepareVehicle(*source, o.vehicle_calibration, nullptr, nullptr);
   SigintGuard sigint;
   std::ofstream file;
   std::ostream& out = OpenOutput(o.output_path, &file);

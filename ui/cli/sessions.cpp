@@ -8,11 +8,13 @@
 
 #include <fmt/core.h>
 
+#include "accelcal/base/utc_time.h"
 #include "accelcal/base/error.h"
 #include "accelcal/session/session_catalog.h"
 #include "accelcal/session/session_paths.h"
 #include "accelcal/session/session_store.h"
 #include "cli/commands.h"
+#include "cli/output.h"
 
 namespace accelcal::cli {
 namespace {
@@ -47,8 +49,7 @@ std::string Row(const std::string& path) {
   read_only.read_only = true;
   try {
     const SessionInfo info = SessionStore::Open(path, read_only)->Info();
-    // "2025-03-01T14:05:09.123Z" -> "2025-03-01 14:05:09"
-    const std::string created = info.created_utc.substr(0, 19).replace(10, 1, " ");
+    const std::string created = ShortUtc(info.created_utc);
     const std::string row = fmt::format(kRowFormat, "", created, Cell(info.device, 14),
                                         Cell(info.operator_name, 12), Cell(info.procedure, 14),
                                         info.num_captures, SessionStateToString(info.state),

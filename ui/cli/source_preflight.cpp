@@ -21,14 +21,17 @@ void RefuseAbsentSerialPort(const std::string& spec) {
                           parsed.path));
 }
 
-void PrepareVehicle(SampleSource& source, const std::string& choice, std::FILE* say) {
+std::vector<std::string> PrepareVehicle(SampleSource& source, const std::string& choice, std::FILE* say,
+                                        std::FILE* say_when_refused) {
   auto* vehicle = dynamic_cast<MavlinkSource*>(&source);
-  if (vehicle == nullptr) return;
+  if (vehicle == nullptr) return {};
   const VehiclePreparation prep = PrepareVehicleSource(
       *vehicle, choice == "as-is" ? VehicleCalibrationChoice::kAsIs : VehicleCalibrationChoice::kUndo);
-  if (say != nullptr)
-    for (const std::string& line : prep.lines) fmt::print(say, "{}\n", line);
+  std::FILE* out = prep.refused.empty() ? say : say_when_refused;
+  if (out != nullptr)
+    for (const std::string& line : prep.lines) fmt::print(out, "{}\n", line);
   if (!prep.refused.empty()) throw Error(prep.refused + "; no session was created or changed");
+  return prep.lines;
 }
 
 }  // namespace accelcal::cli

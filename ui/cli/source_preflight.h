@@ -7,6 +7,7 @@
 
 #include <cstdio>
 #include <string>
+#include <vector>
 
 #include "accelcal/acquire/source/sample_source.h"
 
@@ -16,10 +17,12 @@ namespace accelcal::cli {
 // and DEVICE does not exist. Other specs are left to OpenSource.
 void RefuseAbsentSerialPort(const std::string& spec);
 
-// A MAVLink source: reads the vehicle's own accelerometer calibration, says it on `say`, and
-// takes it back out of the samples (`choice` "undo") or leaves it in ("as-is"). Throws
-// accelcal::Error (before anything is created) when it cannot be undone or no vehicle answers.
-// Other sources: nothing. What the wizard's device step will ask instead (docs/devices.md).
-void PrepareVehicle(SampleSource& source, const std::string& choice, std::FILE* say);
+// A MAVLink source: reads the vehicle's own accelerometer calibration, says it on `say`
+// (nullable), and takes it back out of the samples (`choice` "undo") or leaves it in ("as-is");
+// returns what it said (the wizard shows it at the welcome and records it). Throws
+// accelcal::Error (before anything is created) when it cannot be undone or no vehicle answers,
+// having said the calibration on `say_when_refused` (nullable). Other sources: nothing.
+std::vector<std::string> PrepareVehicle(SampleSource& source, const std::string& choice, std::FILE* say,
+                                        std::FILE* say_when_refused);
 
 }  // namespace accelcal::cli

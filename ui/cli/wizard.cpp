@@ -2,25 +2,33 @@
 #include "cli/wizard.h"
 
 #include <cstdlib>
+#include <functional>
 #include <iostream>
 #include <memory>
+#include <vector>
 
 #include <unistd.h>
 
 #include <fmt/core.h>
 
+#include "accelcal/app/lab_equipment_check.h"
+#include "accelcal/app/lab_publish.h"
 #include "accelcal/base/error.h"
 #include "accelcal/io/procedure_file.h"
 #include "accelcal/io/scenario_file.h"
 #include "accelcal/session/session_paths.h"
+#include "accelcal/acquire/mavlink/mavlink_source.h"
 #include "accelcal/acquire/source/remote_bench.h"
 #include "accelcal/acquire/source/source_spec.h"
 #include "accelcal/session/procedure.h"
+#include "accelcal/app/refit_session.h"
+#include "accelcal/app/wizard/virtual_lab.h"
 #include "accelcal/app/wizard/wizard_engine.h"
 #include "cli/commands.h"
 #include "cli/output.h"
 #include "cli/source_preflight.h"
 #include "cli/terminal_answers.h"
+#include "cli/usage_errors.h"
 #include "cli/gravity_options.h"
 #include "cli/wizard_journal.h"
 #include "cli/shipped_files.h"
@@ -38,12 +46,42 @@ std::string DefaultOperator(bool sim) {
   return sim ? "sim operator" : "";
 }
 
+// The wizard's end on a bench pointed at a lab (docs/lab.md): the finished session published to
+// the lab's register, its number written back; a lab out of reach leaves it in the backlog.
+void PublishAtTheEnd(const std::string& session, const std::string& procedure_path) {
+  if (!LabConfigured()) return;
+  std::cout << fmt::format("Sending the session to the lab's register (waiting at most {} s for it)...",
+                           kLabQuickConnectTimeoutS)
+            << std::endl;
+  SessionOpenOptions existing;
+  existing.create_if_missing = false;
+  const std::unique_ptr<SessionStore> store = SessionStore::Open(session, existing);
+  if (const std::optional<SessionPublishOutcome> outcome = PublishIfLabConfigured(*store, procedure_path))
+    std::cout << "The lab's register: " << DescribeOutcome(*outcome) << "\n";
+}
+
+// WelcomeEquipmentCheck, saying on the terminal what the wizard waits for before the first
+// check: it runs while the engine is built, before the welcome is on the screen (the TUI's too),
+// and a lab that does not answer holds it up to kLabQuickConnectTimeoutS.
+std::function<WelcomeLabCheck(const std::vector<EquipmentItem>&)> AnnouncedEquipmentCheck() {
+  return [check = WelcomeEquipmentCheck(), first = true](const std::vector<EquipmentItem>& items) mutable {
+    if (first && LabConfigured())
+      std::cout << fmt::format("Checking the bench's equipment with the lab's register (waiting at most {} s "
+                               "for it)...",
+                               kLabQuickConnectTimeoutS)
+                << std::endl;
+    first = false;
+    return check(items);
+  };
+}
+
 }  // namespace
 
 int RunWizard(const WizardCommandOptions& options) {
   RefuseAbsentSerialPort(options.source);  // before the session file is created
-  const Procedure procedure = LoadProcedure(
-      options.procedure_path.empty() ? ShippedProcedurePath("full_calibration.toml") : options.procedure_path);
+  const std::string procedure_path =
+      options.procedure_path.empty() ? ShippedProcedurePath("full_calibration.toml") : options.procedure_path;
+  const Procedure procedure = LoadProcedure(procedure_path);
   // `--source -`: stdin carries the samples, so the answers come from the terminal (refused
   // here, before anything is opened or written, when there is none).
   std::unique_ptr<TerminalAnswers> tty;
@@ -51,38 +89,59 @@ int RunWizard(const WizardCommandOptions& options) {
   SourceOptions source_options;
   source_options.sim.speed = options.speed;
   source_options.seed = options.seed;
+  const bool sim = options.source == "sim";
   if (!options.scenario_path.empty()) source_options.scenario = sim::LoadScenario(options.scenario_path);
   std::unique_ptr<SampleSource> source = OpenSource(options.source, source_options);
-  PrepareVehicle(*source, options.vehicle_calibration, stdout);
+  // The vehicle's calibration is said at the welcome (and recorded there); a refusal, here.
+  std::vector<std::string> device_lines = PrepareVehicle(*source, options.vehicle_calibration, nullptr, stdout);
+  // The vehicle, for the write-back step, before the source is wrapped.
+  MavlinkSource* vehicle = dynamic_cast<MavlinkSource*>(source.get());
   if (!options.bench_control.empty())
     source = WithRemoteBench(std::move(source), ParseHostPort(options.bench_control, options.bench_control,
                                                               "--bench-control HOST:PORT"));
   // A new session goes to the default session directory, where `accelcal sessions` looks.
   const std::string session = options.session_path.empty() ? NewSessionPath() : options.session_path;
-  const std::unique_ptr<SessionJournal> journal = OpenWizardJournal(session, procedure.title, options.source);
+  std::unique_ptr<SessionJournal> journal = OpenWizardJournal(session, procedure.title, options.source);
 
   WizardOptions wizard;
   wizard.session_name = session;
-  wizard.default_operator = DefaultOperator(options.source == "sim");
-  wizard.default_device = options.source == "sim" ? "SIM-0001" : "";
+  wizard.default_operator = DefaultOperator(sim);
+  wizard.default_device = sim ? "SIM-0001" : "";
   wizard.default_place = options.place;
   wizard.fixed_duration_s = options.fixed_duration_s;
+  wizard.device_lines = std::move(device_lines);
+  wizard.vehicle = vehicle;
   wizard.gravity = options.gravity;
+  // The virtual bench's lab: its gravity and its identified, verified equipment (virtual_lab.h).
+  if (sim)
+    OfferVirtualLab(source_options.scenario ? *source_options.scenario : sim::DefaultScenario(),
+                    !options.gravity_flag.empty(), &wizard);
   wizard.report_beside = session;
+  if (!options.no_lab) wizard.check_equipment = AnnouncedEquipmentCheck();
+  // A flag this run does not use (the session recorded its own at its welcome) is said, never
+  // silently ignored.
+  wizard.notes = UnusedResumeFlags(*journal, session, options.gravity_flag, options.place);
   WizardEngine engine(procedure, *source, *journal, wizard);
 
   const bool terminal = ::isatty(STDIN_FILENO) == 1 && ::isatty(STDOUT_FILENO) == 1;
   int status = 0;
   if (tty) {
-    status = ui::RunLineMode(engine, tty->in(), std::cout, tty->fd());  // stdin is the samples'
+    status = ui::RunLineModeOn(engine, tty->fd(), true, std::cout);  // stdin is the samples'
   } else if (terminal && !options.plain) {
     status = ui::RunTui(engine);
   } else {
     // On a terminal, q is read while the wizard captures; a pipe's lines wait for questions.
-    status = ui::RunLineMode(engine, std::cin, std::cout, ::isatty(STDIN_FILENO) == 1 ? STDIN_FILENO : -1);
+    status = ui::RunLineModeOn(engine, STDIN_FILENO, ::isatty(STDIN_FILENO) == 1, std::cout);
   }
+  // A session left at a dead end (a fit refused, a capture refused again and again) is saved
+  // to resume like one left with q, but the job failed: a script must not take it for done.
+  if (status == 0 && engine.left_on_failure()) return kExitFailure;
   // Done only when the procedure ran to its end; a session left with q stays open to resume.
-  if (status == 0 && engine.completed()) journal->MarkDone();
+  if (status == 0 && engine.completed()) {
+    journal->MarkDone();
+    journal.reset();  // closed before the session is opened to publish it
+    if (!options.no_lab) PublishAtTheEnd(session, procedure_path);
+  }
   return status;
 }
 
@@ -117,6 +176,9 @@ void SetupWizardCommand(CLI::App& app) {
                   "Every capture this long, s, as before the plan (for comparison); default: the "
                   "procedure's [target] plans each capture's length")
       ->check(CLI::PositiveNumber);
+  sub->add_flag("--no-lab", options->no_lab,
+                "On a bench pointed at a lab's register (docs/lab.md): neither check the equipment\n"
+                "at the welcome nor publish the finished session (`accelcal lab publish` does later)");
   sub->add_option("--vehicle-calibration", options->vehicle_calibration,
                   "mavlink: the vehicle's own accelerometer calibration: undo (take it out of every "
                   "sample: the nine parameters describe the sensor) or as-is")
@@ -134,6 +196,7 @@ void SetupWizardCommand(CLI::App& app) {
       "'standard', said explicitly).");
   sub->callback([options, gravity] {
     options->gravity = gravity->Resolve();
+    options->gravity_flag = gravity->Given();
     if (RunWizard(*options) != 0) throw Error("the wizard stopped on a failure");
   });
 }

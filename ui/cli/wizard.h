@@ -17,11 +17,15 @@ struct WizardCommandOptions {
   std::string procedure_path;       // empty = the shipped full_calibration.toml (shipped_files.h)
   std::string session_path;         // empty = a new session named by the time
   bool plain = false;               // line mode even on a terminal
+  // On a bench pointed at a lab (LabConfigured): the welcome's equipment check, and the finished
+  // session published at the end. --no-lab: neither.
+  bool no_lab = false;
   std::string place;                // offered at the welcome (the lab, the bench)
   double fixed_duration_s = 0.0;    // > 0: every capture this long (no plan by the target), s
   std::string bench_control;        // HOST:PORT of a remote virtual bench's controls (tests)
   std::string vehicle_calibration = "undo";  // mavlink: undo | as-is
   GravitySpec gravity;
+  std::string gravity_flag;         // the gravity flag as given ("--latitude 0"); empty: none
 };
 
 // Runs the wizard to its end or until the operator leaves; returns the exit status.

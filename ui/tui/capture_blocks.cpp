@@ -25,6 +25,16 @@ std::vector<Line> NoticeBlock(const WizardView& view, int width) {
   return Led("[DONE] ", view.notice, width, Role::kPass, Role::kPass);
 }
 
+std::vector<Line> SourceNoticeBlock(const WizardView& view, const RenderState& state, int width) {
+  if (view.source_notice.empty()) return {};
+  std::vector<Line> rows = Led("[LINK] ", view.source_notice, width, Role::kWarn, Role::kWarn);
+  if (state.details && !view.source_detail.empty()) {
+    std::vector<Line> figures = Led("detail   ", view.source_detail, width, Role::kDim, Role::kDim);
+    rows.insert(rows.end(), figures.begin(), figures.end());
+  }
+  return rows;
+}
+
 std::vector<Line> TimeBlock(const WizardView& view, int width) {
   if (view.time_text.empty()) return {};
   return Led("time     ", view.time_text, width, Role::kDim, Role::kNormal);

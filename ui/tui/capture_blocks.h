@@ -14,6 +14,9 @@ namespace accelcal::ui {
 
 // "[DONE] +z up done: 10.0 s, |a| ~10.12 m/s^2 by the datasheet, noise 1.6 counts"; empty without one.
 std::vector<Line> NoticeBlock(const WizardView& view, int width);
+// "[LINK] The device restarted ...": what the source noticed, in words; with `state.details`,
+// its figures under it. Empty without one.
+std::vector<Line> SourceNoticeBlock(const WizardView& view, const RenderState& state, int width);
 // "time     4 s left of this capture; gives up in 52 s; session: about 14 min left (estimate)",
 // wrapped; empty without a time.
 std::vector<Line> TimeBlock(const WizardView& view, int width);

@@ -57,6 +57,7 @@ std::vector<Block> MiddleBlocks(const WizardView& view, const RenderState& state
       {5, PromptBlock(view, width)},
       {4, std::move(panel)},
       {8, ProblemBlock(view, width)},
+      {6, SourceNoticeBlock(view, state, width)},
       {6, DetailBlock(view, state, width)},
       {5, TimeBlock(view, width)},
       {9, InputBlock(view, state, width)},

@@ -253,7 +253,7 @@ Line KeysLine(const WizardView& view, bool scrollable, bool typed, int width) {
       add(key, key == "Esc" && typed ? "clear" : hint.action);
     }
   }
-  if (!view.finished && !view.detail.empty()) add("d", "figures");
+  if (!view.finished && (!view.detail.empty() || !view.source_detail.empty())) add("d", "figures");
   if (scrollable) add("PgUp/PgDn", "scroll");
   // Too wide: the actions lose their remarks in brackets first ("refit (recommended)": the
   // question says it), then the last entries are left off whole, never cut in a word.

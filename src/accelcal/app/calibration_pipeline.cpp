@@ -5,6 +5,7 @@
 #include "accelcal/base/error.h"
 #include "accelcal/calibration/calibration_budget.h"
 #include "accelcal/calibration/excess_scatter.h"
+#include "accelcal/calibration/pose_repeat.h"
 
 namespace accelcal {
 
@@ -19,6 +20,10 @@ Calibration CalibrationOutcome::MakeCalibration(bool adopt_effects) const {
   if (settling.detected) cal.limited_by.insert(cal.limited_by.begin(), {"settling", SettlingWords(settling)});
   if (adopt_effects && !diagnosis.adopted.empty())
     for (const NearTie& t : near_ties) cal.limited_by.push_back({"near_tie", NearTieWords(t)});
+  // A pose taken again (a repeat step) that moved beyond noise, which the fit does not explain.
+  if (!diagnosis.consistent)
+    for (const PoseRepeat& r : FindPoseRepeats(captures, cal.model))
+      if (r.beyond_noise) cal.limited_by.push_back({"reference_drift", PoseRepeatLimitWords(r)});
   if (references)
     cal.budget = MakeCalibrationBudget(diagnosis, adopt_effects, captures, gravity.gravity_mps2, *references);
   return cal;

@@ -2,6 +2,7 @@
 
 #include <fmt/core.h>
 
+#include "accelcal/app/refit_session.h"
 #include "accelcal/base/error.h"
 #include "accelcal/io/calibration_file.h"
 #include "accelcal/io/session_result_file.h"
@@ -24,6 +25,7 @@ ReportInputs ReportInputsFromJournal(const SessionJournal& journal, const std::s
   if (std::optional<std::string> equipment = ReadWelcomeAnswers(inputs).equipment)
     in.equipment_answer = std::move(*equipment);
   ReadAnalysesFromResultText(*result, source_name, &in);
+  in.meta.history = SessionHistory(journal, journal.ResultCount() - 1);
   return in;
 }
 

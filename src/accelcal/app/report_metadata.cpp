@@ -24,15 +24,19 @@ ReportInputs FromSession(const std::string& path) {
   in.meta.session_path = info.path;
   in.meta.procedure = info.procedure;
   in.meta.source = info.source;
+  // One sensor per session today: its lab number, once published (docs/lab.md).
+  for (const LabCertificateMark& mark : session.store->LabCertificates())
+    if (mark.sensor_index == 0) in.meta.certificate_number = mark.certificate_number;
   return in;
 }
 
 // The procedure's equipment as the session's welcome edited it (the same list the wizard's
-// report showed), and its nominal zero-g level.
+// report showed), and its nominal zero-g level and scale.
 void SetEquipment(const Procedure& p, ReportInputs* in) {
   const EquipmentAnswer edited = ApplyEquipmentAnswer(in->equipment_answer, p.equipment);
   in->equipment = edited.ok() ? edited.items : p.equipment;
   in->nominal_bias_counts = p.nominal.bias_counts;
+  in->nominal_scale_counts_per_mps2 = p.nominal.scale_counts_per_mps2;
 }
 
 void AddLimits(const ReportRequest& r, ReportInputs* in) {

@@ -1,6 +1,7 @@
 // What a report of a calibration file or a session says beside the calibration (`accelcal
-// report`): for a session, its captures and who, when, where and how (its device, operator, date,
-// name, path, procedure, source); the procedure's limits that decide the verdict, its equipment
+// report`, `accelcal lab publish`): for a session, its captures and who, when, where and how (its
+// device, operator, date, name, path, procedure, source) and the lab's certificate number once it
+// is published; the procedure's limits that decide the verdict, its equipment
 // and nominal zero-g level; the Allan and noise analyses. The calibration and the errors are
 // calibration_input.h's.
 #pragma once

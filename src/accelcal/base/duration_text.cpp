@@ -19,4 +19,20 @@ std::string FormatLongDuration(double seconds) {
   return fmt::format("{} s", s);
 }
 
+std::optional<long> ParseDays(std::string_view text) {
+  size_t i = 0;
+  long value = 0;
+  while (i < text.size() && text[i] >= '0' && text[i] <= '9') {
+    if (value > 1'000'000) return std::nullopt;  // beyond any recalibration window
+    value = value * 10 + (text[i++] - '0');
+  }
+  if (i == 0) return std::nullopt;
+  while (i < text.size() && text[i] == ' ') ++i;
+  const std::string_view unit = text.substr(i);
+  if (unit.empty() || unit == "d" || unit == "day" || unit == "days") return value;
+  if (unit == "w" || unit == "week" || unit == "weeks") return value * 7;
+  if (unit == "y" || unit == "year" || unit == "years") return value * 365;
+  return std::nullopt;
+}
+
 }  // namespace accelcal

@@ -34,4 +34,10 @@ std::string UtcNowCompact() {
                      t.tm_hour, t.tm_min, t.tm_sec);
 }
 
+std::string ShortUtc(const std::string& iso) {
+  std::string d = iso.substr(0, 19);
+  if (d.size() > 10 && d[10] == 'T') d[10] = ' ';
+  return d;
+}
+
 }  // namespace accelcal

@@ -16,18 +16,9 @@ namespace {
 constexpr double kStrongBic = 6.0;
 
 // Passed every test of the guard, or lost only the diagnosis's tie-break by the left-out
-// prediction (its reason then reads "... fits these captures about as well, but ...").
+// prediction (CandidateScore::near_tie).
 bool Passed(const CandidateScore& c) {
-  return c.skipped_reason.empty() &&
-         (c.rejected_reason.empty() || c.rejected_reason.find("about as well") != std::string::npos);
-}
-
-// The effect a round adopted (its outcome reads "adopted NAME: ..."); empty when none.
-std::string AdoptedIn(const DiagnosisRound& round) {
-  constexpr std::string_view kPrefix = "adopted ";
-  if (round.outcome.rfind(kPrefix, 0) != 0) return {};
-  const size_t end = round.outcome.find(':', kPrefix.size());
-  return round.outcome.substr(kPrefix.size(), end == std::string::npos ? end : end - kPrefix.size());
+  return c.skipped_reason.empty() && (c.rejected_reason.empty() || c.near_tie);
 }
 
 // The hypothetical captures a bench can add: the six faces, and each signed axis radial at the
@@ -126,7 +117,7 @@ std::vector<NearTie> FindNearTies(const DiagnosisReport& diagnosis,
   solver.gravity_mps2 = options.gravity.gravity_mps2;
 
   for (const DiagnosisRound& round : diagnosis.rounds) {
-    const std::string winner = AdoptedIn(round);
+    const std::string& winner = round.adopted;
     if (winner.empty()) continue;
     const auto won = std::find_if(round.candidates.begin(), round.candidates.end(),
                                   [&](const CandidateScore& c) { return c.effect == winner; });

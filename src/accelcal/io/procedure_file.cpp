@@ -53,13 +53,38 @@ StepDefaults ReadChecks(TomlTableReader& r, Procedure& p) {
   return d;
 }
 
+// A limit on U (k = 2) under its key, or under the first format's 1-sigma key read by the
+// stated rule: U = 2 x the 1-sigma (ProcedureLimits says why). Both keys at once is refused.
+double ReadULimit(TomlTableReader& r, std::string_view u_key, std::string_view sigma_key,
+                  ProcedureLimits& l) {
+  const double u = r.Number(u_key, kNaN, NumberRange::kPositive);
+  const double sigma = r.Number(sigma_key, kNaN, NumberRange::kPositive);
+  if (std::isnan(sigma)) return u;
+  if (!std::isnan(u))
+    r.Fail(*r.Get(sigma_key), sigma_key,
+           fmt::format("give {} (U, k = 2) or the older {} (1-sigma), not both", u_key, sigma_key));
+  l.converted.push_back(fmt::format("{} = {:g} (1-sigma) read as {} = {:g} (U, k = 2)", sigma_key,
+                                    sigma, u_key, 2.0 * sigma));
+  return 2.0 * sigma;
+}
+
 ProcedureLimits ReadLimits(TomlTableReader& r) {
   ProcedureLimits l;
   l.max_residual_rms_mps2 = r.Number("max_residual_rms_mps2", kNaN, NumberRange::kPositive);
   l.max_residual_rms_noise = r.Number("max_residual_rms_noise", kNaN, NumberRange::kPositive);
-  l.max_bias_sigma_counts = r.Number("max_bias_sigma_counts", kNaN, NumberRange::kPositive);
-  l.max_scale_sigma_ppm = r.Number("max_scale_sigma_ppm", kNaN, NumberRange::kPositive);
-  l.max_misalignment_sigma_rad = r.Number("max_misalignment_sigma_rad", kNaN, NumberRange::kPositive);
+  l.max_bias_U_counts = ReadULimit(r, "max_bias_U_counts", "max_bias_sigma_counts", l);
+  l.max_scale_U_ppm = ReadULimit(r, "max_scale_U_ppm", "max_scale_sigma_ppm", l);
+  l.max_misalignment_U_rad = ReadULimit(r, "max_misalignment_U_rad", "max_misalignment_sigma_rad", l);
+  l.bias_tolerance_counts = r.Number("bias_tolerance_counts", kNaN, NumberRange::kPositive);
+  l.scale_tolerance_percent = r.Number("scale_tolerance_percent", kNaN, NumberRange::kPositive);
+  l.misalignment_tolerance_rad = r.Number("misalignment_tolerance_rad", kNaN, NumberRange::kPositive);
+  const std::string rule = r.String("decision_rule", std::string(DecisionRuleKey(l.decision_rule)));
+  const std::optional<DecisionRule> decision = DecisionRuleFromKey(rule);
+  if (!decision)
+    r.Fail(*r.Get("decision_rule"), "decision_rule",
+           "'" + rule + "' is not a decision rule: \"simple\" (simple acceptance) or \"guard_band\" "
+           "(guarded acceptance, w = U)");
+  l.decision_rule = *decision;
   const std::int64_t n = r.Integer("min_captures", 0);
   if (n < 0 || n > 100000) r.Fail(*r.Get("min_captures"), "min_captures", "must be 0..100000");
   l.min_captures = static_cast<int>(n);
@@ -103,6 +128,7 @@ std::vector<EquipmentItem> ReadEquipment(TomlTableReader& r, const std::string& 
     item.identification = t.String("id", std::string());
     item.standard_uncertainty = t.Number(info.uncertainty_key, kNaN, NumberRange::kNonNegative) * info.to_si;
     item.traceability = t.String("traceability", std::string());
+    item.calibration = t.String("calibration", std::string());
     t.Finish();
     items.push_back(std::move(item));
   }

@@ -64,16 +64,17 @@ json Stages(const std::vector<ResidualStage>& stages) {
   return a;
 }
 
+// "not recorded" is null in JSON.
+json Text(const std::string& s) { return s.empty() ? json(nullptr) : json(s); }
+
 json Checks(const ReportModel& m) {
   json a = json::array();
   for (const LimitCheck& c : m.checks)
     a.push_back({{"what", c.what}, {"unit", c.unit}, {"value", Num(c.value)}, {"limit", Num(c.limit)},
-                 {"at_least", c.at_least}, {"pass", c.pass}});
+                 {"at_least", c.at_least}, {"pass", c.pass}, {"parameter", Text(c.parameter)},
+                 {"rule", Text(c.rule)}, {"why", Text(c.why)}, {"on_uncertainty", c.on_uncertainty}});
   return a;
 }
-
-// "not recorded" is null in JSON.
-json Text(const std::string& s) { return s.empty() ? json(nullptr) : json(s); }
 
 json BenchSecondsJson(const BenchSeconds& b) {
   return {{"capture_s", Num(b.capture_s)},
@@ -131,6 +132,7 @@ json ReportToJson(const ReportModel& m) {
           {"session", {{"name", Text(m.meta.session_name)}, {"path", Text(m.meta.session_path)}}},
           {"procedure", Text(m.meta.procedure)},
           {"source", Text(m.meta.source)},
+          {"history", m.meta.history},
           {"fitted_from", Text(m.fit_source)},
           {"gravity", {{"value_mps2", Num(m.gravity_mps2)}, {"description", m.gravity_text}}},
           {"parameters", Parameters(m.parameters)},

@@ -103,6 +103,8 @@ EffectsSpec ReadEffects(TomlTableReader& r, const std::string& source, double am
   e.rpm_scale = r.Number("rpm_scale", 0.0);
   e.size_effect_m = r.Vector3("size_effect_m", zero);
   e.turntable_tilt_rad = r.Number("turntable_tilt_rad", 0.0);
+  e.settling_share = r.Vector3("settling_share", zero);
+  e.settling_tau_s = r.Number("settling_tau_s", 15.0);
   if (const toml::array* bumps = r.ArrayOfTables("bump")) {
     for (std::size_t i = 0; i < bumps->size(); ++i) {
       TomlTableReader br(*bumps->get(i)->as_table(), fmt::format("effects.bump {}", i), source);
@@ -176,6 +178,17 @@ Technician ReadTechnician(TomlTableReader& r, const std::string& source) {
     }
   }
   return t;
+}
+
+LabSpec ReadLab(TomlTableReader& r) {
+  LabSpec lab;
+  lab.gravity = r.String("gravity", lab.gravity);
+  lab.gravity_sigma_mps2 = r.Number("gravity_sigma_mps2", lab.gravity_sigma_mps2, NumberRange::kPositive);
+  lab.equipment = r.String("equipment", lab.equipment);
+  for (const char* key : {"gravity", "equipment"})
+    if (r.Has(key) && r.String(key, std::nullopt).find_first_of("\r\n") != std::string::npos)
+      r.Fail(*r.Get(key), key, "must be a single line (the welcome's answer)");
+  return lab;
 }
 
 void ReadTurntable(TomlTableReader& r, CapturePlan& c) {
@@ -254,6 +267,7 @@ Scenario ParseScenario(std::string_view toml_text, const std::string& source_nam
   WithTable(root, "effects", false, source_name, [&](TomlTableReader& r) {
     s.effects = ReadEffects(r, source_name, s.bench.temperature_c);
   });
+  WithTable(root, "lab", false, source_name, [&](TomlTableReader& r) { s.lab = ReadLab(r); });
   WithTable(root, "technician", false, source_name,
             [&](TomlTableReader& r) { s.technician = ReadTechnician(r, source_name); });
   const toml::array* plan = root.ArrayOfTables("capture");

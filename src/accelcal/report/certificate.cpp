@@ -1,5 +1,6 @@
 #include "accelcal/report/certificate.h"
 
+#include <cctype>
 #include <cmath>
 #include <cstdint>
 
@@ -7,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "accelcal/base/gravity.h"
+#include "accelcal/report/limited_by_text.h"
 #include "accelcal/report/report_model.h"
 #include "accelcal/report/uncertainty_text.h"
 
@@ -106,12 +108,13 @@ std::vector<std::string> Traceability(const ReportInputs& in) {
   out.push_back("Local gravity: " + g.Describe() + ".");
   for (const EquipmentItem& item : in.equipment) {
     const EquipmentRoleInfo& info = InfoOf(item.role);
-    out.push_back(fmt::format("{}: {}{}, u = {}; {}.", info.quantity, item.name,
-                              item.identification.empty() ? std::string(" (not identified)")
-                                                          : " (" + item.identification + ")",
-                              DescribeUncertainty(item),
+    const std::string id = item.identification.empty() ? std::string(" (not identified)")
+                           : IsPlaceholderId(item.identification) ? " (" + item.identification + ": not identified)"
+                                                                  : " (" + item.identification + ")";
+    out.push_back(fmt::format("{}: {}{}, u = {}; {}{}.", info.quantity, item.name, id, DescribeUncertainty(item),
                               item.traceability.empty() ? "the procedure states no traceability"
-                                                        : "traced to " + item.traceability));
+                                                        : "traced to " + item.traceability,
+                              item.calibration.empty() ? "" : "; its calibration: " + item.calibration));
   }
   if (in.equipment.empty())
     out.push_back("The procedure lists no equipment ([equipment]): the radius, speed, leveling "
@@ -119,19 +122,55 @@ std::vector<std::string> Traceability(const ReportInputs& in) {
   return out;
 }
 
+// The decision rule as the procedure states it (ILAC-G8:09/2019): the limits on U, the
+// tolerances' rule, the fit's checks, and any first-format limit read by the stated rule.
+std::string DecisionRuleText(const std::optional<ProcedureLimits>& limits) {
+  if (!limits || !limits->Any()) return "None: the procedure states no limits.";
+  std::vector<std::string> parts;
+  if (limits->AnyOnUncertainty())
+    parts.push_back("each limit on U is compared with the U (k = 2) of this certificate's budget, type A "
+                    "and B; a U over its limit means the calibration cannot show conformity");
+  if (limits->AnyTolerance())
+    parts.push_back(limits->decision_rule == DecisionRule::kGuardBand
+                        ? "each tolerance on the values by a guard band (ILAC-G8:09/2019, 4.2.2, binary "
+                          "statement, w = U): a value conforms only within the tolerance narrowed by its "
+                          "U, so that a false accept is unlikely (about 2.5 % at most)"
+                        : "each tolerance on the values by simple acceptance (ILAC-G8:09/2019, 4.2.1): "
+                          "the value as found within the tolerance conforms; its uncertainty neither "
+                          "widens nor narrows the tolerance");
+  if (limits->min_captures > 0 || std::isfinite(limits->max_residual_rms_mps2) ||
+      std::isfinite(limits->max_residual_rms_noise))
+    parts.push_back("the fit's checks (captures used, residual RMS) as found");
+  std::string out = fmt::format("{}.", fmt::join(parts, "; "));
+  out[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(out[0])));
+  if (!limits->converted.empty())
+    out += fmt::format(" The procedure states some limits on the fit's 1-sigma, read as limits on U = "
+                       "2 x 1-sigma: {}.", fmt::join(limits->converted, "; "));
+  return out;
+}
+
+std::string NotMet(const LimitCheck& c) {
+  if (c.on_uncertainty) return "cannot show conformity: " + (c.why.empty() ? c.what : c.why);
+  if (!c.why.empty()) return c.why;
+  return fmt::format("{} {:.4g}{} {} {:.4g}", c.what, c.value, c.unit.empty() ? "" : " " + c.unit,
+                     c.at_least ? "below" : "beyond", c.limit);
+}
+
 std::string Conformity(const ReportModel& m) {
   switch (m.verdict) {
     case Verdict::kPass:
-      return fmt::format("Conforms: every limit of the procedure is met ({} checks).", m.checks.size());
+      return fmt::format("Conforms: every limit of the procedure is met ({} checks), by the decision "
+                         "rule above.", m.checks.size());
     case Verdict::kFail: {
       std::vector<std::string> failed;
       for (const LimitCheck& c : m.checks)
-        if (!c.pass) failed.push_back(c.what);
-      return fmt::format("Does not conform: {} not met.", fmt::join(failed, ", "));
+        if (!c.pass) failed.push_back(NotMet(c));
+      return fmt::format("Does not conform: {}.", fmt::join(failed, "; "));
     }
     case Verdict::kIncomplete:
-      return "No statement of conformity: the limits are met but the session is incomplete "
-             "(see the completeness section).";
+      return fmt::format("No statement of conformity: {} the session is incomplete: {}.",
+                         m.checks.empty() ? "no limits are stated, and" : "the limits are met but",
+                         fmt::join(m.incomplete, "; "));
     case Verdict::kNoLimits: break;
   }
   return "No statement of conformity: the procedure states no limits.";
@@ -153,7 +192,9 @@ std::string CertificateNumber(const std::string& session_name, const SensorModel
 
 Certificate MakeCertificate(const ReportInputs& in, const ReportModel& m) {
   Certificate c;
-  c.number = CertificateNumber(m.meta.session_name, in.calibration.model);
+  // The lab's number once the session is published (docs/lab.md), else the session's own.
+  c.number = m.meta.certificate_number.empty() ? CertificateNumber(m.meta.session_name, in.calibration.model)
+                                               : m.meta.certificate_number;
   c.simulated = m.meta.source.rfind("sim", 0) == 0;
   c.method = Method(in, m);
   c.equipment = in.equipment;
@@ -176,9 +217,9 @@ Certificate MakeCertificate(const ReportInputs& in, const ReportModel& m) {
                  "1-sigma (type A alone, k = 2); the reference quantities' uncertainties are not "
                  "included.";
   }
+  c.limited_by = LimitedByStatement(in.calibration);
   c.traceability = Traceability(in);
-  c.decision_rule = "Simple acceptance (ILAC-G8:09/2019, 4.2.1): each limit is compared with the "
-                    "value as found; the value's uncertainty neither widens nor narrows the limit.";
+  c.decision_rule = DecisionRuleText(in.limits);
   c.conformity = Conformity(m);
   return c;
 }

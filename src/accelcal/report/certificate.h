@@ -1,8 +1,10 @@
 // The calibration certificate's content (ISO/IEC 17025 clause 7.8; GUM, JCGM 100:2008): what
 // the report adds to make it a certificate a lab can sign. Gathered once from the report's
 // inputs and model, so the text and HTML renderings state the same things:
-//  - its number: unique per session and stable across re-renders (derived from the session's
-//    name and its recorded calibration, never from the time of rendering);
+//  - its number: the lab's once the session is published to a lab's store (unique lab-wide,
+//    ReportMeta::certificate_number, docs/lab.md); before, unique per session and stable across
+//    re-renders (derived from the session's name and its recorded calibration, never from the
+//    time of rendering);
 //  - the method, the equipment with identifications, the ambient conditions recorded;
 //  - the results with their expanded uncertainty (the budget's), rounded to it (two
 //    significant digits of U), each in its forms: offset in counts, m/s^2 and mg, scale in
@@ -35,7 +37,7 @@ struct CertificateResult {
 };
 
 struct Certificate {
-  std::string number;               // "ACC-<session>-<8 hex>"
+  std::string number;               // the lab's ("LAB-000042"), else "ACC-<session>-<8 hex>"
   bool simulated = false;           // the samples came from the virtual bench
   std::string method;               // in words
   std::vector<EquipmentItem> equipment;
@@ -43,6 +45,7 @@ struct Certificate {
   std::vector<CertificateResult> results;
   bool has_budget = false;          // results carry U; else the 1-sigma of the fit alone
   std::string coverage;             // how U was obtained, one paragraph
+  std::string limited_by;           // which uncertainty dominates, one paragraph (limited_by_text.h)
   std::vector<std::string> not_stated;  // reference quantities without a stated uncertainty
   std::vector<std::string> traceability;  // one line per reference
   std::string decision_rule;

@@ -79,6 +79,7 @@ std::string CertificateResultsHtml(const ReportModel& m) {
                        r.held ? "&ndash;" : DofText(r.effective_dof));
   }
   out += "</table>\n<p class=\"note\">" + Typo(c.coverage) + "</p>\n";
+  out += "<p class=\"note\">" + Typo(c.limited_by) + "</p>\n";
   if (!c.not_stated.empty()) {
     std::string names;
     for (const std::string& n : c.not_stated) names += (names.empty() ? "" : ", ") + E(n);

@@ -31,6 +31,7 @@ std::string CertificateResultsText(const ReportModel& m, TextWrapper wrap) {
                          DofText(r.effective_dof));
   }
   out += "\n" + wrap("  ", c.coverage, 2);
+  out += "\n" + wrap("  ", c.limited_by, 2);
   if (!c.not_stated.empty())
     out += wrap("  Not stated (not in U): ", fmt::format("{}: the procedure's [equipment] gives no "
                                                         "uncertainty for it.", fmt::join(c.not_stated, ", ")), 4);

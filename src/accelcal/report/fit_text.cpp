@@ -4,8 +4,11 @@
 #include <cmath>
 
 #include <fmt/core.h>
+#include <fmt/format.h>
 
 #include "accelcal/base/safe_text.h"
+#include "accelcal/report/limit_checks.h"
+#include "accelcal/report/uncertainty_text.h"
 
 namespace accelcal {
 namespace {
@@ -64,6 +67,26 @@ std::string FormatFitReport(const Calibration& cal, const FitSummary& summary) {
       extra += "warning: " + w + "\n";
   for (const UncertaintyLimit& l : cal.limited_by) extra += "the calibration is " + l.words + "\n";
   return "\n" + summary.FullReport() + extra + "\ncaptures:\n" + FormatCaptureTable(cal.captures);
+}
+
+std::string FormatExpandedResults(const Calibration& cal) {
+  std::string out;
+  if (!cal.budget)
+    out = "results +- U = 2 x the fit's 1-sigma (k = 2; type A alone: no uncertainty budget):\n";
+  else if (cal.budget->not_stated.empty())
+    out = "results +- U (k = 2, about 95 %), as the certificate states them:\n";
+  else
+    out = fmt::format("results +- U (k = 2, about 95 %) of the fit and the gravity's uncertainty; not\n"
+                      "in U, not stated here: {} (a wizard session's budget holds them):\n",
+                      fmt::join(cal.budget->not_stated, ", "));
+  const auto value = cal.model.ToVector();
+  for (int i = 0; i < kNumBaseParameters; ++i) {
+    const double u = CertificateExpandedUncertainty(cal, i);
+    const RoundedResult r = RoundToUncertainty(value(i), u);
+    out += fmt::format("  {:<8} {:>14} {:<10} {}\n", ParameterName(i), r.value,
+                       std::isnan(u) ? "(held)" : "+- " + r.uncertainty, ParameterUnit(i));
+  }
+  return out;
 }
 
 }  // namespace accelcal

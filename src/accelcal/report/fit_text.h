@@ -22,4 +22,9 @@ std::string FormatCaptureTable(const std::vector<CalibrationCapture>& captures);
 // conditioning, warnings) followed by the capture table.
 std::string FormatFitReport(const Calibration& cal, const FitSummary& summary);
 
+// The nine results with their expanded uncertainty U (k = 2) as a certificate of `cal` states
+// them (limit_checks.h: the budget's U, else twice the fit's 1-sigma, said so), each rounded to
+// two significant digits of U, and what U does not hold.
+std::string FormatExpandedResults(const Calibration& cal);
+
 }  // namespace accelcal

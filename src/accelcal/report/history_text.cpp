@@ -8,19 +8,9 @@
 #include <fmt/ranges.h>
 
 #include "accelcal/base/sensor_model.h"
+#include "accelcal/base/utc_time.h"
 
 namespace accelcal {
-
-namespace {
-
-// "2025-03-01T14:05:09.123Z" -> "2025-03-01 14:05:09"
-std::string ShortDate(const std::string& iso) {
-  std::string d = iso.substr(0, 19);
-  if (d.size() > 10 && d[10] == 'T') d[10] = ' ';
-  return d;
-}
-
-}  // namespace
 
 std::string FormatHistoryText(const DeviceHistory& h) {
   std::string t = fmt::format("device {}: {} calibration(s) in {}", h.device, h.entries.size(), h.dir);
@@ -29,7 +19,7 @@ std::string FormatHistoryText(const DeviceHistory& h) {
   t += fmt::format("\nmoves are since the previous calibration, in units and in sigmas of the combined "
                    "1-sigma; over {} sigmas: changed\n", kChangedSigmas);
   for (const HistoryEntry& e : h.entries) {
-    t += fmt::format("\n{} UTC  session {}\n", ShortDate(e.session.created_utc), e.session.name);
+    t += fmt::format("\n{} UTC  session {}\n", ShortUtc(e.session.created_utc), e.session.name);
     t += fmt::format("  {:<9} {:>16} {:>12} {:>14} {:>9}  {}\n", "parameter", "value", "1-sigma", "moved",
                      "sigmas", "unit");
     const auto p = e.calibration.model.ToVector(), s = e.calibration.uncertainty.ToVector();

@@ -102,7 +102,7 @@ std::string Header(const ReportModel& m) {
                                                                                       : "none";
   std::string out = "<header class=\"cert\"><div><h1>Accelerometer calibration report</h1>"
                     "<div class=\"sub\">Three-axis MEMS accelerometer &middot; nine-parameter model "
-                    "(bias, scale, misalignment) with 1&sigma; uncertainties</div></div>\n";
+                    "(bias, scale, misalignment) with their expanded uncertainty</div></div>\n";
   out += fmt::format("<div class=\"verdict {}\">{}<small>against the procedure&rsquo;s limits</small></div></header>\n",
                      cls, E(std::string(VerdictToString(m.verdict))));
   out += "<table class=\"ident\">\n";
@@ -120,6 +120,7 @@ std::string Header(const ReportModel& m) {
   out += Row("Temperature range", std::isfinite(m.temp_min_c)
                                       ? fmt::format("{:.2f} &ndash; {:.2f} &deg;C", m.temp_min_c, m.temp_max_c)
                                       : OrNot(""));
+  for (const std::string& h : m.meta.history) out += Row("History", E(h));
   out += "</table>\n";
   return out;
 }
@@ -146,18 +147,24 @@ std::string Limits(const ReportModel& m) {
   out += Completeness(m);
   if (m.checks.empty()) return out + "<p class=\"absent\">The procedure states no pass/fail limits.</p></section>\n";
   out += "<table><tr><th>Check</th><th class=\"n\">Measured</th><th class=\"n\">Limit</th><th>Result</th></tr>\n";
-  for (const LimitCheck& c : m.checks)
-    out += fmt::format("<tr><td>{}{}</td><td class=\"n\">{}</td><td class=\"n\">{} {}</td><td class=\"{}\">{}</td></tr>\n",
-                       E(c.what), c.unit.empty() ? "" : " (" + Unit(c.unit) + ")", Num(c.value, "{:.4g}"),
+  for (const LimitCheck& c : m.checks) {
+    // The parameter judged, how, and (not met) why and what would bring it within.
+    std::string note = c.parameter.empty() ? "" : " <span class=\"note\">(" + E(c.parameter) + ")</span>";
+    if (!c.rule.empty()) note += "<br><span class=\"note\">" + E(c.rule) + "</span>";
+    if (!c.why.empty()) note += "<br><span class=\"fail\">" + E(c.why) + "</span>";
+    out += fmt::format("<tr><td>{}{}{}</td><td class=\"n\">{}</td><td class=\"n\">{} {}</td><td class=\"{}\">{}</td></tr>\n",
+                       E(c.what), c.unit.empty() ? "" : " (" + Unit(c.unit) + ")", note, Num(c.value, "{:.4g}"),
                        c.at_least ? "&ge;" : "&le;", Num(c.limit, "{:.4g}"), c.pass ? "pass" : "fail",
                        c.pass ? "PASS" : "FAIL");
+  }
   return out + "</table></section>\n";
 }
 
 std::string Parameters(const ReportModel& m) {
   std::string out = "<section><h2>2. Calibration parameters</h2>\n"
                     "<p class=\"note\">Model raw = K T<sup>&minus;1</sup> a + b: bias b in counts, scale K in "
-                    "counts per m/s&sup2;, misalignment angles of T in rad. Uncertainties are 1&sigma;.</p>\n"
+                    "counts per m/s&sup2;, misalignment angles of T in rad. Uncertainties are the fit&rsquo;s "
+                    "1&sigma; (type A); the certificate&rsquo;s U above holds every source.</p>\n"
                     "<table><tr><th>Parameter</th><th class=\"n\">Value</th><th class=\"n\">1&sigma;</th>"
                     "<th>Unit</th></tr>\n";
   for (const ReportParameter& p : m.parameters)

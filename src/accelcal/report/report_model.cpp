@@ -11,6 +11,8 @@
 #include "accelcal/base/sensor_model.h"
 #include "accelcal/session/session_inputs.h"
 #include "accelcal/calibration/diagnosis/effect.h"
+#include "accelcal/report/completeness.h"
+#include "accelcal/report/limit_checks.h"
 
 namespace accelcal {
 namespace {
@@ -29,7 +31,7 @@ std::vector<ReportParameter> Parameters(const Calibration& cal) {
   const Eigen::Matrix<double, kNumBaseParameters, 1> sigma = cal.uncertainty.ToVector();
   for (int i = 0; i < kNumBaseParameters; ++i)
     out.push_back({std::string(ParameterName(i)), std::string(ParameterUnit(i)), value(i), sigma(i),
-                   cal.FindHeld(i) != nullptr});
+                   cal.FindHeld(i) != nullptr, CertificateExpandedUncertainty(cal, i)});
   return out;
 }
 
@@ -85,51 +87,6 @@ ReportCapture MakeRow(const CalibrationCapture& rec, const std::vector<ReportCap
   return row;
 }
 
-void AddCheck(ReportModel* m, std::string what, std::string unit, double value, double limit,
-              bool at_least) {
-  if (!std::isfinite(limit)) return;
-  LimitCheck c{std::move(what), std::move(unit), value, limit, at_least, false};
-  c.pass = std::isfinite(value) && (at_least ? value >= limit : value <= limit);
-  m->checks.push_back(c);
-}
-
-void CheckLimits(const ProcedureLimits& l, const Calibration& cal, ReportModel* m) {
-  if (l.min_captures > 0)
-    AddCheck(m, "captures used by the fit", "", m->captures_used, l.min_captures, true);
-  AddCheck(m, "residual RMS", "m/s^2", m->residual_rms_mps2, l.max_residual_rms_mps2, false);
-  AddCheck(m, "residual RMS / noise RMS", "", m->residual_rms_mps2 / m->noise_rms_mps2,
-           l.max_residual_rms_noise, false);
-  AddCheck(m, "largest bias 1-sigma", "counts", cal.uncertainty.bias_counts.maxCoeff(),
-           l.max_bias_sigma_counts, false);
-  const Eigen::Vector3d rel = cal.uncertainty.scale_counts_per_mps2.cwiseQuotient(cal.model.scale_counts_per_mps2);
-  AddCheck(m, "largest scale 1-sigma", "ppm", rel.maxCoeff() * 1e6, l.max_scale_sigma_ppm, false);
-  // Held angles (a reduced model) have no 1-sigma: judged are the fitted ones, if any.
-  double mis = kNaN;
-  for (double s : {cal.uncertainty.a_yz_rad, cal.uncertainty.a_zy_rad, cal.uncertainty.a_zx_rad})
-    if (!std::isnan(s)) mis = std::isnan(mis) ? s : std::max(mis, s);
-  if (!std::isnan(mis) || cal.held.empty())
-    AddCheck(m, "largest misalignment 1-sigma", "rad", mis, l.max_misalignment_sigma_rad, false);
-}
-
-std::vector<std::string> IncompleteReasons(const std::optional<SessionGaps>& gaps, const Calibration& cal) {
-  std::vector<std::string> out;
-  if (gaps) {
-    for (const SessionGaps::Step& s : gaps->steps)
-      if (s.required) out.push_back(fmt::format("required step '{}' {}", s.title, s.why));
-    for (const std::string& what : gaps->identification)
-      out.push_back(fmt::format("no {} recorded (the procedure requires it)", what));
-  }
-  std::vector<std::string> names;
-  for (const CalibrationEffect& e : cal.effects) names.push_back(e.name);
-  bool turntable = false;
-  for (const CalibrationCapture& c : cal.captures) turntable = turntable || (c.used && c.kind == CaptureKind::kTurntable);
-  const bool found = gaps && !gaps->gravity_ambiguity.empty();
-  if (found || (turntable && !GravityAmbiguityNote(cal.gravity, names).empty()))
-    out.push_back("gravity not established: the diagnosis found a turntable speed or radius scale "
-                  "while gravity is the standard value (a gravity error looks the same)");
-  return out;
-}
-
 }  // namespace
 
 std::vector<std::string> ParameterNotes(const std::vector<std::string>& effect_names) {
@@ -166,18 +123,26 @@ bool TakesGravityErrorForItsOwn(const std::string& effect_name) {
 }
 
 std::string GravityAmbiguityNote(const GravitySpec& gravity, const std::vector<std::string>& effect_names) {
-  if (!gravity.is_standard()) return "";
   std::vector<std::string> found;
   for (const std::string& n : effect_names)
     if (TakesGravityErrorForItsOwn(n)) found.push_back(n);
   if (found.empty()) return "";
+  if (gravity.is_standard())
+    return fmt::format(
+        "{} found while gravity is the standard value, not this place's: a local gravity other "
+        "than 9.80665 m/s^2 gives the same signature (static and turntable captures see only "
+        "w^2 r / g), so the data cannot tell a gravity error from a speed or radius error. Check "
+        "both: the local gravity (a measured value, or the place's latitude and altitude) and the "
+        "turntable (its speed with a tachometer, its radius with a ruler).",
+        fmt::join(found, " and "));
+  // Whatever the gravity's source: a wrong place typed, a measured value mistyped, an anomaly.
   return fmt::format(
-      "{} found while gravity is the standard value, not this place's: a local gravity other "
-      "than 9.80665 m/s^2 gives the same signature (static and turntable captures see only "
-      "w^2 r / g), so the data cannot tell a gravity error from a speed or radius error. Check "
-      "both: the local gravity (a measured value, or the place's latitude and altitude) and the "
-      "turntable (its speed with a tachometer, its radius with a ruler).",
-      fmt::join(found, " and "));
+      "{} found: a local gravity other than the one used ({}) gives the same signature (static "
+      "and turntable captures see only w^2 r / g), so the data cannot tell a gravity error from a "
+      "speed or radius error. Check both: the local gravity (the place typed, or a measured value) "
+      "and the turntable (its speed with a tachometer, its radius with a ruler); a verified "
+      "turntable leaves the gravity to blame.",
+      fmt::join(found, " and "), gravity.Describe());
 }
 
 ReportCaptureStats ReportStatsOf(const Capture& capture) { return {capture.id, capture.stats()}; }
@@ -235,13 +200,12 @@ ReportModel BuildReportModel(const ReportInputs& in) {
   m.allan = in.allan;
   bool all_pass = true;
   if (in.limits && in.limits->Any()) {
-    CheckLimits(*in.limits, cal, &m);
+    m.checks = CheckProcedureLimits(*in.limits, in, m);
     all_pass = std::all_of(m.checks.begin(), m.checks.end(), [](const LimitCheck& c) { return c.pass; });
     m.verdict = all_pass ? Verdict::kPass : Verdict::kFail;
   }
   m.gaps = in.gaps;
-  m.incomplete = in.damaged_captures;
-  for (std::string& why : IncompleteReasons(in.gaps, cal)) m.incomplete.push_back(std::move(why));
+  m.incomplete = IncompleteReasons(in, m.checks);
   if (all_pass && !m.incomplete.empty()) m.verdict = Verdict::kIncomplete;
   m.budget = cal.budget;
   m.bench_time = in.bench_time;

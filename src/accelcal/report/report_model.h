@@ -39,6 +39,12 @@ struct ReportMeta {
   std::string session_path;
   std::string procedure;      // the procedure's title
   std::string source;         // the sample source ("sim", "serial:/dev/ttyUSB0")
+  // The lab's certificate number (assigned when the session was published to the lab's store,
+  // docs/lab.md); empty: the certificate carries the session's own (certificate.h).
+  std::string certificate_number;
+  // A session fitted again with corrected inputs (`accelcal refit`): each refit with what it
+  // changed, and that the earlier calibrations are kept; empty for a session fitted once.
+  std::vector<std::string> history;
 };
 
 // One axis of an Allan-deviation analysis (the shape of allan.json, docs/certificate.md, "Reports").
@@ -81,8 +87,10 @@ struct ReportCapture {
 struct ReportParameter {
   std::string name, unit;
   double value = kNaN;
-  double sigma = kNaN;  // 1-sigma; NaN when held
+  double sigma = kNaN;  // the fit's 1-sigma (type A); NaN when held
   bool held = false;    // held at `value`, not fitted (a reduced model: Calibration::held says why)
+  // U as the certificate states it (limit_checks.h): the budget's, else 2 sigma; NaN when held.
+  double expanded = kNaN;
 };
 
 // The residuals of every capture under one model: the base model, then after each adopted effect.
@@ -104,28 +112,38 @@ struct ReportEffect {
 };
 
 struct LimitCheck {
-  std::string what;      // "residual RMS"
+  std::string what;      // "residual RMS", "U (k = 2) of the scales", "scales from nominal"
   std::string unit;      // "m/s^2"
-  double value = kNaN;   // measured
-  double limit = kNaN;
+  double value = kNaN;   // measured: the value, the U, or the largest deviation from nominal
+  double limit = kNaN;   // the limit; for a guard band, the acceptance limit (tolerance - U)
   bool at_least = false; // true: value >= limit passes; false: value <= limit passes
   bool pass = false;
+  // The parameter judged (the worst of its group: "scale_y"); empty for the fit's checks.
+  std::string parameter;
+  // How it was judged, when not plainly: "tolerance 7.5 % narrowed by U = 0.05 % (guard band)".
+  std::string rule;
+  // Not met: why, and what would bring it within (the dominant parts of U and the uncertainty
+  // each would need: limit_checks.h); empty when met.
+  std::string why;
+  bool on_uncertainty = false;  // a limit on U (the calibration cannot show conformity)
 };
 
-// PASS: every limit met and nothing required missing. FAIL: a limit not met. INCOMPLETE: the
-// limits met (or none stated), but a capture damaged in the session file, a required step, a
-// required identification or the local
-// gravity (a turntable speed or radius scale found while gravity is the standard value: the
-// data cannot tell the two apart) is missing. NO LIMITS STATED: complete, but nothing to judge.
+// PASS: every limit met and nothing required missing. FAIL: a limit not met (a limit on U not
+// met: the calibration cannot show conformity). INCOMPLETE: the limits met (or none stated),
+// but something the verdict stands on is missing (completeness.h): a capture damaged in the
+// session file, a required step or its capture (left out by the fit too), a required
+// identification, the equipment's identification, the uncertainty of a reference quantity the
+// limits on U need, or which of gravity and turntable is right (a speed or radius scale found:
+// the data cannot tell the two apart). NO LIMITS STATED: complete, but nothing to judge.
 enum class Verdict { kPass, kFail, kNoLimits, kIncomplete };
 std::string_view VerdictToString(Verdict v);  // "PASS", "FAIL", "NO LIMITS STATED", "INCOMPLETE"
 
 // The effects whose size a gravity error would take for its own (only w^2 r / g is seen; the
 // effect says so: Effect::TakesGravityErrorForItsOwn). False for an unknown name.
 bool TakesGravityErrorForItsOwn(const std::string& effect_name);
-// Empty, or (when `gravity` is the standard value and `effect_names` hold a speed or radius
-// effect) what the operator must know: a gravity error gives the same signature, and both
-// checks to make.
+// Empty, or (when `effect_names` hold a speed or radius effect, whatever the gravity's source)
+// what the operator must know: a gravity error gives the same signature, the gravity that was
+// used, and both checks to make.
 std::string GravityAmbiguityNote(const GravitySpec& gravity, const std::vector<std::string>& effect_names);
 
 struct ReportModel {
@@ -198,13 +216,15 @@ struct ReportInputs {
   // and traceability; empty when not known.
   std::vector<EquipmentItem> equipment;
   // The procedure's nominal zero-g level, counts: the certificate states the offset from it in
-  // m/s^2 and mg (from 0 counts when absent).
+  // m/s^2 and mg (from 0 counts when absent); the tolerance on the biases is around it.
   std::optional<Eigen::Vector3d> nominal_bias_counts;
   // A wizard session's welcome answer to the equipment question, as typed (empty: none); the
   // caller that knows the procedure applies it to `equipment` (app/wizard/equipment_input.h).
   std::string equipment_answer;
   // The session's bench time (BenchTimeFromInputs); its reached U is filled from the budget.
   std::optional<ReportBenchTime> bench_time;
+  // The procedure's nominal scale, counts/(m/s^2): the tolerance on the scales is around it.
+  std::optional<Eigen::Vector3d> nominal_scale_counts_per_mps2;
 };
 
 // Gathers everything; derives nothing the calibration already states.

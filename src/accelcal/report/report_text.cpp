@@ -97,6 +97,7 @@ std::string Header(const ReportModel& m) {
   out += Field("Sample source", OrNot(m.meta.source));
   out += Field("Fitted from", OrNot(m.fit_source));
   out += Field("Result", std::string(VerdictToString(m.verdict)));
+  for (const std::string& h : m.meta.history) out += Field("History", h);
   return out;
 }
 
@@ -216,10 +217,15 @@ std::string NoiseAndDrift(const ReportModel& m) {
 std::string Limits(const ReportModel& m) {
   if (m.checks.empty()) return "  The procedure states no pass/fail limits.\n";
   std::string out = "  Check                                 Measured        Limit  Result\n";
-  for (const LimitCheck& c : m.checks)
-    out += fmt::format("  {:<34} {:>11} {} {:>11}  {}\n", c.unit.empty() ? c.what : c.what + " (" + c.unit + ")",
-                       Num(c.value, "{:.4g}"), c.at_least ? ">=" : "<=", Num(c.limit, "{:.4g}"),
-                       c.pass ? "PASS" : "FAIL");
+  for (const LimitCheck& c : m.checks) {
+    const std::string what = c.unit.empty() ? c.what : c.what + " (" + c.unit + ")";
+    // A long name on its own line, the figures on the next.
+    if (what.size() > 34) out += "  " + what + "\n";
+    out += fmt::format("  {:<34} {:>11} {} {:>11}  {}\n", what.size() > 34 ? "" : what, Num(c.value, "{:.4g}"),
+                       c.at_least ? ">=" : "<=", Num(c.limit, "{:.4g}"), c.pass ? "PASS" : "FAIL");
+    if (!c.parameter.empty()) out += Wrap("    ", fmt::format("{}: {}", c.parameter, c.rule), 6);
+    if (!c.why.empty()) out += Wrap("    not met: ", Clean(c.why), 6);
+  }
   out += fmt::format("\n  Overall: {}\n", VerdictToString(m.verdict));
   return out;
 }
@@ -251,7 +257,8 @@ std::string Render(const ReportModel& m) {
   out += CaptureTable(m);
   out += Heading(2, "Parameters (1-sigma uncertainties)");
   out += "  raw = K T^-1 a + b: bias b in counts, scale K in counts/(m/s^2),\n"
-         "  misalignment angles of T in rad.\n\n";
+         "  misalignment angles of T in rad. The 1-sigma is the fit's own (type A); the\n"
+         "  certificate's U (section A) holds every source of the budget.\n\n";
   out += ParameterTable(m.parameters);
   for (const std::string& note : m.parameter_notes) out += "\n" + Wrap("  ", note, 2);
   out += Heading(3, "Residuals");

@@ -1,5 +1,6 @@
 #include "accelcal/session/equipment.h"
 
+#include <cctype>
 #include <cmath>
 
 #include <fmt/core.h>
@@ -43,6 +44,29 @@ ReferenceUncertainties ToReferenceUncertainties(const std::vector<EquipmentItem>
   r.table_tilt_rad = u(EquipmentRole::kLevel);
   r.prism_squareness_rad = u(EquipmentRole::kPrism);
   return r;
+}
+
+bool IsPlaceholderId(const std::string& identification) {
+  std::string lower;
+  for (char c : identification)
+    if (!std::isspace(static_cast<unsigned char>(c))) lower += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (lower.empty() || lower.find("example") != std::string::npos) return true;
+  for (const char* placeholder : {"tbd", "?", "-", "none", "n/a", "na", "xxx"})
+    if (lower == placeholder) return true;
+  return false;
+}
+
+bool IsVerified(const EquipmentItem& item) {
+  return !IsPlaceholderId(item.identification) && !item.calibration.empty();
+}
+
+std::vector<std::string> UnidentifiedEquipment(const std::vector<EquipmentItem>& items) {
+  std::vector<std::string> out;
+  for (const EquipmentItem& item : items)
+    if (IsPlaceholderId(item.identification))
+      out.push_back(fmt::format("{} {}", InfoOf(item.role).key,
+                                item.identification.empty() ? "(no id)" : item.identification));
+  return out;
 }
 
 std::string DescribeUncertainty(const EquipmentItem& item) {

@@ -43,7 +43,18 @@ struct EquipmentItem {
   // Standard uncertainty (1-sigma) of its quantity, SI (see the header); NaN: not stated.
   double standard_uncertainty = kNaN;
   std::string traceability;    // what it is traced to, as the procedure states it
+  // The item's own calibration or verification (certificate number, date): what makes its
+  // stated uncertainty a verified one. Empty: not stated.
+  std::string calibration;
 };
+
+// An identification that identifies nothing: empty, or a placeholder (one holding "example",
+// as the shipped procedures' ids do, or "TBD", "?", "-", "none", "n/a").
+bool IsPlaceholderId(const std::string& identification);
+// Identified (IsPlaceholderId false) and with its calibration stated.
+bool IsVerified(const EquipmentItem& item);
+// The items not identified, as "ruler RUL-01 (example)", "level (no id)"; empty when all are.
+std::vector<std::string> UnidentifiedEquipment(const std::vector<EquipmentItem>& items);
 
 // The item of `role` in `items`; nullptr when absent.
 const EquipmentItem* FindEquipment(const std::vector<EquipmentItem>& items, EquipmentRole role);

@@ -35,7 +35,10 @@ class MemoryJournal final : public SessionJournal {
   void RecordStepDone(const std::string& step_id, const std::string& outcome) override {
     done_[step_id] = outcome;
   }
-  void RecordResult(const std::string& calibration_json) override { result_ = calibration_json; }
+  void RecordResult(const std::string& calibration_json) override {
+    result_ = calibration_json;
+    ++results_;
+  }
   void AppendRecordChunk(const std::string& step_id, const RecordChunk& chunk) override {
     CheckRecordChunk(step_id, chunk, RecordSummaryOf(step_id));
     if (records_.count(step_id) == 0) record_order_.push_back(step_id);
@@ -46,6 +49,7 @@ class MemoryJournal final : public SessionJournal {
   SessionInputs Inputs() const override { return inputs_; }
   std::map<std::string, std::string> DoneSteps() const override { return done_; }
   std::optional<std::string> Result() const override { return result_; }
+  int ResultCount() const override { return results_; }
   RecordSummary RecordSummaryOf(const std::string& step_id) const override {
     RecordSummary s;
     if (auto r = records_.find(step_id); r != records_.end())
@@ -64,6 +68,7 @@ class MemoryJournal final : public SessionJournal {
   std::map<std::string, std::map<std::string, std::string>> inputs_;
   std::map<std::string, std::string> done_;
   std::optional<std::string> result_;
+  int results_ = 0;
   std::map<std::string, std::vector<RecordChunk>> records_;
   std::vector<std::string> record_order_;
   bool done_session_ = false;

@@ -55,17 +55,44 @@ struct ProcedureStep {
   static constexpr double kDefaultRecordChunkS = 10.0;
 };
 
+// How a value is judged against its tolerance (ILAC-G8:09/2019, "Guidelines on Decision Rules
+// and Statements of Conformity"): the procedure chooses ([limits] decision_rule).
+enum class DecisionRule {
+  kSimpleAcceptance,  // 4.2.1: the value as found within the tolerance passes
+  kGuardBand,         // 4.2.2: within the tolerance narrowed by w = U (the acceptance limit)
+};
+// "simple" / "guard_band" (the file's words), and in words for the certificate.
+std::string_view DecisionRuleKey(DecisionRule rule);
+std::optional<DecisionRule> DecisionRuleFromKey(std::string_view key);
+
 // Pass/fail limits of the calibration, checked by the report ([limits] in the procedure file).
 // NaN (or 0 for min_captures): no limit stated. Units in the names.
+//
+// The uncertainty limits are on U, the expanded uncertainty (k = 2, about 95 %) of the
+// certificate's budget (type A and type B): the verdict is decided on the uncertainty the
+// certificate prints. Files of the first format stated them on the fit's 1-sigma
+// (max_bias_sigma_counts, max_scale_sigma_ppm, max_misalignment_sigma_rad); such a key is read as
+// the limit on U = 2 x its value (`converted` says so), and is then compared with the whole
+// budget's U, not the fit's 1-sigma alone.
 struct ProcedureLimits {
   double max_residual_rms_mps2 = kNaN;      // RMS of the final fit's residuals
   double max_residual_rms_noise = kNaN;     // same, over the RMS of the captures' own sigma
-  double max_bias_sigma_counts = kNaN;      // largest 1-sigma of bias_x/y/z
-  double max_scale_sigma_ppm = kNaN;        // largest 1-sigma of scale_i over scale_i, ppm
-  double max_misalignment_sigma_rad = kNaN; // largest 1-sigma of a_yz, a_zy, a_zx
+  double max_bias_U_counts = kNaN;          // largest U (k = 2) of bias_x/y/z, counts
+  double max_scale_U_ppm = kNaN;            // largest U (k = 2) of scale_i over scale_i, ppm
+  double max_misalignment_U_rad = kNaN;     // largest U (k = 2) of a_yz, a_zy, a_zx, rad
+  // Tolerances on the values (a datasheet's range), judged by `decision_rule`:
+  double bias_tolerance_counts = kNaN;      // |bias_i - nominal zero-g level| at most, counts
+  double scale_tolerance_percent = kNaN;    // |scale_i / nominal scale - 1| at most, %
+  double misalignment_tolerance_rad = kNaN; // |a_yz|, |a_zy|, |a_zx| at most, rad
   int min_captures = 0;                     // captures used by the fit
+  DecisionRule decision_rule = DecisionRule::kSimpleAcceptance;
+  // A first-format key read by the stated rule, in words ("max_scale_sigma_ppm = 2000 (1-sigma)
+  // read as max_scale_U_ppm = 4000 (U, k = 2)"); empty when none.
+  std::vector<std::string> converted;
 
   bool Any() const;  // at least one limit stated
+  bool AnyOnUncertainty() const;  // a limit on U is stated
+  bool AnyTolerance() const;      // a tolerance on the values is stated
 };
 
 // What the session must know before it calibrates ([requirements] in the procedure file).

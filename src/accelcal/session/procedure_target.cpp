@@ -22,23 +22,23 @@ UncertaintyTarget ToUncertaintyTarget(const ProcedureTarget& target, const Senso
 }
 
 TargetConflict CheckTargetAgainstLimits(const ProcedureTarget& target, const ProcedureLimits& limits,
-                                     const SensorModel& nominal) {
+                                        const SensorModel& nominal) {
   const UncertaintyTarget t = ToUncertaintyTarget(target, nominal);
   // The bias limit is in counts; compare at the largest scale (the mg target's loosest count).
-  const double bias_sigma_counts = t.bias_counts / 2.0 * nominal.scale_counts_per_mps2.maxCoeff() /
-                                   nominal.scale_counts_per_mps2.minCoeff();
-  if (std::isfinite(t.bias_counts) && bias_sigma_counts > limits.max_bias_sigma_counts)
-    return {"bias_mg", fmt::format("[target] bias_mg = {:g} allows a 1-sigma of {:.3g} counts, above [limits] "
-                       "max_bias_sigma_counts = {:g}: the plan would aim at a bias the certificate fails",
-                       target.bias_mg, bias_sigma_counts, limits.max_bias_sigma_counts)};
-  if (std::isfinite(t.scale_relative) && target.scale_ppm / 2.0 > limits.max_scale_sigma_ppm)
-    return {"scale_ppm", fmt::format("[target] scale_ppm = {:g} allows a 1-sigma of {:g} ppm, above [limits] "
-                       "max_scale_sigma_ppm = {:g}: the plan would aim at a scale the certificate fails",
-                       target.scale_ppm, target.scale_ppm / 2.0, limits.max_scale_sigma_ppm)};
-  if (std::isfinite(t.misalignment_rad) && t.misalignment_rad / 2.0 > limits.max_misalignment_sigma_rad)
-    return {"misalignment_mrad", fmt::format("[target] misalignment_mrad = {:g} allows a 1-sigma of {:g} rad, above [limits] "
-                       "max_misalignment_sigma_rad = {:g}: the plan would aim at an angle the certificate fails",
-                       target.misalignment_mrad, t.misalignment_rad / 2.0, limits.max_misalignment_sigma_rad)};
+  const double bias_U_counts =
+      t.bias_counts * nominal.scale_counts_per_mps2.maxCoeff() / nominal.scale_counts_per_mps2.minCoeff();
+  if (std::isfinite(t.bias_counts) && bias_U_counts > limits.max_bias_U_counts)
+    return {"bias_mg", fmt::format("[target] bias_mg = {:g} allows a U of {:.3g} counts, above [limits] "
+                       "max_bias_U_counts = {:g}: the plan would aim at a bias the certificate fails",
+                       target.bias_mg, bias_U_counts, limits.max_bias_U_counts)};
+  if (std::isfinite(t.scale_relative) && target.scale_ppm > limits.max_scale_U_ppm)
+    return {"scale_ppm", fmt::format("[target] scale_ppm = {:g} is above [limits] max_scale_U_ppm = {:g}: "
+                       "the plan would aim at a scale the certificate fails",
+                       target.scale_ppm, limits.max_scale_U_ppm)};
+  if (std::isfinite(t.misalignment_rad) && t.misalignment_rad > limits.max_misalignment_U_rad)
+    return {"misalignment_mrad", fmt::format("[target] misalignment_mrad = {:g} is {:g} rad, above [limits] "
+                       "max_misalignment_U_rad = {:g}: the plan would aim at an angle the certificate fails",
+                       target.misalignment_mrad, t.misalignment_rad, limits.max_misalignment_U_rad)};
   return {};
 }
 

@@ -3,7 +3,7 @@
 // what the planner (calibration/capture_plan.h) needs to turn it into capture lengths: the
 // longest capture the procedure allows and the bench's handling time.
 //
-// A target is not a limit: [limits] says what the certificate accepts (1-sigma), [target] what
+// A target is not a limit: [limits] says what the certificate accepts (U, k = 2), [target] what
 // the plan aims for; a target looser than the limits would plan a session the certificate
 // fails, and is refused (CheckTargetAgainstLimits).
 //
@@ -40,8 +40,8 @@ struct TargetConflict {
   std::string message;
 };
 
-// No conflict (empty key) when every stated target is within the limits' 1-sigma (U/2 <= limit);
-// else the first that is not.
+// No conflict (empty key) when every stated target is within the limits (both U, k = 2); else the
+// first that is not.
 TargetConflict CheckTargetAgainstLimits(const ProcedureTarget& target, const ProcedureLimits& limits,
                                      const SensorModel& nominal);
 

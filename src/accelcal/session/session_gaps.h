@@ -1,6 +1,6 @@
 // What a wizard session lacks that its procedure asked for: the steps skipped or whose capture
-// was left out, the identification left empty, the gravity the data cannot tell from a bench
-// effect. Collected by the wizard (app/wizard/session_gaps.h), recorded beside the session's
+// was left out (by a lowered noise floor or by the fit), the identification left empty, the
+// gravity the data cannot tell from a bench effect. Collected by the wizard (app/wizard/session_gaps.h), recorded beside the session's
 // calibration (io/session_result_file.h) and judged by the report (report/report_model.h: a
 // required gap keeps the verdict from PASS). A calibration file alone knows nothing of it.
 #pragma once
@@ -20,8 +20,8 @@ struct SessionGaps {
   };
   std::vector<Step> steps;                  // in procedure order
   std::vector<std::string> identification;  // required and empty: "device serial", "operator"
-  // The diagnosis found a turntable speed or radius scale while gravity was the standard value
-  // (adopted or declined: the base model then carries the same error): its note, else empty.
+  // The diagnosis found a turntable speed or radius scale (adopted or declined: the base model
+  // then carries the same error in its scales): its note (GravityAmbiguityNote), else empty.
   std::string gravity_ambiguity;
 };
 

@@ -26,6 +26,9 @@ inline constexpr const char* kOperator = "operator";
 inline constexpr const char* kPlace = "place";
 inline constexpr const char* kGravity = "gravity";
 inline constexpr const char* kEquipment = "equipment";
+// Not a question: what the source's device held when the session began (a MAVLink vehicle's own
+// calibration and whether it was taken out of the readings), one fact per line.
+inline constexpr const char* kDeviceCalibration = "device_calibration";
 }  // namespace welcome_key
 
 // The welcome's answers as recorded; nullopt: not answered (yet).
@@ -47,13 +50,15 @@ WelcomeAnswers ReadWelcomeAnswers(const SessionInputs& inputs);
 
 // ---- the noise floor ------------------------------------------------------------------------
 
-// The noise floor's pseudo step: the floor measured (per axis, counts: "x y z"), and a floor the
-// captures lowered with the note that says why.
+// The noise floor's pseudo step: the floor measured (per axis, counts: "x y z"), a floor the
+// captures lowered with the note that says why, and, when the source's readings come in steps
+// as coarse as the floor, what that resolution means for it (in words).
 inline constexpr const char* kNoiseFloorStepId = "noise_floor";
 namespace noise_floor_key {
 inline constexpr const char* kStdCounts = "std_counts";
 inline constexpr const char* kLoweredStdCounts = "lowered_std_counts";
 inline constexpr const char* kLowered = "lowered";
+inline constexpr const char* kResolution = "resolution";
 }  // namespace noise_floor_key
 
 // ---- a turntable run ------------------------------------------------------------------------
@@ -88,5 +93,15 @@ inline constexpr const char* kCaptureS = "capture_s";
 inline constexpr const char* kSettleS = "settle_s";
 inline constexpr const char* kHandlingS = "handling_s";
 }  // namespace bench_key
+
+// ---- a write-back into the vehicle ----------------------------------------------------------
+
+// Recorded at the write-back step's id: the PARAM_SETs it offered (one per line) and, when the
+// technician said yes, what the vehicle held before, what was written and read back (or where
+// it stopped), one fact per line.
+namespace write_back_key {
+inline constexpr const char* kPlanned = "planned";
+inline constexpr const char* kOutcome = "outcome";
+}  // namespace write_back_key
 
 }  // namespace accelcal

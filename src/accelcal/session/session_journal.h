@@ -110,7 +110,8 @@ class SessionJournal {
                                  const std::string& superseded_step_id) = 0;
   // A step finished without a capture (leveling done, skipped, ...), with its outcome.
   virtual void RecordStepDone(const std::string& step_id, const std::string& outcome) = 0;
-  // The session's result (the calibration file's JSON). A later one replaces it.
+  // The session's result (the calibration file's JSON). A later one becomes the result; the
+  // earlier ones stay (a history: ResultCount; `accelcal refit`).
   // `calibration_json` is the calibration file's text (io/calibration_file.h writes and reads it;
   // the journal stores it as it is).
   virtual void RecordResult(const std::string& calibration_json) = 0;
@@ -130,6 +131,8 @@ class SessionJournal {
   virtual SessionInputs Inputs() const = 0;
   virtual std::map<std::string, std::string> DoneSteps() const = 0;  // step id -> outcome
   virtual std::optional<std::string> Result() const = 0;  // the latest RecordResult text
+  // How many results were recorded, the latest included (0: none).
+  virtual int ResultCount() const { return Result() ? 1 : 0; }
   // The record of `step_id` so far (an empty summary when it has none).
   virtual RecordSummary RecordSummaryOf(const std::string& step_id) const = 0;
   // Calls `visit` with each chunk of the record of `step_id`, in order (one chunk in memory at

@@ -7,6 +7,7 @@
 #include "accelcal/base/error.h"
 #include "accelcal/session/detail/capture_rows.h"
 #include "accelcal/session/detail/record_rows.h"
+#include "accelcal/session/detail/row_checksum.h"
 #include "accelcal/session/detail/session_lock.h"
 #include "accelcal/session/detail/session_schema.h"
 #include "accelcal/session/detail/sqlite_db.h"
@@ -226,6 +227,10 @@ std::optional<std::string> SessionStore::Result() const {
   return row.ColumnText(0);
 }
 
+int SessionStore::ResultCount() const {
+  return static_cast<int>(db_->QueryInt("SELECT count(*) FROM results"));
+}
+
 SessionInfo SessionStore::Info() const {
   SessionInfo info;
   info.path = path_;
@@ -240,11 +245,47 @@ SessionInfo SessionStore::Info() const {
   info.created_utc = row.ColumnText(5);
   info.updated_utc = row.ColumnText(6);
   info.state = StringToSessionState(row.ColumnText(7)).value_or(SessionState::kOpen);
+  // (A file older than version 6, read as it is, has neither.)
+  if (detail::HasColumn(*db_, "session", "uuid")) {
+    SqliteStatement uuid(*db_, "SELECT coalesce(uuid, '') FROM session WHERE id = 1");
+    if (uuid.Step()) info.uuid = uuid.ColumnText(0);
+  }
+  if (detail::HasTable(*db_, "lab_certificates"))
+    info.num_lab_certificates = static_cast<long>(db_->QueryInt("SELECT count(*) FROM lab_certificates"));
   info.num_captures = static_cast<long>(db_->QueryInt("SELECT count(*) FROM captures"));
   info.num_inputs = static_cast<long>(db_->QueryInt("SELECT count(*) FROM inputs"));
   info.num_done_steps = static_cast<long>(db_->QueryInt("SELECT count(*) FROM steps_done"));
   info.has_result = db_->QueryInt("SELECT count(*) FROM results") > 0;
   return info;
+}
+
+std::vector<LabCertificateMark> SessionStore::LabCertificates() const {
+  std::vector<LabCertificateMark> marks;
+  if (!detail::HasTable(*db_, "lab_certificates")) return marks;  // older than version 6
+  SqliteStatement rows(*db_, "SELECT sensor_index, certificate_number, lab, published_utc "
+                             "FROM lab_certificates ORDER BY sensor_index");
+  while (rows.Step())
+    marks.push_back({static_cast<int>(rows.ColumnInt(0)), rows.ColumnText(1), rows.ColumnText(2),
+                     rows.ColumnText(3)});
+  return marks;
+}
+
+void SessionStore::RecordLabCertificate(const LabCertificateMark& mark) {
+  RequireWritable();
+  SqliteTransaction transaction(*db_);
+  SqliteStatement held(*db_, "SELECT certificate_number, lab FROM lab_certificates WHERE sensor_index = ?");
+  held.Bind(1, mark.sensor_index);
+  if (held.Step()) {
+    if (held.ColumnText(0) == mark.certificate_number) return;  // rolled back: nothing to write
+    throw Error(fmt::format("session {} already holds certificate {} from {} for sensor {}; it is "
+                            "not replaced by {}", path_, held.ColumnText(0), held.ColumnText(1),
+                            mark.sensor_index, mark.certificate_number));
+  }
+  SqliteStatement(*db_, "INSERT INTO lab_certificates (sensor_index, certificate_number, lab, "
+                        "published_utc) VALUES (?, ?, ?, ?)")
+      .Bind(1, mark.sensor_index).Bind(2, mark.certificate_number).Bind(3, mark.lab)
+      .Bind(4, mark.published_utc).Run();
+  transaction.Commit();
 }
 
 }  // namespace accelcal

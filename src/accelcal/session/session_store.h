@@ -58,10 +58,24 @@ struct SessionInfo {
   std::string created_utc;   // ISO 8601
   std::string updated_utc;
   SessionState state = SessionState::kOpen;
+  // The session's identity (base/uuid.h), the same in every copy of the file: what a lab's store
+  // knows it by. Empty for a file older than schema version 6 opened read-only (a writer gives
+  // it one when it migrates the file).
+  std::string uuid;
+  long num_lab_certificates = 0;  // sensors whose calibration a lab's store has numbered
   long num_captures = 0;
   long num_inputs = 0;
   long num_done_steps = 0;
   bool has_result = false;
+};
+
+// The certificate number a lab's store assigned to one sensor's calibration when the session was
+// published there (app/lab_publish.h, docs/lab.md), written back into the session.
+struct LabCertificateMark {
+  int sensor_index = 0;            // 0 while a session holds one sensor
+  std::string certificate_number;  // the lab's, e.g. "LAB-000042"
+  std::string lab;                 // which store numbered it (LabStore::Identity())
+  std::string published_utc;       // ISO 8601
 };
 
 // The input keys that also fill the session's device and operator (session_inputs.h), at
@@ -93,12 +107,20 @@ class SessionStore final : public SessionJournal {
   SessionInputs Inputs() const override;
   std::map<std::string, std::string> DoneSteps() const override;
   std::optional<std::string> Result() const override;
+  int ResultCount() const override;
   RecordSummary RecordSummaryOf(const std::string& step_id) const override;
   void VisitRecordChunks(const std::string& step_id,
                          const std::function<void(const RecordChunk&)>& visit) const override;
   std::vector<std::string> RecordSteps() const override;
 
   SessionInfo Info() const;
+  // The lab's certificate numbers of this session, by sensor index; none until it is published.
+  std::vector<LabCertificateMark> LabCertificates() const;
+  // Writes `mark` back into the session, in one transaction. The session's updated time is left
+  // as it is (publishing changes nothing the session recorded, and the report dates the
+  // calibration by it). The same mark again changes nothing; another number for a sensor that
+  // has one throws accelcal::Error: a number written back is never replaced.
+  void RecordLabCertificate(const LabCertificateMark& mark);
   // The session is finished (state 'done'); one transaction.
   void MarkDone() override;
   const std::string& path() const { return path_; }

@@ -78,7 +78,7 @@ void ReadAnalysisFields(StepFields& f, ProcedureStep& s, const StepDefaults&) {
 }
 
 // An analysis reads an earlier record step.
-void CheckAnalysisOrder(const ProcedureStep& s, const std::vector<ProcedureStep>& earlier, StepFields& f) {
+void CheckAnalysisOrder(ProcedureStep& s, const std::vector<ProcedureStep>& earlier, StepFields& f) {
   const bool earlier_record = std::any_of(earlier.begin(), earlier.end(), [&](const ProcedureStep& e) {
     return e.id == s.record_step && IsRecordStep(e.kind);
   });

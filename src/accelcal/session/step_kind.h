@@ -3,8 +3,10 @@
 // does it read from the procedure file?" is answered from. The wizard's controller of each kind
 // (app/wizard/steps/) does the rest; ARCHITECTURE.md, "How to add a step kind", says where.
 //
-// A kind may also be added at run time (RegisterStepKind: a kind defined outside the table, as
-// a test does); such kinds take the values after the built-in ones.
+// A kind may also be added at run time (RegisterStepKind: a kind defined beside its wizard
+// controller, registered at the program's start by app/wizard/step_registry.h's
+// RegisterStepKinds, or one a test defines); such kinds take the values after the built-in ones
+// and are known to every layer that reads a procedure once registered.
 #pragma once
 
 #include <optional>
@@ -79,15 +81,16 @@ struct StepKindInfo {
   std::string_view fixed_pose;
   // Reads the kind's own fields of `step` (nullptr: it has none).
   void (*read_fields)(StepFields& fields, ProcedureStep& step, const StepDefaults& defaults) = nullptr;
-  // Checks `step` against the steps before it (nullptr: nothing to check).
-  void (*check_order)(const ProcedureStep& step, const std::vector<ProcedureStep>& earlier,
+  // Checks `step` against the steps before it and may complete it from them (a repeat of an
+  // earlier pose takes that pose); nullptr: nothing to check.
+  void (*check_order)(ProcedureStep& step, const std::vector<ProcedureStep>& earlier,
                       StepFields& fields) = nullptr;
 };
 
 // The kind's row; throws accelcal::Error for a value that is no kind.
 const StepKindInfo& InfoOf(StepKind kind);
-// "level", "static", "turntable", "record", "fit", "diagnosis", "report", "analysis", or a
-// registered kind's name; "?" for a value that is no kind.
+// "level", "static", "turntable", "record", "fit", "diagnosis", "report", "analysis",
+// "write_back", or a registered kind's name; "?" for a value that is no kind.
 std::string_view StepKindToString(StepKind kind);
 std::optional<StepKind> StringToStepKind(std::string_view text);
 // Every kind's name, the table's order then the registered ones'.

@@ -4,10 +4,13 @@
 #
 #   short_procedure            writes $work/short.toml: the seed procedure with 3 s captures
 #                              (the checks are the same; CI time is not)
-#   wizard SCENARIO DB ANSWERS [OPTION...]
-#                              runs the wizard on the sim at speed 0 with the answers given
-#                              (one per line, printf-style) and then empty ones (the options
-#                              after them go to the wizard); output in $work/out, status checked
+#   wizard SCENARIO DB ANSWERS [FLAGS...]  runs the wizard on the sim at speed 0 with the answers given
+#                              (one per line, printf-style) and then empty ones; output in
+#                              $work/out, status checked (a wizard not ended in 200 s fails:
+#                              a screen that answers Enter with itself). SCENARIO: a file of
+#                              scenarios/, or a path (one holding a '/'); FLAGS: more of the wizard's
+#                              options. Exit status 0 expected; `expect_exit=1 wizard ...` for a
+#                              session that ends at a dead end (a refused fit: saved, failed)
 #   calibration DB             writes $work/cal.json, the session's calibration
 #   within_truth K             every parameter of $work/cal.json within K sigma of the default
 #                              bench's truth (scenarios/bench_default.toml); else prints them
@@ -23,19 +26,22 @@ short_procedure() {
 
 wizard() {  # SCENARIO DB ANSWERS [OPTION...]
   local scenario=$1 db=$2 answers=$3
+  shift 3
+  case "$scenario" in */*) ;; *) scenario=$source_dir/scenarios/$scenario ;; esac
   set +e
   # The answers end in Enter for ever: a screen that answers Enter with itself would go round
   # until ctest's timeout; the limit says so instead (wizard_way_back's effects_demo part did).
   { printf "$answers"; yes ''; } | timeout 200 "$accelcal" wizard --source sim --speed 0 \
-    --scenario "$source_dir/scenarios/$scenario" --procedure "$work/short.toml" --session "$db" \
-    --plain "${@:4}" > "$work/out" 2> "$work/err"
+    --scenario "$scenario" --procedure "$work/short.toml" --session "$db" \
+    --plain "$@" > "$work/out" 2> "$work/err"
   local code=${PIPESTATUS[1]}
   set -e
   if [ "$code" -eq 124 ]; then
     grep -v '^> *$' "$work/out" | tail -20 >&2
     fail "the wizard did not end in 200 s: a screen answered Enter with itself (a loop)"
   fi
-  [ "$code" -eq 0 ] || { tail -20 "$work/out" >&2; cat "$work/err" >&2; fail "wizard exited $code"; }
+  local want=${expect_exit:-0}
+  [ "$code" -eq "$want" ] || { tail -20 "$work/out" >&2; cat "$work/err" >&2; fail "wizard exited $code, not $want"; }
 }
 
 calibration() { "$accelcal" report "$1" --format calibration -o "$work/cal.json" > /dev/null; }

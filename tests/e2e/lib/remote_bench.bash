@@ -15,6 +15,10 @@
 #                               of `yes ''`; output in $work/out; status checked
 #   bench_wizard_killed ANSWERS TEXT SOURCE DB PROCEDURE [ARGS...]   the same in the background,
 #                               kill -9 once its output says TEXT (a step done mid-session)
+#   quiet_scenario FILE         writes FILE: the default bench with a quiet sensor (about 0.9 mG
+#                               of noise) behind a 16-bit ADC (steps of 1.8e-3 m/s^2, 16 times
+#                               finer than the default's, so the ADC's own rounding stays below
+#                               the noise); a vehicle streams it with --scale 556.8 --bias 32768
 start_bench() {
   local speed=$1; shift
   rm -f "$work/peer.port" "$work/bench.err"
@@ -63,4 +67,14 @@ bench_wizard_killed() {  # ANSWERS TEXT SOURCE DB PROCEDURE [ARGS...]
   flat "$work/out.killed" "$text" || fail "the wizard never said: $text"
   kill -9 "$pid"
   wait "$pid" 2>/dev/null || true
+}
+
+quiet_scenario() {  # FILE
+  sed -e 's/^bias_counts = .*/bias_counts = [32820.8, 32633.6, 33004.8]/' \
+      -e 's/^scale_counts_per_mps2 = .*/scale_counts_per_mps2 = [553.92, 561.12, 550.56]/' \
+      -e 's/^noise_counts = .*/noise_counts = [4.8, 4.8, 4.8]/' \
+      -e 's/^bits = 12 .*/bits = 16/' \
+      "$source_dir/scenarios/bench_default.toml" > "$1"
+  [ "$(grep -c '^bias_counts = \[32820.8\|^scale_counts_per_mps2 = \[553.92\|^noise_counts = \[4.8\|^bits = 16$' "$1")" -eq 4 ] \
+    || fail "quiet scenario: the default bench's lines were not found"
 }

@@ -21,9 +21,13 @@
 #include "accelcal/report/svg_plot.h"
 #include "accelcal/report/uncertainty_text.h"
 #include "accelcal/session/session_journal.h"
+#include "bench_calibration.h"
 
 namespace accelcal::certificate_test {
 namespace {
+
+using testing::BenchInputs;
+using testing::ProcedureWithEquipment;
 
 bool Contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
 
@@ -39,12 +43,6 @@ TEST(RoundToUncertainty, TwoSignificantDigitsOfU) {
   check(1.23456, 0.0996, "1.23", "0.10");             // U rounds up to a new decade
   check(-0.00001, 0.5, "0.00", "0.50");               // no "-0.00"
   check(5.0, 0.0, "5", "-");                          // no U: six significant digits
-}
-
-Procedure ProcedureWithEquipment(const std::string& equipment) {
-  return ParseProcedure("title = \"t\"\n[sensor]\nnominal_scale_counts_per_mps2 = 34.8\n"
-                        "nominal_bias_counts = 2048\n" + equipment +
-                        "\n[[step]]\nid = \"fit\"\nkind = \"fit\"\n", "test.toml");
 }
 
 TEST(Equipment, ReadFromTheProcedureInSiUnits) {
@@ -75,37 +73,13 @@ TEST(Equipment, ReadFromTheProcedureInSiUnits) {
   }
 }
 
-TEST(Equipment, TheSeedProcedureListsTheBench) {
+TEST(Equipment, TheFullProcedureListsTheBench) {
   const Procedure p = LoadProcedure(std::string(ACCELCAL_SOURCE_DIR) + "/procedures/full_calibration.toml");
   EXPECT_EQ(p.equipment.size(), 4u);
   for (const EquipmentItem& e : p.equipment) {
     EXPECT_TRUE(std::isfinite(e.standard_uncertainty)) << InfoOf(e.role).key;
     EXPECT_FALSE(e.identification.empty()) << InfoOf(e.role).key;
   }
-}
-
-// A wizard-like calibration on the virtual bench with its budget, as the report step makes it.
-ReportInputs BenchInputs(const std::vector<EquipmentItem>& equipment) {
-  sim::Scenario scenario = sim::DefaultScenario();
-  scenario.bench.seed = 7;
-  sim::VirtualBench bench(scenario);
-  CalibrationRequest request;
-  request.captures = bench.SimulateCaptureSet();
-  request.source_name = "bench";
-  request.gravity = GravitySpec::Given(scenario.bench.gravity_mps2, 0.0002);
-  request.screening.adc_range = scenario.adc.Range();
-  request.diagnose = false;
-  request.references = ToReferenceUncertainties(equipment, kNaN);
-  const CalibrationOutcome outcome = CalibrateCaptures(request);
-  EXPECT_TRUE(outcome.usable());
-  ReportInputs in;
-  in.calibration = outcome.MakeCalibration(true);
-  in.meta.session_name = "20261123T211200Z";
-  in.meta.source = "sim";
-  in.meta.procedure = "Full calibration";
-  in.equipment = equipment;
-  in.nominal_bias_counts = Eigen::Vector3d::Constant(2048.0);
-  return in;
 }
 
 std::vector<EquipmentItem> Bench() {
@@ -148,14 +122,17 @@ TEST(Certificate, BudgetTravelsThroughTheCalibrationFileAndTheNumberIsStable) {
 }
 
 TEST(Certificate, TextAndHtmlStateWhatALabSigns) {
-  const ReportModel m = BuildReportModel(BenchInputs(Bench()));
+  ReportInputs in = BenchInputs(Bench());
+  in.limits = LoadProcedure(std::string(ACCELCAL_SOURCE_DIR) + "/procedures/full_calibration.toml").limits;
+  const ReportModel m = BuildReportModel(in);
   const std::string text = RenderReportText(m), html = RenderReportHtml(m);
   for (const std::string& doc : {text, html}) {
     EXPECT_TRUE(Contains(doc, m.certificate.number));
     EXPECT_TRUE(Contains(doc, "SIMULATED"));
     EXPECT_TRUE(Contains(doc, "RUL-7"));
     EXPECT_TRUE(Contains(doc, "INTI-cert-4711"));
-    EXPECT_TRUE(Contains(doc, "Simple acceptance"));
+    EXPECT_TRUE(Contains(doc, "guard band"));  // the shipped procedure's rule
+    EXPECT_TRUE(Contains(doc, "4.2.2"));
     EXPECT_TRUE(Contains(doc, "mrad"));
     EXPECT_TRUE(Contains(doc, " mg"));
     EXPECT_TRUE(Contains(doc, "counts/g"));

@@ -145,6 +145,12 @@ TEST(NearTie, TwoEffectsExplainingAlikeAreBothNamedAndTheChoiceIsInTheUncertaint
   EXPECT_NE(t.adopted, t.rival);
   EXPECT_LT(t.bic_gap, 6.0);
   EXPECT_FALSE(t.separating.empty());
+  // The diagnosis says it typed, not only in words: the round that adopted one flags the other.
+  bool flagged = false;
+  for (const DiagnosisRound& r : o.diagnosis.rounds)
+    for (const CandidateScore& c : r.candidates)
+      flagged = flagged || (c.near_tie && c.effect == t.rival && r.adopted == t.adopted);
+  EXPECT_TRUE(flagged) << FormatDiagnosis(o.diagnosis);
   const auto z = Z(o.Fit(true), set.data.sensor);
   EXPECT_LT(z.cwiseAbs().maxCoeff(), 3.0) << z.transpose();
   const Calibration cal = o.MakeCalibration(true);

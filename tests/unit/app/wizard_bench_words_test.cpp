@@ -75,6 +75,46 @@ TEST(WizardBenchWordsTest, TheTurntableIsStoppedBeforeTheSensorIsTouchedAndStart
                       "turns steadily.");
 }
 
+// Issue 27, item 9: a table that does not turn was told "check rpm and radius (12.64 rpm)". The
+// sensor mounted 2 mm from the axis instead of 50 (about no pull at all): the words say the
+// table does not seem to turn and to start it; the figures are in the detail.
+TEST(WizardBenchWordsTest, ATableThatDoesNotTurnIsToldToStart) {
+  sim::Scenario s = sim::DefaultScenario();
+  sim::Mistake m;
+  m.asked_radial = SensorAxis::kPlusX;
+  m.asked_up_axis = SensorAxis::kPlusZ;
+  m.asked_radius_m = 0.05;
+  m.radius_m = 0.002;
+  s.technician.mistakes.push_back(m);
+  Rig rig(s);
+  AcceptUntil(rig.engine, [](const WizardView& v) { return !v.problem.empty(); });
+  const WizardView v = rig.engine.View();
+  EXPECT_EQ(v.problem.rfind("the table does not seem to turn: no pull toward the outside was measured", 0), 0u)
+      << v.problem;
+  EXPECT_EQ(v.hint, "start the table at 120 rpm and wait until it turns steadily; Enter tries again");
+  EXPECT_NE(v.detail.find("expected from 120 rpm"), std::string::npos) << v.detail;
+  EXPECT_EQ(v.problem.find("m/s^2"), std::string::npos) << v.problem;
+}
+
+// Issue 27, item 9: "chi2/dof 1.27, condition 4.5 ... NLopt ftol_reached" on the technician's fit
+// screen. The fit says how well the captures agree, in words; the statistics are on d.
+TEST(WizardBenchWordsTest, TheFitSpeaksPlainWordsWithTheStatisticsOneKeyAway) {
+  Rig rig(sim::DefaultScenario());
+  AcceptUntil(rig.engine, [](const WizardView& v) { return v.screen == WizardScreen::kFit; });
+  const auto has = [](const WizardView& w, const std::string& part) {
+    return std::any_of(w.lines.begin(), w.lines.end(),
+                       [&](const std::string& l) { return l.find(part) != std::string::npos; });
+  };
+  WizardView v = rig.engine.View();
+  EXPECT_TRUE(has(v, "19 captures fitted: they agree with one calibration to ")) << v.prompt;
+  for (const char* statistic : {"chi2", "condition", "NLopt", "ftol", "1-sigma):"}) EXPECT_FALSE(has(v, statistic)) << statistic;
+  EXPECT_TRUE(std::any_of(v.keys.begin(), v.keys.end(), [](const KeyHint& k) { return k.key == "d"; }));
+  rig.engine.Handle({IntentKind::kDetails, ""});
+  v = rig.engine.View();
+  EXPECT_TRUE(has(v, "chi2/dof"));
+  EXPECT_TRUE(has(v, "parameters (1-sigma):"));
+}
+
 // effects_demo's bench: every radius 3 mm longer than entered and a quadratic response.
 TEST(WizardBenchWordsTest, TheDiagnosisSpeaksPlainWordsWithTheStatisticsOneKeyAway) {
   Rig rig(sim::LoadScenario(std::string(ACCELCAL_SOURCE_DIR) + "/scenarios/effects_demo.toml"));

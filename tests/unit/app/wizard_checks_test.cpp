@@ -37,7 +37,8 @@ TEST(WizardChecks, TheProcedureCanRefuseTheStandardGravity) {
   WizardRig rig(p, sim::DefaultScenario());
   for (int i = 0; i < 3; ++i) rig.engine.Handle({IntentKind::kAccept, ""});
   ASSERT_TRUE(AskedFor(rig.engine.View(), "gravity"));
-  rig.engine.Handle({IntentKind::kAccept, ""});  // the default: standard
+  // Typed: the virtual bench offers its lab's measured gravity (virtual_lab.h).
+  rig.engine.Handle({IntentKind::kSubmitText, "standard"});
   ASSERT_TRUE(AskedFor(rig.engine.View(), "gravity"));
   EXPECT_NE(rig.engine.View().input->error.find("needs the local gravity"), std::string::npos)
       << rig.engine.View().input->error;

@@ -97,12 +97,12 @@ Procedure ShortStaticProcedure(int poses) {
 TEST(WizardEngineTest, AcceptingEverythingCompletesTheSeedCalibration) {
   Rig rig(FullProcedure());
   EXPECT_EQ(rig.engine.View().screen, WizardScreen::kWelcome);
-  EXPECT_EQ(rig.engine.View().step_count, 23);
+  EXPECT_EQ(rig.engine.View().step_count, 24);
   AcceptUntil(rig.engine, Never);
   const WizardView v = rig.engine.View();
   EXPECT_TRUE(v.finished);
   EXPECT_EQ(v.screen, WizardScreen::kDone);
-  EXPECT_EQ(rig.journal->Captures().size(), 18u);
+  EXPECT_EQ(rig.journal->Captures().size(), 19u);
   ASSERT_TRUE(rig.journal->Result().has_value());
   EXPECT_TRUE(CalibrationFromJson(nlohmann::json::parse(*rig.journal->Result()), "result").model.Validate().empty());
   EXPECT_EQ(rig.journal->DoneSteps().at("welcome"), "ok");
@@ -149,6 +149,19 @@ TEST(WizardEngineTest, WelcomeTakesTypedAnswersAndGoesBack) {
   EXPECT_NE(rig.engine.View().input->error.find("u must be a number"), std::string::npos)
       << rig.engine.View().input->error;
   rig.engine.Handle({IntentKind::kSubmitText, "ruler id RUL-77 u 0.4; level u 0.1"});
+  // The seed procedure issues a certificate: the items left with the procedure's example ids are
+  // refused once, named, with what to type (issue 27, item 3); the same answer again goes on.
+  ASSERT_TRUE(rig.engine.View().input.has_value());
+  const std::string refused = rig.engine.View().input->error;
+  EXPECT_NE(refused.find("this procedure issues a certificate, and turntable TT-01 (example), level LVL-01 "
+                         "(example), prism PR-01 (example) are not your bench's own"),
+            std::string::npos)
+      << refused;
+  EXPECT_NE(refused.find("or Enter again to go on without them"), std::string::npos) << refused;
+  EXPECT_EQ(rig.journal->Inputs().at("welcome").count("equipment"), 0u);
+  // Enter now goes on with the answer refused (shown as the default), not the procedure's.
+  EXPECT_EQ(rig.engine.View().input->default_text, "ruler id RUL-77 u 0.4; level u 0.1");
+  rig.engine.Handle({IntentKind::kAccept, ""});
   EXPECT_EQ(rig.journal->Inputs().at("welcome").at("equipment"), "ruler id RUL-77 u 0.4; level u 0.1");
   EXPECT_EQ(rig.engine.View().step_title, "Level the table");
 }
@@ -379,6 +392,47 @@ TEST(WizardEngineTest, EnterAtARefusedFitSavesAndQuitsInsteadOfGoingRound) {
   EXPECT_EQ(rig.journal->Captures().size(), 3u);
   EXPECT_EQ(rig.journal->DoneSteps().count("fit"), 0u);
   EXPECT_FALSE(rig.journal->Result().has_value());
+  // Saved, but nothing calibrated: the command's exit status says failure (ui/cli/wizard.cpp).
+  EXPECT_TRUE(rig.engine.left_on_failure());
+}
+
+// q is the technician's choice, not a failure (exit status 0).
+TEST(WizardEngineTest, QuitIsNotAFailure) {
+  Rig rig(ShortStaticProcedure(3));
+  AcceptUntil(rig.engine, TitleIs("+z up"));
+  rig.engine.Handle({IntentKind::kQuit, ""});
+  EXPECT_TRUE(rig.engine.View().finished);
+  EXPECT_FALSE(rig.engine.left_on_failure());
+}
+
+// A sensor four times noisier than the procedure expects: the noise floor is refused at every
+// measurement. Enter measured the same bench again for ever (a script's `yes ''` hung); after 3
+// refusals in a row Enter saves and quits with the problem said, r still measures again.
+TEST(WizardEngineTest, ANoiseFloorRefusedAgainAndAgainEndsSavedNotInALoop) {
+  sim::Scenario noisy = sim::DefaultScenario();
+  noisy.sensor.noise_counts = Eigen::Vector3d::Constant(8.0);
+  Rig rig(ShortStaticProcedure(3), Fast(), noisy);
+  AcceptUntil(rig.engine, Never, 40);
+  const WizardView v = rig.engine.View();
+  ASSERT_TRUE(v.finished) << v.prompt;
+  EXPECT_TRUE(rig.engine.left_on_failure());
+  EXPECT_NE(v.prompt.find("Saved."), std::string::npos) << v.prompt;
+  EXPECT_TRUE(rig.journal->Captures().empty());
+}
+
+TEST(WizardEngineTest, RMeasuresTheNoiseFloorAgainAfterThreeRefusals) {
+  sim::Scenario noisy = sim::DefaultScenario();
+  noisy.sensor.noise_counts = Eigen::Vector3d::Constant(8.0);
+  Rig rig(ShortStaticProcedure(3), Fast(), noisy);
+  AcceptUntil(rig.engine, [](const WizardView& v) { return v.prompt.find("not accepted 3 times") != std::string::npos; }, 40);
+  WizardView v = rig.engine.View();
+  ASSERT_NE(v.prompt.find("The noise floor was not accepted 3 times in a row."), std::string::npos) << v.prompt;
+  EXPECT_NE(v.hint.find("r measures again, Enter saves and quits"), std::string::npos) << v.hint;
+  rig.engine.Handle({IntentKind::kRetry, ""});
+  PollUntilQuestion(rig.engine);
+  v = rig.engine.View();
+  EXPECT_FALSE(v.finished);
+  EXPECT_NE(v.prompt.find("not accepted 4 times"), std::string::npos) << v.prompt;
 }
 
 sim::Scenario QuadraticScenario() {
@@ -430,8 +484,8 @@ TEST(WizardEngineTest, ResumeContinuesAtTheFirstMissingStepWithoutDuplicates) {
   EXPECT_TRUE(second.engine.View().finished);
   std::set<std::string> steps;
   for (const JournalCapture& c : journal->Captures()) steps.insert(c.step_id);
-  EXPECT_EQ(journal->Captures().size(), 18u);
-  EXPECT_EQ(steps.size(), 18u);
+  EXPECT_EQ(journal->Captures().size(), 19u);
+  EXPECT_EQ(steps.size(), 19u);
   EXPECT_TRUE(journal->Result().has_value());
 }
 

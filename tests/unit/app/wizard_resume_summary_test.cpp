@@ -57,7 +57,7 @@ TEST(WizardResumeSummaryTest, ListsTheStepsInTheProceduresOrderByTitle) {
   EXPECT_EQ(lines[3], "  +z up: done (capture 1)");
   EXPECT_EQ(lines[4], "  -z up: skipped");
   EXPECT_EQ(lines[5], "  +x up: done (capture 2)");
-  EXPECT_EQ(lines[6], "  Turntable +x radial, +z up at 100 mm: skipped");
+  EXPECT_EQ(lines[6], "  +x radial, +z up at 100 mm, 120 rpm: skipped");
   for (const std::string& line : lines) {
     EXPECT_EQ(line.find("pose_"), std::string::npos) << line;
     EXPECT_EQ(line.find("tt_x"), std::string::npos) << line;
@@ -75,13 +75,16 @@ TEST(WizardResumeSummaryTest, NamesASupersededCaptureBesideItsRedo) {
   EXPECT_EQ(lines[1], "  +z up: done (capture 2; capture 1 taken again, superseded)");
 }
 
-TEST(WizardResumeSummaryTest, ATurntableTitleNamesItsRadius) {
+// Issue 27, item 8: the three runs of a mounting looked alike ("Take '+y radial, +z up' again?"
+// three times); the radius and the speed tell them apart.
+TEST(WizardResumeSummaryTest, ATurntableTitleNamesItsRadiusAndSpeed) {
   ProcedureStep s;
   s.kind = StepKind::kTurntable;
   s.pose_name = "y radial, z up";
   s.title = s.pose_name;
   s.radius_m = 0.15;
-  EXPECT_EQ(StepDisplayTitle(s), "Turntable y radial, z up at 150 mm");
+  s.rpm = 120;
+  EXPECT_EQ(StepDisplayTitle(s), "y radial, z up at 150 mm, 120 rpm");
   s.title = "Outer run";  // a title of its own is kept
   EXPECT_EQ(StepDisplayTitle(s), "Outer run");
 }

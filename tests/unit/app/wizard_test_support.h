@@ -11,6 +11,7 @@
 
 #include "accelcal/acquire/sim/scenario.h"
 #include "accelcal/acquire/source/sim_source.h"
+#include "accelcal/app/wizard/virtual_lab.h"
 #include "accelcal/app/wizard/wizard_engine.h"
 #include "accelcal/io/procedure_file.h"
 #include "accelcal/session/procedure.h"
@@ -20,6 +21,14 @@ namespace accelcal::testing {
 
 inline Procedure FullProcedure() {
   return LoadProcedure(std::string(ACCELCAL_SOURCE_DIR) + "/procedures/full_calibration.toml");
+}
+
+// The shipped procedure with 3 s captures (the checks are the same; the test time is not).
+inline Procedure ShortFullProcedure() {
+  Procedure p = FullProcedure();
+  for (ProcedureStep& s : p.steps)
+    if (KeepsCapture(s.kind)) s.duration_s = 3.0;  // the poses (the repeat too) and the runs
+  return p;
 }
 
 inline SimOptions FastSim() {
@@ -38,13 +47,21 @@ inline Procedure StepsOf(Procedure p, const std::function<bool(const ProcedureSt
   return p;
 }
 
+// `options` as `accelcal wizard --source sim` makes them: the scenario's lab offered at the
+// welcome (virtual_lab.h), its gravity unless the options give one other than the standard.
+inline WizardOptions OnVirtualBench(const sim::Scenario& scenario, WizardOptions options) {
+  OfferVirtualLab(scenario, !options.gravity.is_standard(), &options);
+  return options;
+}
+
 // A sim, a journal and an engine over them (declared in that order: the engine borrows both).
+// The welcome offers the scenario's lab, as the command line does on the virtual bench.
 struct WizardRig {
-  WizardRig(Procedure procedure, sim::Scenario scenario, std::shared_ptr<SessionJournal> shared = nullptr,
+  WizardRig(Procedure procedure, const sim::Scenario& scenario, std::shared_ptr<SessionJournal> shared = nullptr,
             WizardOptions options = WizardOptions{"test", "op", "SN1", {}, 2.0, {}})
-      : sim(std::move(scenario), FastSim()),
+      : sim(scenario, FastSim()),
         journal(shared ? std::move(shared) : std::shared_ptr<SessionJournal>(MakeMemoryJournal())),
-        engine(std::move(procedure), sim, *journal, std::move(options)) {}
+        engine(std::move(procedure), sim, *journal, OnVirtualBench(scenario, std::move(options))) {}
   SimSource sim;
   std::shared_ptr<SessionJournal> journal;
   WizardEngine engine;

@@ -41,16 +41,20 @@ TEST(ProcedureTarget, AbsentMeansNone) {
 }
 
 TEST(ProcedureTarget, LooserThanTheLimitsIsRefusedAtItsKey) {
-  const std::string limits = "[limits]\nmax_scale_sigma_ppm = 50\nmax_bias_sigma_counts = 2\n";
+  const std::string limits = "[limits]\nmax_scale_U_ppm = 100\nmax_bias_U_counts = 4\n";
   try {
     ParseProcedure(ProcedureText("[target]\nbias_mg = 1.0\nscale_ppm = 200\n", limits), "t.toml");
-    FAIL() << "a scale target of 200 ppm (1-sigma 100 ppm) against a 50 ppm limit was accepted";
+    FAIL() << "a scale target of U = 200 ppm against a U limit of 100 ppm was accepted";
   } catch (const InputError& e) {
     const std::string what = e.what();
     EXPECT_NE(what.find("t.toml:"), std::string::npos) << what;
     EXPECT_NE(what.find("target.scale_ppm"), std::string::npos) << what;
-    EXPECT_NE(what.find("above [limits] max_scale_sigma_ppm = 50"), std::string::npos) << what;
+    EXPECT_NE(what.find("above [limits] max_scale_U_ppm = 100"), std::string::npos) << what;
   }
+  // A limit in the first format's 1-sigma key is read as U = 2 x it: 50 ppm is U = 100 ppm.
+  EXPECT_THROW(ParseProcedure(ProcedureText("[target]\nscale_ppm = 200\n", "[limits]\nmax_scale_sigma_ppm = 50\n"),
+                              "t.toml"),
+               InputError);
   // Within: accepted.
   EXPECT_NO_THROW(ParseProcedure(ProcedureText("[target]\nscale_ppm = 100\n", limits), "t.toml"));
   // Negative or zero: refused as any number out of range.

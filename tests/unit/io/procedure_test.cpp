@@ -15,36 +15,8 @@ std::string Shipped(const std::string& name) {
   return std::string(ACCELCAL_SOURCE_DIR) + "/procedures/" + name;
 }
 
-int Count(const Procedure& p, StepKind kind) {
-  int n = 0;
-  for (const ProcedureStep& s : p.steps) n += s.kind == kind;
-  return n;
-}
-
-TEST(ProcedureTest, FullCalibrationLoads) {
-  const Procedure p = LoadProcedure(Shipped("full_calibration.toml"));
-  EXPECT_EQ(p.title, "Full calibration: level, 9 prism poses, 9 turntable runs, fit, diagnosis");
-  // Its title before the rename (seed_calibration.toml): sessions recorded under it are its.
-  EXPECT_TRUE(p.IsTitled("Seed calibration: level, 9 prism poses, 9 turntable runs, fit, diagnosis"));
-  EXPECT_TRUE(p.IsTitled(p.title));
-  EXPECT_FALSE(p.IsTitled("Full calibration"));
-  EXPECT_EQ(Count(p, StepKind::kLevel), 1);
-  EXPECT_EQ(Count(p, StepKind::kStatic), 9);
-  EXPECT_EQ(Count(p, StepKind::kTurntable), 9);
-  EXPECT_EQ(Count(p, StepKind::kFit), 1);
-  EXPECT_EQ(Count(p, StepKind::kDiagnosis), 1);
-  EXPECT_EQ(Count(p, StepKind::kReport), 1);
-  EXPECT_DOUBLE_EQ(p.range_g, 6.0);
-  EXPECT_DOUBLE_EQ(p.nominal.scale_counts_per_mps2.x(), 34.8);
-  EXPECT_DOUBLE_EQ(p.adc_range.max_counts, 4095.0);
-  EXPECT_EQ(p.TiltedPoses().size(), 3u);
-  const ProcedureStep& tt = p.steps[10];
-  EXPECT_EQ(tt.kind, StepKind::kTurntable);
-  EXPECT_DOUBLE_EQ(tt.radius_m, 0.05);
-  EXPECT_DOUBLE_EQ(tt.rpm, 120.0);
-  EXPECT_EQ(tt.pose_name, "+x radial, +z up");
-  EXPECT_DOUBLE_EQ(tt.duration_s, 10.0);
-}
+// FullCalibrationLoads is in the app group (tests/unit/app/wizard_repeat_step_test.cpp): the full
+// procedure has a step of a kind the wizard defines (repeat), registered from app up.
 
 TEST(ProcedureTest, NoiseAndDriftRecordsLoad) {
   const Procedure noise = LoadProcedure(Shipped("noise.toml"));

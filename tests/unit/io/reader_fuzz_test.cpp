@@ -135,8 +135,18 @@ TEST(ReaderFuzz, Calibration) {
        19);
 }
 
+// The full procedure as the io layer alone reads it: its closing repeat pose is of a kind the
+// wizard defines (registered from app up, step_registry.h), so the seed leaves that step out.
+std::string ProcedureSeed() {
+  std::string text = FileText(std::string(ACCELCAL_SOURCE_DIR) + "/procedures/full_calibration.toml");
+  const size_t from = text.find("[[step]]\nid = \"repeat_pz\"");
+  const size_t to = from == std::string::npos ? from : text.find("[[step]]", from + 1);
+  if (to != std::string::npos) text.erase(from, to - from);
+  return text;
+}
+
 TEST(ReaderFuzz, Procedure) {
-  const std::string seed = FileText(std::string(ACCELCAL_SOURCE_DIR) + "/procedures/full_calibration.toml");
+  const std::string seed = ProcedureSeed();
   ASSERT_FALSE(seed.empty());
   Fuzz("procedure", seed, [](const std::string& t) { ParseProcedure(t, "procedure.toml"); }, 20);
 }

@@ -251,6 +251,9 @@ void ExpectSameScenario(const Scenario& a, const Scenario& b) {
   EXPECT_EQ(a.effects.turntable_tilt_rad, b.effects.turntable_tilt_rad);
   EXPECT_EQ(a.effects.temperature.has_value(), b.effects.temperature.has_value());
   EXPECT_EQ(a.effects.bumps.size(), b.effects.bumps.size());
+  EXPECT_EQ(a.lab.gravity, b.lab.gravity);
+  EXPECT_EQ(a.lab.gravity_sigma_mps2, b.lab.gravity_sigma_mps2);
+  EXPECT_EQ(a.lab.equipment, b.lab.equipment);
   ASSERT_EQ(a.captures.size(), b.captures.size());
   for (std::size_t i = 0; i < a.captures.size(); ++i) {
     SCOPED_TRACE("capture " + std::to_string(i));
@@ -296,6 +299,17 @@ TEST(DefaultScenario, HasTheDocumentedShape) {
   }
   EXPECT_FALSE(s.effects.temperature.has_value());
   EXPECT_EQ(s.effects.quadratic_counts_per_mps2_sq, Eigen::Vector3d::Zero());
+}
+
+// The virtual bench's lab (issue 27): what the welcome offers on the virtual bench.
+TEST(ScenarioParse, TheLabIsAGoodOneUnlessTheScenarioSaysOtherwise) {
+  const Scenario good = ParseScenario(kMinimal, "t");
+  EXPECT_EQ(good.lab.GravityAnswer(9.7803), "9.78030 +- 2e-05");
+  EXPECT_TRUE(Contains(good.lab.equipment, "ruler id SIM-RUL-01 u 0.03 cal ")) << good.lab.equipment;
+  const Scenario unknown = ParseScenario(kMinimal + "[lab]\ngravity = \"standard\"\nequipment = \"keep\"\n", "t");
+  EXPECT_EQ(unknown.lab.GravityAnswer(9.7803), "standard");
+  EXPECT_EQ(unknown.lab.equipment, "keep");
+  EXPECT_TRUE(Contains(ParseFails(kMinimal + "[lab]\nruler = 1\n").what(), "ruler"));
 }
 
 TEST(ShippedScenarios, EffectsDemoLoadsWithItsEffectsOn) {

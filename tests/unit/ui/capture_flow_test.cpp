@@ -89,6 +89,18 @@ TEST(CaptureMessages, AGiveUpOnStillnessSaysWhyInWords) {
   EXPECT_EQ(DescribeEnded(silent, 60.0).text, silent);
 }
 
+// Issue 27, item 9: a vibrating bench "gave up after 60 s: the bench kept being knocked" with the
+// hint "put the prism with -z up and let go": the hint is about the bench, not the placement.
+TEST(CaptureMessages, AGiveUpOnStillnessHintsAtTheBench) {
+  const std::string shaking = std::string("no stable capture within 60 s: last problem: ") + kKnockReason;
+  EXPECT_EQ(DescribeEnded(shaking, 60.0).text, "gave up after 60 s: the bench kept being knocked or shaken");
+  EXPECT_TRUE(Contains(StillnessHint(shaking), "find what shakes or knocks the bench")) << StillnessHint(shaking);
+  EXPECT_FALSE(Contains(StillnessHint(shaking), "prism"));
+  EXPECT_TRUE(Contains(StillnessHint("no stable capture within 60 s: last problem: drifting: z moved 6 counts"),
+                       "warm up"));
+  EXPECT_EQ(StillnessHint("wrong face: the reading shows -z up"), "");  // the placement's hint then
+}
+
 // ---- the time -------------------------------------------------------------------------------
 
 TEST(TimeEstimate, TheSessionIsTheRemainingStepsAndTheirHandling) {
@@ -102,7 +114,10 @@ TEST(TimeEstimate, TheSessionIsTheRemainingStepsAndTheirHandling) {
       case StepKind::kTurntable: by_hand += a.mount_turntable_s + a.settle_s + s.duration_s; break;
       case StepKind::kLevel: by_hand += a.level_s + 2 * (a.settle_s + s.duration_s); break;
       case StepKind::kRecord: by_hand += a.place_pose_s + a.settle_s + s.duration_s; break;
-      default: by_hand += a.read_result_s; break;
+      default:
+        // A pose of a kind defined beside its controller (the repeat) is placed like a static one.
+        by_hand += IsStaticPoseStep(s.kind) ? a.place_pose_s + a.settle_s + s.duration_s : a.read_result_s;
+        break;
     }
   }
   EXPECT_DOUBLE_EQ(RemainingEstimateS(p, 0, none_done), by_hand);
@@ -120,13 +135,7 @@ TEST(TimeEstimate, TheSessionIsTheRemainingStepsAndTheirHandling) {
 
 // ---- the engine on the clumsy bench ---------------------------------------------------------
 
-// The seed procedure with 3 s captures (the checks are the same; the test time is not).
-Procedure ShortProcedure() {
-  Procedure p = testing::FullProcedure();
-  for (ProcedureStep& s : p.steps)
-    if (s.kind == StepKind::kStatic || s.kind == StepKind::kTurntable) s.duration_s = 3.0;
-  return p;
-}
+Procedure ShortProcedure() { return testing::ShortFullProcedure(); }
 
 sim::Scenario Clumsy(const std::string& name) {
   return sim::LoadScenario(std::string(ACCELCAL_SOURCE_DIR) + "/scenarios/" + name);
@@ -272,7 +281,7 @@ TEST(CaptureFlow, TheFinalScreenSaysTheVerdictTheNumbersAndTheFiles) {
 
 TEST(CaptureFlow, AFailedLimitIsNamedOnTheFinalScreen) {
   Procedure p = ShortProcedure();
-  p.limits.max_bias_sigma_counts = 1e-6;  // no bench meets it
+  p.limits.max_bias_U_counts = 1e-6;  // no bench meets it
   testing::WizardRig rig(p, Clumsy("clumsy_bump.toml"));
   const WizardView v = WholeSession(rig.engine).back();
   EXPECT_EQ(v.verdict, "FAIL");
@@ -293,11 +302,21 @@ TEST(CaptureFlow, AFinishedSessionOpenedAgainShowsItsSummary) {
     first_lines = last.lines;
   }
   testing::WizardRig again(ShortProcedure(), Clumsy("clumsy_bump.toml"), journal);
+  // First the offer to refit it with new inputs (issue 27, item 5), over the same summary.
+  const WizardView offer = again.engine.View();
+  ASSERT_FALSE(offer.finished);
+  ASSERT_TRUE(offer.input.has_value());
+  EXPECT_EQ(offer.input->key, "refit");
+  EXPECT_EQ(offer.verdict, "PASS");
+  EXPECT_EQ(offer.lines, first_lines);
+  again.engine.Handle({IntentKind::kAccept, ""});  // Enter: leave it as it is
   const WizardView v = again.engine.View();
   ASSERT_TRUE(v.finished);
+  EXPECT_TRUE(again.engine.completed());
   EXPECT_EQ(v.verdict, "PASS");
   EXPECT_EQ(v.prompt, "Calibration complete (in an earlier run): nothing left to do.");
   EXPECT_EQ(v.lines, first_lines);  // the same verdict and numbers, computed from the journal
+  EXPECT_EQ(journal->ResultCount(), 1);
 }
 
 // ---- line mode ------------------------------------------------------------------------------
@@ -325,11 +344,17 @@ TEST(CaptureFlow, LineModeSaysTheWordsTheDetailTheTimeTheConfirmationAndTheVerdi
   EXPECT_TRUE(Contains(summary, "\nCalibration complete.\n")) << summary;
   EXPECT_FALSE(Contains(summary, "complete: PASS")) << summary;
   EXPECT_TRUE(Contains(text, "  bias (counts)")) << tail;
-  // The statistics never on a main line: every line with "sigma" is a detail line.
+  // The statistics never on a main line: every line with "sigma" is a detail line; and a normal
+  // wait (settling after letting go) prints none (issue 27, item 9: "z std 2.9e+02 ... 225.8
+  // sigma" under every placement).
   std::istringstream lines(text);
-  for (std::string line; std::getline(lines, line);) {
+  std::string previous;
+  for (std::string line; std::getline(lines, line); previous = line) {
     if (Contains(line, "sigma) at t =")) {
       EXPECT_EQ(line.rfind("    detail: ", 0), 0u) << line;
+    }
+    if (Contains(previous, "still settling after you let go: wait")) {
+      EXPECT_NE(line.rfind("    detail: ", 0), 0u) << previous << "\n" << line;
     }
   }
 }

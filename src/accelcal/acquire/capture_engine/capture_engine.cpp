@@ -64,6 +64,7 @@ CaptureEngine::CaptureEngine(CaptureRequest request, const CaptureEngineOptions&
 void CaptureEngine::Restart() {
   state_ = CaptureState::kSettling;
   reason_.clear();
+  settle_wait_.clear();
   attempts_ = 0;
   t_start_s_ = t_last_s_ = t_next_check_s_ = kNaN;
   settle_.Reset();
@@ -166,10 +167,16 @@ bool CaptureEngine::RejectedForPose(const Eigen::Vector3d& mean_counts) {
   return !pose.ok;
 }
 
-void CaptureEngine::CheckSettledStatic(double /*t_s*/) {
+void CaptureEngine::CheckSettledStatic(double t_s) {
   live_ = settle_.Verdict();
+  settle_wait_.clear();
   if (!settle_.full() || !live_.stable) return;
   if (RejectedForPose(live_.mean_counts)) return;
+  // Still, in the right pose, but known to need longer to settle (the request's wait).
+  if (const double left_s = request_.settle_wait_s - (t_s - t_start_s_); left_s > 0.0) {
+    settle_wait_ = fmt::format("{}; waiting {:.0f} s more", request_.settle_wait_reason, std::ceil(left_s));
+    return;
+  }
   BeginCapture();
 }
 
@@ -328,6 +335,7 @@ CaptureSnapshot CaptureEngine::Snapshot() const {
   snap.reason = reason_;
   if (state_ == CaptureState::kSettling) {
     snap.reason = request_.kind == CaptureKind::kStatic ? live_.reason : turntable_verdict_.reason;
+    snap.settle_wait = settle_wait_;
   }
   return snap;
 }

@@ -81,6 +81,9 @@ struct CaptureSnapshot {
   std::string reason;
   double elapsed_s = 0.0;   // sample time since the first sample fed, s
   int attempts = 0;         // captures started (1 + retries)
+  // kSettling, static: still and in the right pose, waiting out the request's settle_wait_s:
+  // what for and how long, in words ("...; waiting 12 s more"); empty otherwise.
+  std::string settle_wait;
   StabilityVerdict stability;  // static: the live numbers of the window being judged
   TurntableVerdict turntable;  // turntable: the last verdict
 };
@@ -135,6 +138,7 @@ class CaptureEngine {
 
   CaptureState state_ = CaptureState::kSettling;
   std::string reason_;
+  std::string settle_wait_;  // Snapshot().settle_wait
   int attempts_ = 0;
   double t_start_s_ = kNaN;       // first sample fed (since Restart)
   double t_last_s_ = kNaN;

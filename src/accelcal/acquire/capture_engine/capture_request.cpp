@@ -14,6 +14,8 @@ std::string CaptureRequest::Validate() const {
     return fmt::format("timeout_s is {} s, must be longer than the capture ({} s)", timeout_s,
                        duration_s);
   if (stop_samples < 0) return fmt::format("stop_samples is {}, must be >= 0 (0: by duration_s)", stop_samples);
+  if (!(std::isfinite(settle_wait_s) && settle_wait_s >= 0.0))
+    return fmt::format("settle_wait_s is {}, must be >= 0 s", settle_wait_s);
   if (kind == CaptureKind::kTurntable) return turntable.Validate();
   if (!(expected.up.allFinite() && expected.up.norm() > 0.0))
     return "the expected up direction must be a finite, non-zero vector";

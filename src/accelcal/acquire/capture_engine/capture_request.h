@@ -28,6 +28,13 @@ struct CaptureRequest {
   // plan's stop rule, calibration/capture_stop_rule.h), not on duration_s; duration_s is then
   // the time it is expected to take (for the give-up and the time shown).
   long stop_samples = 0;
+  // Static: capturing starts no earlier than this long after the first sample, however still
+  // the sensor is, s (>= 0; 0: no wait): a sensor seen still settling after the session's
+  // earlier changes of pose is given the time it needs (app/wizard/settling_wait.h). The
+  // timeout must leave room for it and the capture.
+  double settle_wait_s = 0.0;
+  // What the wait is for, in bench words, said while it lasts.
+  std::string settle_wait_reason;
 
   std::string Validate() const;
 };

@@ -218,7 +218,7 @@ void IioSource::DecodeRecords(ReadResult* result) {
                                             "overrun: the records were not read fast enough, or the "
                                             "device skipped them)",
                                             lost, lost == 1 ? "" : "s", s.t_s - dt_s, s.t_s)),
-                          result);
+                          result, SourceNoticeKind::kSamplesLost);
       }
     } else {
       s.t_s = std::isfinite(period_s) ? static_cast<double>(records_) * period_s : WallNowS() - t0_wall_s_;

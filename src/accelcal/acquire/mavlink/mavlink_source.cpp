@@ -128,7 +128,9 @@ ReadResult MavlinkSource::Read(double timeout_s, std::vector<Sample>* out) {
   return result;
 }
 
-void MavlinkSource::Notice(const std::string& text) { tracker_.OnNotice(text, &Events()); }
+void MavlinkSource::Notice(const std::string& text, SourceNoticeKind kind) {
+  tracker_.OnNotice(text, &Events(), kind);
+}
 
 void MavlinkSource::OnLinkUp() { tracker_.OnLinkUp(WallNowS(), &Events()); }
 
@@ -200,7 +202,7 @@ void MavlinkSource::FallBackToDataStream(const std::string& why) {
                                  "with REQUEST_DATA_STREAM instead (older firmware's way; it is "
                                  "never acknowledged)",
                                  why, MessageName(WantedMessage()), spec_.rate_hz, rate);
-  Notice(fmt::format("{}: {}", connection_.LinkName(), request_outcome_));
+  Notice(fmt::format("{}: {}", connection_.LinkName(), request_outcome_), SourceNoticeKind::kRateRequest);
 }
 
 void MavlinkSource::OnImu(const ImuReading& reading) {
@@ -242,7 +244,8 @@ void MavlinkSource::ChooseIfDue(double now_s) {
     if (Preference(message) < Preference(best)) best = message;
   Choose(best);
   Notice(fmt::format("{}: no HIGHRES_IMU of IMU {} came; reading {} instead", connection_.LinkName(),
-                     spec_.imu, MessageName(best)));
+                     spec_.imu, MessageName(best)),
+         SourceNoticeKind::kCoarserReadings);
   const std::vector<ImuReading> held = std::move(held_[best]);
   held_.clear();
   for (const ImuReading& r : held) Emit(r);
@@ -277,7 +280,8 @@ void MavlinkSource::Emit(const ImuReading& reading) {
     Notice(fmt::format("{}: {} rebooted (its clock went back from {:.3f} s to {:.3f} s): the samples "
                        "go on after a gap of {:.1f} s",
                        connection_.LinkName(), connection_.vehicle().Describe(), last_vehicle_t_s_,
-                       reading.time_s, gap_s));
+                       reading.time_s, gap_s),
+           SourceNoticeKind::kRestarted);
   }
   s.t_s = reading.time_s + offset_s_;
   if (!std::isnan(last_t_s_) && s.t_s <= last_t_s_) {

@@ -93,7 +93,7 @@ class MavlinkSource final : public SampleSource, private mavlink::ConnectionObse
   void OnBadFrames(long count, const std::string& latest) override;
 
   ReadResult& Events() { return current_ != nullptr ? *current_ : scratch_; }
-  void Notice(const std::string& text);
+  void Notice(const std::string& text, SourceNoticeKind kind);
   void OnImu(const mavlink::ImuReading& reading);
   void AdvanceRequest(double now_s);
   void SendRateRequest();

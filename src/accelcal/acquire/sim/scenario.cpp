@@ -99,6 +99,11 @@ double Scenario::CaptureDurationS(int index) const {
   return std::isnan(d) ? bench.capture_duration_s : d;
 }
 
+std::string LabSpec::GravityAnswer(double bench_gravity_mps2) const {
+  if (gravity != "measured") return gravity;
+  return fmt::format("{:.5f} +- {:g}", bench_gravity_mps2, gravity_sigma_mps2);
+}
+
 double Scenario::SessionDurationS() const {
   double total = 0.0;
   for (int i = 0; i < static_cast<int>(captures.size()); ++i) {
@@ -125,6 +130,11 @@ std::string Scenario::Validate() const {
     }
   }
   if (!(effects.rpm_scale > -1.0)) return "effects.rpm_scale must be greater than -1";
+  if (!effects.settling_share.allFinite() || (effects.settling_share.array() < 0.0).any() ||
+      (effects.settling_share.array() >= 1.0).any())
+    return "effects.settling_share must be within 0 (included) and 1 on each axis";
+  if (!(effects.settling_tau_s > 0.0) || !std::isfinite(effects.settling_tau_s))
+    return "effects.settling_tau_s must be positive";
   if (!bench.table_tilt_deg.allFinite() || (bench.table_tilt_deg.array().abs() > 30.0).any())
     return "bench.table_tilt_deg must be within +-30 deg";
   return ValidateTechnician(technician);

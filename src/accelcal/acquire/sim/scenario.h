@@ -109,6 +109,12 @@ struct EffectsSpec {
   Eigen::Vector3d size_effect_m = Eigen::Vector3d::Zero();
   // Spin axis tilted from vertical, rad: gravity turns once per revolution in the table frame.
   double turntable_tilt_rad = 0.0;
+  // Settling after a change of pose (the package's anelastic after-effect, the mount's creep):
+  // this share of each axis' reading lags what it should read, relaxing toward it with the time
+  // constant settling_tau_s (first order), so a capture started soon after a change of pose
+  // still carries part of the previous pose. 0 (the default): none; each share in [0, 1).
+  Eigen::Vector3d settling_share = Eigen::Vector3d::Zero();
+  double settling_tau_s = 15.0;  // s; > 0
   std::vector<Bump> bumps;
 };
 
@@ -174,6 +180,26 @@ struct Technician {
   std::vector<Mistake> mistakes;
 };
 
+// [lab]: what the virtual bench's lab owns and knows, offered at the wizard's welcome when the
+// source is the virtual bench (ui/cli/wizard.cpp), so that a session taking every default is
+// what a good lab would do (issue 27). Absent: this good lab. A scenario whose fault is the
+// lab's (it does not know its gravity) states it.
+struct LabSpec {
+  // The welcome's gravity answer: "measured" is the bench's own gravity_mps2 as the lab measured
+  // it, with `gravity_sigma_mps2`; anything else is offered as typed ("standard", "lat 45").
+  std::string gravity = "measured";
+  double gravity_sigma_mps2 = 2e-5;  // a measured gravity's standard uncertainty, m/s^2
+  // The welcome's equipment answer (app/wizard/equipment_input.h): the items as the lab has
+  // them, each identified, the radius read to 0.03 mm and the speed checked to 0.02 % with
+  // calibrated instruments; "keep" keeps the procedure's (its example identifications).
+  std::string equipment =
+      "ruler id SIM-RUL-01 u 0.03 cal SIM-CAL-2025-017; turntable id SIM-TT-01 u 0.02 cal "
+      "SIM-CAL-2025-018; level id SIM-LVL-01; prism id SIM-PR-01";
+
+  // The welcome's gravity answer for a bench of `bench_gravity_mps2`.
+  std::string GravityAnswer(double bench_gravity_mps2) const;
+};
+
 struct Scenario {
   std::string source_name;  // file the scenario came from, for messages ("<default>" in code)
   SensorSpec sensor;
@@ -181,6 +207,7 @@ struct Scenario {
   BenchSpec bench;
   EffectsSpec effects;
   Technician technician;
+  LabSpec lab;
   std::vector<CapturePlan> captures;
 
   // Length of capture `index` of the plan, s.

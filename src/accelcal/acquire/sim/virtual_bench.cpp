@@ -79,6 +79,22 @@ void VirtualBench::LevelTurntable(double keep) { turntable_tilt_rad_ *= keep; }
 void VirtualBench::Reseed(std::uint64_t seed) {
   rng_.seed(seed);
   bias_noise_.Reset(seed ^ kBiasNoiseSeedMix);
+  lagged_t_s_ = kNaN;
+}
+
+// First order: the lagging part moves toward the ideal reading by 1 - exp(-dt / tau) over dt
+// (a reading earlier than the last one sees it unchanged).
+Eigen::Vector3d VirtualBench::Settle(const Eigen::Vector3d& ideal_counts, double t_s) {
+  const Eigen::Vector3d& share = scenario_.effects.settling_share;
+  if (share.isZero()) return ideal_counts;
+  if (std::isnan(lagged_t_s_)) {
+    lagged_counts_ = ideal_counts;
+    lagged_t_s_ = t_s;
+  } else if (t_s > lagged_t_s_) {
+    lagged_counts_ += (ideal_counts - lagged_counts_) * (1.0 - std::exp(-(t_s - lagged_t_s_) / scenario_.effects.settling_tau_s));
+    lagged_t_s_ = t_s;
+  }
+  return ideal_counts - share.cwiseProduct(ideal_counts - lagged_counts_);
 }
 
 Eigen::Matrix3d VirtualBench::RandomPlacementRotation() {
@@ -200,7 +216,7 @@ Eigen::Vector3d VirtualBench::IdealRaw(const Eigen::Matrix3d& f_per_axis_mps2, d
 
 Sample VirtualBench::MeasurePerAxis(const Eigen::Matrix3d& f_per_axis_mps2, double t_s) {
   std::normal_distribution<double> unit;
-  Eigen::Vector3d raw = IdealRaw(f_per_axis_mps2, t_s) + bias_noise_.Advance(t_s);
+  Eigen::Vector3d raw = Settle(IdealRaw(f_per_axis_mps2, t_s), t_s) + bias_noise_.Advance(t_s);
   for (int i = 0; i < 3; ++i) raw(i) += scenario_.sensor.noise_counts(i) * unit(rng_);
   const double lo = scenario_.adc.MinCounts();
   const double hi = scenario_.adc.MaxCounts();

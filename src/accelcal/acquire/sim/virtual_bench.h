@@ -128,9 +128,15 @@ class VirtualBench {
   Eigen::Vector3d SpecificForceAt(const Mounting& mounting, double t_s,
                                   const Eigen::Vector3d& offset_platform_m) const;
 
+  // The reading with its lagging share (EffectsSpec::settling_share): `ideal_counts` at `t_s`.
+  Eigen::Vector3d Settle(const Eigen::Vector3d& ideal_counts, double t_s);
+
   Scenario scenario_;
   std::mt19937_64 rng_;
   BiasNoise bias_noise_;
+  // The lagging part's state: what it reads now, and when it was last advanced (NaN: not yet).
+  Eigen::Vector3d lagged_counts_ = Eigen::Vector3d::Zero();
+  double lagged_t_s_ = kNaN;
   double session_duration_s_ = 0.0;
   Eigen::Vector2d table_tilt_deg_;  // as the feet are now
   double turntable_tilt_rad_;       // as the turntable stands now

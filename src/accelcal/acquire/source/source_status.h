@@ -31,6 +31,17 @@ struct TimeGap {
   double missing_s = kNaN;   // (t_after - t_before) minus one median interval: time with no data
 };
 
+// What kind of thing a notice tells (SourceStatus::last_notice_kind), so that a front end can say
+// it in the bench's words without reading the source's own sentence.
+enum class SourceNoticeKind {
+  kOther,
+  kRestarted,       // the device rebooted (its clock went back): the samples go on after a gap
+  kRateRequest,     // the rate request was refused or unanswered: asked another way
+  kCoarserReadings, // the preferred message did not come: a coarser one is read instead
+  kDeviceSilent,    // the device stopped answering (no heartbeat): gone, rebooting or unplugged
+  kSamplesLost,     // samples the device made never arrived (a buffer overrun)
+};
+
 struct SourceStatus {
   LinkState link = LinkState::kConnecting;
   // Why the link is not up, when known: "read /dev/ttyUSB0: Input/output error",
@@ -60,6 +71,7 @@ struct SourceStatus {
   // The latest event that is neither a sample nor an error: "system 1 rebooted ...", "the
   // vehicle refused SET_MESSAGE_INTERVAL ...". Empty when none.
   std::string last_notice;
+  SourceNoticeKind last_notice_kind = SourceNoticeKind::kOther;
 
   // One line for a status bar: "up, 100.0 Hz, 1234 samples, 0 malformed, 0 gaps".
   std::string BriefReport() const;

@@ -116,11 +116,12 @@ void StatusTracker::Tick(double now_s, ReadResult* result, const std::string& si
 void StatusTracker::OnSilenceReason(const std::string& silence, double now_s, ReadResult* result) {
   if (status_.link == LinkState::kDead && dead_of_silence_)
     status_.link_error = fmt::format("no sample for {:.1f} s: {}", now_s - quiet_since_s_, silence);
-  OnNotice(silence, result);
+  OnNotice(silence, result, SourceNoticeKind::kDeviceSilent);
 }
 
-void StatusTracker::OnNotice(const std::string& notice, ReadResult* result) {
+void StatusTracker::OnNotice(const std::string& notice, ReadResult* result, SourceNoticeKind kind) {
   status_.last_notice = notice;
+  status_.last_notice_kind = kind;
   result->notice = true;
 }
 

@@ -43,7 +43,8 @@ class StatusTracker {
   // notice, and, when the link is dead for want of samples, its error says the new reason.
   void OnSilenceReason(const std::string& silence, double now_s, ReadResult* result);
   // Something the source noticed that is neither a sample nor an error (status().last_notice).
-  void OnNotice(const std::string& notice, ReadResult* result);
+  void OnNotice(const std::string& notice, ReadResult* result,
+                SourceNoticeKind kind = SourceNoticeKind::kOther);
   // The stream's unit and resolution, once the source knows them.
   void SetUnit(const ReadingUnit& unit, double resolution_counts);
   void SetLostFrames(long lost_frames) { status_.lost_frames = lost_frames; }

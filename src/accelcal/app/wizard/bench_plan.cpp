@@ -81,6 +81,14 @@ double BenchPlan::CaptureS(const ProcedureStep& step) const {
   return step.duration_s;
 }
 
+double BenchPlan::StepLeftS(const ProcedureStep& step, double step_estimate_s) const {
+  if (LeavesOut(step)) return 0.0;
+  if (fixed_s_ <= 0.0 && plan_.For(step.id) == nullptr) return step_estimate_s;
+  const StepAcquires a = InfoOf(step.kind).acquires;
+  if (a != StepAcquires::kStaticCapture && a != StepAcquires::kTurntableCapture) return step_estimate_s;
+  return std::max(step_estimate_s - step.duration_s, 0.0) + CaptureS(step);
+}
+
 void BenchPlan::Apply(const ProcedureStep& step, CaptureRequest* request) const {
   if (fixed_s_ <= 0.0 && plan_.For(step.id) == nullptr) return;  // the step's own duration
   const double capture_s = CaptureS(step);

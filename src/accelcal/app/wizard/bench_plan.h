@@ -40,6 +40,12 @@ class BenchPlan {
   // duration (no count) for a step the plan does not hold.
   double CaptureS(const ProcedureStep& step) const;
   void Apply(const ProcedureStep& step, CaptureRequest* request) const;
+  // The session's time left for `step` whose kind estimates `step_estimate_s` from its own
+  // duration (time_estimate.h): the plan's capture length instead of the step's; 0 for a step
+  // the plan leaves out (it is skipped).
+  double StepLeftS(const ProcedureStep& step, double step_estimate_s) const;
+  // The plan leaves `step` out: an optional capture that buys nothing for this sensor.
+  bool LeavesOut(const ProcedureStep& step) const { return fixed_s_ <= 0.0 && plan_.LeftOut(step.id); }
 
   // The welcome's line: "This plan reaches the procedure's target in about 7 min at the bench
   // (fixed 10 s captures: about 13 min)", or why it cannot and how long it would take.

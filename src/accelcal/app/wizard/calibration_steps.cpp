@@ -1,11 +1,15 @@
 #include "accelcal/app/wizard/calibration_steps.h"
 
+#include <algorithm>
 #include <sstream>
 
 #include <fmt/format.h>
 
 #include "accelcal/app/analyze_recording.h"
 #include "accelcal/app/wizard/diagnosis_words.h"
+#include "accelcal/app/wizard/fit_words.h"
+#include "accelcal/app/wizard/next_steps.h"
+#include "accelcal/app/wizard/session_gaps.h"
 #include "accelcal/analysis/noise_analysis.h"
 #include "accelcal/app/noise_records.h"
 #include "accelcal/base/error.h"
@@ -130,9 +134,12 @@ StepOutcome CalibrationSteps::Fit() {
     out.hint = "r runs the fit again; b goes back to a skipped step to capture it";
     return out;
   }
-  out.lines = SplitLines(FormatFitReport(o.MakeCalibration(false), fit));
-  const std::vector<std::string> gravity = WrapWords("Gravity: " + gravity_.Describe(), 78);
-  out.lines.insert(out.lines.begin(), gravity.begin(), gravity.end());
+  // Plain words on the screen (fit_words.h); the statistics one key away.
+  const Calibration cal = o.MakeCalibration(false);
+  out.lines = WrapWords("Gravity: " + gravity_.Describe(), 78);
+  out.details = out.lines;
+  for (std::string& line : FitInPlainWords(cal)) out.lines.push_back(std::move(line));
+  for (std::string& line : SplitLines(FormatFitReport(cal, fit))) out.details.push_back(std::move(line));
   return out;
 }
 
@@ -156,6 +163,18 @@ StepOutcome CalibrationSteps::Diagnosis() {
   return out;
 }
 
+SessionGaps CalibrationSteps::GapsOf(const CalibrationOutcome& o, const Calibration& cal,
+                                     const SessionGaps& session_gaps) {
+  SessionGaps gaps = session_gaps;
+  left_out_by_fit_.clear();
+  const std::vector<std::string> left_out = AddLeftOutByTheFit(procedure_, model_, cal, &gaps);
+  for (const ProcedureStep& s : procedure_.steps)
+    if (s.required && std::find(left_out.begin(), left_out.end(), s.id) != left_out.end())
+      left_out_by_fit_.push_back(s.id);
+  gaps.gravity_ambiguity = GravityAmbiguityNote(gravity_, o.diagnosis.adopted_names());
+  return gaps;
+}
+
 ReportInputs CalibrationSteps::Inputs(const Calibration& cal, const ReportMeta& meta,
                                       const SessionGaps& gaps) const {
   ReportInputs in;
@@ -168,6 +187,7 @@ ReportInputs CalibrationSteps::Inputs(const Calibration& cal, const ReportMeta& 
   in.limits = procedure_.limits;
   in.equipment = equipment_;
   in.nominal_bias_counts = procedure_.nominal.bias_counts;
+  in.nominal_scale_counts_per_mps2 = procedure_.nominal.scale_counts_per_mps2;
   in.gaps = gaps;
   return in;
 }
@@ -184,23 +204,24 @@ StepOutcome CalibrationSteps::Report(bool adopt_effects, const ReportMeta& meta,
     return out;
   }
   const Calibration cal = o.MakeCalibration(adopt);
-  SessionGaps gaps = session_gaps;
-  gaps.gravity_ambiguity = GravityAmbiguityNote(gravity_, o.diagnosis.adopted_names());
+  const SessionGaps gaps = GapsOf(o, cal, session_gaps);
   model_.RecordResult(SessionResultJsonText(cal, gaps));
-  out.lines = SplitLines(FormatFitReport(cal, summary));
-  const std::vector<std::string> gravity = WrapWords("Gravity: " + gravity_.Describe(), 78);
-  out.lines.insert(out.lines.begin(), gravity.begin(), gravity.end());
-  out.lines.push_back(adopt ? fmt::format("Effects adopted: {}", fmt::join(o.diagnosis.adopted_names(), ", "))
-                            : "Model: the nine-parameter base model");
   const ReportInputs in = Inputs(cal, meta, gaps);
   const ReportModel verdict = BuildReportModel(in);
+  const std::vector<std::string> next = NextSteps(in, verdict, session_name_, left_out_by_fit_);
+  // The verdict first, on the step's first screen: what failed, what is missing, what to do,
+  // where the report is; then the fit behind it.
+  const auto add = [&](const std::string& text, size_t indent) {
+    for (std::string& line : WrapWords(std::string(indent, ' ') + text, 78)) out.lines.push_back(std::move(line));
+  };
   out.lines.push_back(fmt::format("Verdict: {}", VerdictToString(verdict.verdict)));
+  for (const LimitCheck& c : verdict.checks)
+    if (!c.pass) add("not met: " + (c.why.empty() ? c.what : c.why), 2);
   for (const SessionGaps::Step& s : gaps.steps)
-    for (const std::string& line : WrapWords(fmt::format("  missing: {} ({}{}): {}", s.title, s.id,
-                                                         s.required ? ", required" : "", s.why), 78))
-      out.lines.push_back(line);
-  for (const std::string& why : verdict.incomplete)
-    for (const std::string& line : WrapWords("  INCOMPLETE: " + why, 78)) out.lines.push_back(line);
+    add(fmt::format("missing: {} ({}{}): {}", s.title, s.id, s.required ? ", required" : "", s.why), 2);
+  for (const std::string& why : verdict.incomplete) add("INCOMPLETE: " + why, 2);
+  if (!next.empty()) out.lines.push_back("Next:");
+  for (const std::string& step : next) add("- " + step, 2);
   std::vector<std::string> paths;
   if (outputs_ != nullptr) {
     try {
@@ -210,7 +231,14 @@ StepOutcome CalibrationSteps::Report(bool adopt_effects, const ReportMeta& meta,
       out.lines.push_back(std::string("The report was not written: ") + e.what());
     }
   }
-  final_summary_ = BuildFinalSummary(verdict, paths);
+  out.lines.push_back("");
+  add("Gravity: " + gravity_.Describe(), 0);
+  for (std::string& line : FitInPlainWords(cal)) out.lines.push_back(std::move(line));
+  out.lines.push_back(adopt ? fmt::format("Effects adopted: {}", fmt::join(o.diagnosis.adopted_names(), ", "))
+                            : "Model: the nine-parameter base model");
+  final_summary_ = BuildFinalSummary(verdict, paths, next);
+  out.details = final_summary_->details;
+  for (std::string& line : SplitLines(FormatFitReport(cal, summary))) out.details.push_back(std::move(line));
   return out;
 }
 
@@ -218,11 +246,11 @@ void CalibrationSteps::Recap(bool adopt_effects, const ReportMeta& meta, const S
   const CalibrationOutcome& o = Run();
   const bool adopt = adopt_effects && !o.diagnosis.adopted.empty();
   if (!o.Fit(adopt).IsUsable()) return;  // the report step said so; nothing to recap
-  SessionGaps gaps = session_gaps;
-  gaps.gravity_ambiguity = GravityAmbiguityNote(gravity_, o.diagnosis.adopted_names());
-  const ReportModel verdict = BuildReportModel(Inputs(o.MakeCalibration(adopt), meta, gaps));
-  final_summary_ = BuildFinalSummary(verdict, outputs_ != nullptr ? outputs_->ReportPaths()
-                                                                 : std::vector<std::string>{});
+  const Calibration cal = o.MakeCalibration(adopt);
+  const ReportInputs in = Inputs(cal, meta, GapsOf(o, cal, session_gaps));
+  const ReportModel verdict = BuildReportModel(in);
+  final_summary_ = BuildFinalSummary(verdict, outputs_ != nullptr ? outputs_->ReportPaths() : std::vector<std::string>{},
+                                     NextSteps(in, verdict, session_name_, left_out_by_fit_));
 }
 
 // The analysis of a record step: read back from the journal one chunk at a time (a 12-hour

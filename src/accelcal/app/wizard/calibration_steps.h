@@ -53,6 +53,9 @@ class CalibrationSteps {
 
   // The verdict and headline numbers of the last Report (final_summary.h); nullptr before one.
   const FinalSummary* final_summary() const { return final_summary_ ? &*final_summary_ : nullptr; }
+  // The required capture steps whose capture the last Report's (or Recap's) fit left out, in the
+  // procedure's order: the runs to offer to take again.
+  const std::vector<std::string>& left_out_by_fit() const { return left_out_by_fit_; }
 
   // The current pipeline outcome (after Fit or Diagnosis); nullptr before.
   const CalibrationOutcome* outcome() const { return outcome_ ? &*outcome_ : nullptr; }
@@ -69,6 +72,10 @@ class CalibrationSteps {
 
  private:
   const CalibrationOutcome& Run();
+  // The session's gaps for the calibration `cal` of `o`: `session_gaps` with the captures the
+  // fit left out (the required ones kept in left_out_by_fit_) and the gravity ambiguity of what
+  // the diagnosis found (adopted or not).
+  SessionGaps GapsOf(const CalibrationOutcome& o, const Calibration& cal, const SessionGaps& session_gaps);
   // What the report of `cal` is made from: the session's captures, inputs, limits, equipment.
   ReportInputs Inputs(const Calibration& cal, const ReportMeta& meta, const SessionGaps& gaps) const;
 
@@ -81,6 +88,7 @@ class CalibrationSteps {
   size_t outcome_captures_ = 0;  // the number of accepted captures outcome_ was computed from
   std::optional<NoiseFloor> lowered_floor_;
   std::optional<FinalSummary> final_summary_;
+  std::vector<std::string> left_out_by_fit_;
   std::vector<EquipmentItem> equipment_;  // the procedure's until set_equipment
 };
 

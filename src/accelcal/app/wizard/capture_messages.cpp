@@ -41,7 +41,7 @@ std::string Interrupted(StillnessCause cause) {
 
 std::string GaveUpBecause(StillnessCause cause) {
   switch (cause) {
-    case StillnessCause::kKnocked: return "the bench kept being knocked";
+    case StillnessCause::kKnocked: return "the bench kept being knocked or shaken";
     case StillnessCause::kMoving: return "the bench kept shaking";
     case StillnessCause::kDrifting: return "the sensor kept drifting";
     case StillnessCause::kNone: break;
@@ -55,6 +55,7 @@ CaptureMessage DescribeStatic(const CaptureSnapshot& snap) {
     case CaptureState::kCapturing: return {"keep hands off the bench", "", false};
     case CaptureState::kRetrying: return {Interrupted(CauseOfReason(snap.reason)), snap.reason, false};
     case CaptureState::kSettling: {
+      if (!snap.settle_wait.empty()) return {snap.settle_wait, "", true};
       const StillnessCause cause = snap.stability.judged ? CauseOfReason(live) : StillnessCause::kNone;
       if (snap.elapsed_s < kNormalSettleS || cause == StillnessCause::kNone)
         return {"still settling after you let go: wait", live, true};
@@ -89,6 +90,20 @@ StillnessCause CauseOfReason(const std::string& reason) {
 
 CaptureMessage DescribeCapture(const CaptureSnapshot& snap, bool turntable) {
   return turntable ? DescribeTurntable(snap) : DescribeStatic(snap);
+}
+
+std::string StillnessHint(const std::string& reason) {
+  if (reason.rfind("no stable capture within", 0) != 0) return "";
+  switch (CauseOfReason(reason)) {
+    case StillnessCause::kKnocked:
+    case StillnessCause::kMoving:
+      return "find what shakes or knocks the bench (a hand or cable on it, a pump or fan, a door, "
+             "footsteps) and stop it; Enter tries again";
+    case StillnessCause::kDrifting:
+      return "let the sensor warm up and the mount settle for a few minutes; Enter tries again";
+    case StillnessCause::kNone: break;
+  }
+  return "";
 }
 
 CaptureMessage DescribeEnded(const std::string& reason, double timeout_s) {

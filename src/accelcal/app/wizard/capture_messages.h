@@ -43,4 +43,9 @@ CaptureMessage DescribeCapture(const CaptureSnapshot& snap, bool turntable);
 // silent link are already said in words about the bench). `timeout_s`: the give-up time.
 CaptureMessage DescribeEnded(const std::string& reason, double timeout_s);
 
+// What to do at the bench when a capture was given up because the sensor was never still
+// (`reason` as for DescribeEnded): stop what shakes or knocks it, or let it warm up; empty for
+// any other reason.
+std::string StillnessHint(const std::string& reason);
+
 }  // namespace accelcal

@@ -26,7 +26,7 @@ std::string ApplySegment(const std::string& segment, std::vector<EquipmentItem>*
   for (EquipmentItem& e : *items)
     if (e.role == info->role) item = &e;
   if (item == nullptr) {
-    items->push_back({info->role, std::string(info->key), "", kNaN, ""});
+    items->push_back({info->role, std::string(info->key), "", kNaN, "", ""});
     item = &items->back();
   }
   std::string key;
@@ -36,6 +36,8 @@ std::string ApplySegment(const std::string& segment, std::vector<EquipmentItem>*
     if (!(words >> value)) return fmt::format("{}: '{}' needs a value after it", role_word, key);
     if (key == "id") {
       item->identification = value;
+    } else if (key == "cal") {
+      item->calibration = value;
     } else if (key == "u") {
       char* end = nullptr;
       const double v = std::strtod(value.c_str(), &end);
@@ -43,11 +45,12 @@ std::string ApplySegment(const std::string& segment, std::vector<EquipmentItem>*
         return fmt::format("{}: u must be a number >= 0 in {} (got '{}')", role_word, info->file_unit, value);
       item->standard_uncertainty = v * info->to_si;
     } else {
-      return fmt::format("{}: '{}' is not something to change: id or u", role_word, key);
+      return fmt::format("{}: '{}' is not something to change: id, u or cal", role_word, key);
     }
     changed = true;
   }
-  if (!changed) return fmt::format("{}: say what changes (id TEXT, u NUMBER in {})", role_word, info->file_unit);
+  if (!changed)
+    return fmt::format("{}: say what changes (id TEXT, u NUMBER in {}, cal CERTIFICATE)", role_word, info->file_unit);
   return "";
 }
 
@@ -77,8 +80,29 @@ std::string DescribeEquipment(const std::vector<EquipmentItem>& items) {
     if (!out.empty()) out += "; ";
     out += fmt::format("{} {} {}", InfoOf(e.role).key, e.identification.empty() ? "(no id)" : e.identification,
                        DescribeUncertainty(e));
+    if (!e.calibration.empty()) out += " (cal " + e.calibration + ")";
   }
   return out.empty() ? "none listed" : out;
+}
+
+}  // namespace accelcal
+
+namespace accelcal {
+
+EquipmentQuestionText EquipmentQuestion(const std::vector<EquipmentItem>& procedure_items,
+                                        const std::string& offered) {
+  const std::string answer = offered.empty() ? "keep" : offered;
+  const EquipmentAnswer shown = ApplyEquipmentAnswer(answer, procedure_items);
+  return {"Equipment: " + DescribeEquipment(shown.ok() ? shown.items : procedure_items) +
+              ". Enter keeps it; or change items: ruler id RUL-07 u 0.4 cal C-2291; turntable u "
+              "0.3 (u in mm, %, deg; cal: its calibration certificate)",
+          answer};
+}
+
+std::string EquipmentAnswerOver(const std::string& default_answer, const std::string& typed) {
+  if (typed.empty() || typed == "keep" || typed == default_answer || default_answer == "keep")
+    return typed.empty() || typed == "keep" ? default_answer : typed;
+  return default_answer + "; " + typed;
 }
 
 }  // namespace accelcal

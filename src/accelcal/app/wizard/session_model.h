@@ -46,6 +46,7 @@ class SessionModel final : public SessionJournal {
   std::map<std::string, std::map<std::string, std::string>> Inputs() const override { return inputs_; }
   std::map<std::string, std::string> DoneSteps() const override { return done_; }
   std::optional<std::string> Result() const override { return result_; }
+  int ResultCount() const override { return journal_.ResultCount(); }
   RecordSummary RecordSummaryOf(const std::string& step_id) const override;
   void VisitRecordChunks(const std::string& step_id,
                          const std::function<void(const RecordChunk&)>& visit) const override;

@@ -55,6 +55,9 @@ class StepController {
   virtual void Resume() {}
   // The session was resumed after its last step: what the step adds to the final screen.
   virtual void RecapAtEnd() {}
+  // After RecapAtEnd: the step has something to offer again and is entered instead of the final
+  // screen (the report: a required run the fit left out, to take again).
+  virtual bool OpensAgainAtEnd() const { return false; }
 
   // ---- view
   // The step's title, pose and expected up: on every screen of the step, its questions too.

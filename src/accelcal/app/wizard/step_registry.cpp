@@ -51,6 +51,28 @@ std::string StepInputHelp(std::string_view key) {
   return "";
 }
 
+// The kinds defined beside their controllers, one line each: KIND(the function of the kind's
+// controller file that returns its StepKindDefinition). Adding a kind adds its line here.
+#define ACCELCAL_STEP_KINDS(KIND) \
+  KIND(RepeatStepKind)            \
+  KIND(WriteBackStepKind)         \
+  /* the list ends here */
+
+#define ACCELCAL_DECLARE_STEP_KIND(definition) StepKindDefinition definition();
+ACCELCAL_STEP_KINDS(ACCELCAL_DECLARE_STEP_KIND)
+#undef ACCELCAL_DECLARE_STEP_KIND
+
+void RegisterStepKinds() {
+  static const bool registered = [] {
+#define ACCELCAL_REGISTER_STEP_KIND(definition) \
+  RegisterWizardStepKind(definition().info, definition().controller);
+    ACCELCAL_STEP_KINDS(ACCELCAL_REGISTER_STEP_KIND)
+#undef ACCELCAL_REGISTER_STEP_KIND
+    return true;
+  }();
+  (void)registered;
+}
+
 StepKind RegisterWizardStepKind(const StepKindInfo& info, StepControllerKind controller) {
   const StepKind kind = RegisterStepKind(info);
   if (FindController(kind) == nullptr) {

@@ -47,4 +47,18 @@ std::string StepInputHelp(std::string_view key);
 // it has one); its kind is returned.
 StepKind RegisterWizardStepKind(const StepKindInfo& info, StepControllerKind controller);
 
+// A kind defined beside its controller (steps/<kind>_step.cpp, a function returning this): its
+// row of the step-kind table and its controller, registered together by one line of
+// step_registry.cpp's list (ARCHITECTURE.md, "How to add a step kind").
+struct StepKindDefinition {
+  StepKindInfo info;
+  StepControllerKind controller;  // its `kind` is set when registered
+};
+
+// Registers every kind of step_registry.cpp's list. The procedure reader (io, below the wizard)
+// knows a kind only once it is registered: every program that reads a procedure calls this at
+// its start (ui/main.cpp, the test programs' main), before anything else. Calling it again does
+// nothing.
+void RegisterStepKinds();
+
 }  // namespace accelcal

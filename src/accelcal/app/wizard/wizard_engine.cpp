@@ -4,14 +4,19 @@
 #include "accelcal/app/wizard/wizard_engine.h"
 
 #include <algorithm>
+#include <utility>
 
 #include <fmt/core.h>
+#include <fmt/ranges.h>
 
+#include "accelcal/app/wizard/quantity_input.h"
+#include "accelcal/app/wizard/refit_answer.h"
 #include "accelcal/app/wizard/resume_summary.h"
 #include "accelcal/app/wizard/session_gaps.h"
 #include "accelcal/app/wizard/step_registry.h"
 #include "accelcal/app/wizard/time_estimate.h"
 #include "accelcal/base/error.h"
+#include "accelcal/base/utc_time.h"
 
 namespace accelcal {
 
@@ -55,11 +60,14 @@ void WizardEngine::ReadJournal() {
   if (!resumed_) return;
   resume_lines_.push_back(fmt::format("Resuming session {}: {} captures and {} steps already recorded.",
                                       options_.session_name, captures.size(), done.size()));
+  // The command line's flags this run does not use, and what would (a refit).
+  resume_lines_.insert(resume_lines_.end(), options_.notes.begin(), options_.notes.end());
   // In the procedure's order, with the steps' titles (resume_summary.h).
   for (std::string& line : ResumeSummaryLines(procedure_, model_, kWelcomeStepId))
     resume_lines_.push_back(std::move(line));
   if (done.count(kWelcomeStepId) != 0) {
     resume_lines_.push_back("  gravity: " + session_.gravity.Describe());
+    for (std::string& line : welcome_.DeviceResumeLines()) resume_lines_.push_back(std::move(line));
     AdvanceFrom(0);
   }
 }
@@ -79,13 +87,53 @@ void WizardEngine::EnterStep(int index) {
   session_.screen.hint.clear();
   if (!InSteps(current_)) {
     flow_ = Flow::kDone;
-    // Resumed after the end: the summary, not a bare "complete".
-    if (!session_.progressed)
-      for (const std::unique_ptr<StepController>& c : controllers_) c->RecapAtEnd();
+    // Resumed after the end: the summary, not a bare "complete"; a step with something to offer
+    // again (a run the fit left out) is entered instead.
+    if (session_.progressed) return;
+    for (const std::unique_ptr<StepController>& c : controllers_) c->RecapAtEnd();
+    for (size_t i = 0; i < controllers_.size(); ++i)
+      if (controllers_[i]->OpensAgainAtEnd()) {
+        opened_again_ = true;
+        return EnterStep(static_cast<int>(i));
+      }
+    // Finished with a calibration: its inputs may be corrected without a capture taken again.
+    if (resumed_ && session_.steps.final_summary() != nullptr) flow_ = Flow::kOfferRefit;
     return;
   }
   flow_ = Flow::kStep;
+  if (LeftOutByPlan()) {
+    // Said after what the screen already said (the capture just accepted), every step of a run
+    // of skips named.
+    if (plan_skipped_.empty()) notice_before_skips_ = session_.screen.notice;
+    plan_skipped_.push_back(fmt::format("'{}'", StepDisplayTitle(step())));
+    const bool one = plan_skipped_.size() == 1;
+    session_.screen.notice = fmt::format(
+        "{}{}{} skipped: the capture plan leaves {} out, {} nothing for this sensor (b takes {} anyway)",
+        notice_before_skips_, notice_before_skips_.empty() ? "" : "; ", fmt::join(plan_skipped_, ", "),
+        one ? "it" : "them", one ? "it buys" : "they buy", one ? "it" : "them");
+    return FinishStep("skipped");
+  }
+  plan_skipped_.clear();
   controllers_[static_cast<size_t>(current_)]->Enter();
+}
+
+// An optional step not yet taken that the capture plan leaves out (bench_plan.h: it buys nothing
+// for this sensor) is skipped on the way forward; b goes back to it, and it is then taken.
+bool WizardEngine::LeftOutByPlan() {
+  const ProcedureStep& s = step();
+  if (s.required || Redoing() || model_.StepRecorded(s.id)) return false;
+  session_.bench_plan.Refresh(session_);
+  return session_.bench_plan.LeavesOut(s);
+}
+
+// After a retake asked by a step (the report), back to that step even when it was recorded in an
+// earlier run: it reports again with the run taken again.
+void WizardEngine::ContinueFromFirstOpenStep() {
+  const int back_to = std::exchange(retake_return_, -1);
+  int index = 0;
+  const int n = static_cast<int>(procedure_.steps.size());
+  while (index < n && model_.StepRecorded(procedure_.steps[static_cast<size_t>(index)].id)) ++index;
+  EnterStep(back_to >= 0 ? std::min(index, back_to) : index);
 }
 
 void WizardEngine::FinishStep(const std::string& outcome) {
@@ -118,7 +166,36 @@ void WizardEngine::HandleConfirmSkip(const Intent& intent) {
 
 void WizardEngine::Quit() {
   session_.acq.Stop();
-  quit_ = true;
+  // Leaving a finished session's refit offer leaves it as it was: nothing to resume.
+  quit_ = flow_ != Flow::kOfferRefit;
+  flow_ = Flow::kDone;
+}
+
+// The answer to "Refit with new inputs?": Enter leaves the session as it is; corrections refit
+// it (the earlier calibration kept), or are refused with why and asked again.
+void WizardEngine::HandleOfferRefit(const Intent& intent) {
+  if (intent.kind == IntentKind::kAccept || (intent.kind == IntentKind::kSubmitText && IsBlank(intent.text))) {
+    flow_ = Flow::kDone;
+    return;
+  }
+  if (intent.kind != IntentKind::kSubmitText) return;
+  RefitAnswer answer = ParseRefitAnswer(intent.text);
+  if (!answer.ok()) {
+    refit_error_ = answer.error;
+    return;
+  }
+  RefitRequest& request = answer.request;
+  request.session_name = options_.session_name;
+  request.report_beside = options_.report_beside;
+  request.source = session_.source.Describe();
+  request.now_utc = UtcNowIso8601();
+  try {
+    refit_ = RefitSession(model_, procedure_, request);
+  } catch (const Error& e) {
+    refit_error_ = e.what();
+    return;
+  }
+  refit_error_.clear();
   flow_ = Flow::kDone;
 }
 
@@ -134,7 +211,7 @@ void WizardEngine::UpdateLive(const std::vector<Sample>& chunk) {
 void WizardEngine::Poll(double timeout_s) {
   SampleSource& source = session_.source;
   std::vector<Sample> chunk;
-  source.Read(timeout_s, &chunk);
+  source_notices_.Update(source.Read(timeout_s, &chunk), source.status());
   session_.clock.Shift(&chunk, model_);
   if (!session_.clock.note().empty() && !clock_noted_) {
     clock_noted_ = true;
@@ -167,11 +244,13 @@ void WizardEngine::Poll(double timeout_s) {
 void WizardEngine::Handle(const Intent& intent) {
   if (flow_ == Flow::kDone) return;
   session_.screen.notice.clear();  // a confirmation stays until the next key
+  source_notices_.Acknowledge();   // so does what the source noticed
   if (intent.kind == IntentKind::kQuit) return Quit();
   switch (flow_) {
     case Flow::kStep: return Current()->Handle(intent);
     case Flow::kConfirmSkip: return HandleConfirmSkip(intent);
     case Flow::kConfirmRedo: return HandleConfirmRedo(intent);
+    case Flow::kOfferRefit: return HandleOfferRefit(intent);
     case Flow::kDone: return;
   }
 }
@@ -179,7 +258,13 @@ void WizardEngine::Handle(const Intent& intent) {
 // The steps not yet recorded from the current one (or the next, once the current one runs).
 double WizardEngine::SessionLeftS(bool current_started) const {
   const int first = current_started ? current_ + 1 : current_;
-  return RemainingEstimateS(procedure_, first, [this](const ProcedureStep& s) { return model_.StepRecorded(s.id); });
+  // Each capture as long as the plan has it (bench_plan.h), the steps it leaves out not at all.
+  double total_s = 0.0;
+  for (int i = std::max(first, 0); InSteps(i); ++i) {
+    const ProcedureStep& s = procedure_.steps[static_cast<size_t>(i)];
+    if (!model_.StepRecorded(s.id)) total_s += session_.bench_plan.StepLeftS(s, StepEstimateS(s));
+  }
+  return total_s;
 }
 
 }  // namespace accelcal

@@ -21,7 +21,9 @@
 // - q saves and leaves at any moment.
 // - Resume: on construction the journal is read (each step's controller reads its part):
 //   recorded steps are skipped and the wizard continues at the first missing one, with a
-//   summary of what the session holds.
+//   summary of what the session holds. A finished session opened again offers a refit with
+//   new inputs (a corrected gravity, equipment or identification: app/refit_session.h); Enter
+//   leaves it as it is.
 //
 // Journal contract: an accepted capture is recorded (RecordCapture) before the wizard moves on,
 // inputs with RecordInput, finished steps without a capture with RecordStepDone, so quitting or
@@ -33,11 +35,14 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "accelcal/acquire/source/sample_source.h"
+#include "accelcal/app/refit_session.h"
 #include "accelcal/app/wizard/session_model.h"
+#include "accelcal/app/wizard/source_notices.h"
 #include "accelcal/app/wizard/step_controller.h"
 #include "accelcal/app/wizard/steps/welcome_step.h"
 #include "accelcal/app/wizard/wizard_driver.h"
@@ -62,12 +67,16 @@ class WizardEngine final : public WizardDriver, private StepSequence {
   WizardView View() const override;
   // True once every step of the procedure is done (not merely left with q).
   bool completed() const { return flow_ == Flow::kDone && !quit_; }
+  // True when the session was left at a dead end (a fit refused, a capture refused again and
+  // again: SaveAndLeave), not by the technician's q: saved, but the job failed (exit status 1).
+  bool left_on_failure() const { return flow_ == Flow::kDone && left_on_failure_; }
 
  private:
   enum class Flow {
     kStep,         // the current step (the welcome included) is on screen
     kConfirmSkip,  // s was pressed: asking before the step is skipped
     kConfirmRedo,  // b reached an accepted capture: asking before it is taken again
+    kOfferRefit,   // a finished session opened again: "Refit with new inputs?" (Enter: no)
     kDone,         // finished or left
   };
 
@@ -78,18 +87,24 @@ class WizardEngine final : public WizardDriver, private StepSequence {
   const StepController* Current() const;
   void ReadJournal();
   void EnterStep(int index);
+  bool LeftOutByPlan();
   void AdvanceFrom(int index);
   void Quit();
   void HandleConfirmSkip(const Intent& intent);
+  void HandleOfferRefit(const Intent& intent);
   void UpdateLive(const std::vector<Sample>& chunk);
 
   // StepSequence: what the steps ask of the engine.
   void FinishStep(const std::string& outcome) override;
-  void ContinueFromFirstOpenStep() override { AdvanceFrom(0); }
+  void ContinueFromFirstOpenStep() override;
   void RestartStep() override { EnterStep(current_); }
   void AskSkip() override;
   void GoBack() override;
-  void SaveAndLeave() override { Quit(); }
+  void SaveAndLeave() override {
+    Quit();
+    left_on_failure_ = true;
+  }
+  void RetakeStep(const std::string& step_id) override;
   void RecordCapture(const Capture& capture) override;
   int ReplacedCaptureId() const override { return Redoing() ? redo_capture_id_ : 0; }
   double SessionLeftS(bool current_started) const override;
@@ -109,6 +124,8 @@ class WizardEngine final : public WizardDriver, private StepSequence {
   void SetFlowView(WizardView& v) const;
   void SetConfirmSkipView(WizardView& v) const;
   void SetDoneView(WizardView& v) const;
+  void SetOfferRefitView(WizardView& v) const;
+  void SetRefittedView(WizardView& v) const;
   void SetTimeView(WizardView& v) const;
 
   Procedure procedure_;
@@ -118,15 +135,23 @@ class WizardEngine final : public WizardDriver, private StepSequence {
   WizardSession session_;
   WelcomeStep welcome_;
   std::vector<std::unique_ptr<StepController>> controllers_;  // one per procedure step
+  SourceNotices source_notices_;  // what the source noticed, in the bench's words
 
   int current_ = -1;  // -1: the welcome; steps.size(): done
   Flow flow_ = Flow::kStep;
   bool resumed_ = false;
   std::vector<std::string> resume_lines_;  // what the journal held at construction
   bool clock_noted_ = false;
+  bool opened_again_ = false;  // a finished session's step entered again (OpensAgainAtEnd)
   bool quit_ = false;
+  bool left_on_failure_ = false;  // quit at a dead end (SaveAndLeave), not by q
+  std::vector<std::string> plan_skipped_;  // the steps of the run of plan skips being said
+  std::string notice_before_skips_;        // what the screen said before them
+  std::string refit_error_;             // kOfferRefit: why the last answer was refused
+  std::optional<RefitOutcome> refit_;   // the refit made at the end of this run, if any
 
   int redo_target_ = -1;     // kConfirmRedo: the step offered to be taken again
+  int retake_return_ = -1;   // a retake asked by a step (RetakeStep): the step to come back to
   std::string redo_of_;      // a redo runs: the journal step id of the capture it supersedes
   int redo_capture_id_ = 0;  // ... and that capture's id
   std::string redo_note_;          // what the last redo did, shown until the next capture

@@ -8,6 +8,7 @@
 
 #include <fmt/core.h>
 
+#include "accelcal/app/wizard/resume_summary.h"
 #include "accelcal/app/wizard/wizard_engine.h"
 
 namespace accelcal {
@@ -33,6 +34,15 @@ void WizardEngine::GoBack() {
     if (KeepsData(s.kind) && !has_capture && !kept) return EnterStep(i);
   }
   session_.screen.problem = "nothing to go back to: every earlier record is recorded and is kept";
+}
+
+void WizardEngine::RetakeStep(const std::string& step_id) {
+  for (size_t i = 0; i < procedure_.steps.size(); ++i) {
+    if (procedure_.steps[i].id != step_id || RedoableCapture(procedure_.steps[i]) == nullptr) continue;
+    redo_target_ = static_cast<int>(i);
+    retake_return_ = current_;
+    return StartRedo();
+  }
 }
 
 const JournalCapture* WizardEngine::RedoableCapture(const ProcedureStep& s) const {
@@ -72,11 +82,11 @@ void WizardEngine::StartRedo() {
 }
 
 void WizardEngine::CancelRedo() {
-  const std::string title = step().title;
+  const std::string title = StepDisplayTitle(step());
   const int kept = redo_capture_id_;
   redo_of_.clear();
   Current()->Halt();
-  AdvanceFrom(0);
+  ContinueFromFirstOpenStep();
   redo_note_ = fmt::format("Kept the earlier capture {} of '{}': nothing was replaced.", kept, title);
   redo_note_captures_ = model_.captures().size();
 }
@@ -94,7 +104,7 @@ void WizardEngine::RecordCapture(const Capture& capture) {
   redo_of_.clear();
   redo_note_ = fmt::format("'{}' taken again: capture {} replaces capture {} (kept in the session, "
                            "marked superseded, out of the fit and the report).",
-                           step().title, capture.id, old_id);
+                           StepDisplayTitle(step()), capture.id, old_id);
   redo_note_captures_ = model_.captures().size();
 }
 
@@ -109,14 +119,14 @@ void WizardEngine::SetConfirmRedoView(WizardView& v) const {
       "Take '{}' again? Its capture {} was accepted. The new capture replaces it once accepted; the "
       "old one stays in the session, marked superseded, out of the fit and the report. Enter takes "
       "it again, b looks further back, n keeps it.",
-      target.title, old != nullptr ? old->capture.id : 0);
+      StepDisplayTitle(target), old != nullptr ? old->capture.id : 0);
   v.keys = {{"Enter", "take it again"}, {"b", "further back"}, {"n", "keep it"}, {"q", "save and quit"}};
 }
 
 void WizardEngine::AddRedoLines(WizardView& v) const {
   if (Redoing() && flow_ != Flow::kDone) {
     v.lines.push_back(fmt::format("Taking '{}' again: capture {} stays until this one is accepted "
-                                  "(b or s keeps it).", step().title, redo_capture_id_));
+                                  "(b or s keeps it).", StepDisplayTitle(step()), redo_capture_id_));
     return;
   }
   // The outcome of the last redo, until the next capture.

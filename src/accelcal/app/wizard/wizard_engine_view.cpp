@@ -5,6 +5,7 @@
 
 #include <fmt/core.h>
 
+#include "accelcal/app/wizard/resume_summary.h"
 #include "accelcal/app/wizard/time_estimate.h"
 #include "accelcal/app/wizard/wizard_engine.h"
 
@@ -23,8 +24,9 @@ WizardView WizardEngine::View() const {
     v.live_g = procedure_.nominal.Calibrate(session_.live_counts).norm() / session_.gravity.gravity_mps2;
   v.problem = session_.screen.problem;
   v.hint = session_.screen.hint;
-  // The resume summary is shown until this run has recorded something of its own.
-  if (resumed_ && !session_.progressed) v.lines = resume_lines_;
+  // The resume summary is shown until this run has recorded something of its own; a finished
+  // session's step opened again says only the flags this run does not use before its own text.
+  if (resumed_ && !session_.progressed) v.lines = opened_again_ ? options_.notes : resume_lines_;
   if (c != nullptr) c->AddText(v.lines);
   // What the noise floor's checks said, beside the steps that acquire.
   const bool result_shown = flow_ == Flow::kStep && c != nullptr && c->ShowsResult();
@@ -34,6 +36,8 @@ WizardView WizardEngine::View() const {
   }
   v.noise_floor_text = session_.noise_floor.Describe();
   v.status = session_.source.Describe() + ": " + session_.source.status().BriefReport();
+  v.source_notice = source_notices_.text();
+  v.source_detail = source_notices_.detail();
   SetStepView(v);
   SetFlowView(v);
   SetTimeView(v);
@@ -57,17 +61,51 @@ void WizardEngine::SetFlowView(WizardView& v) const {
     case Flow::kStep: return Current()->SetView(v);
     case Flow::kConfirmSkip: return SetConfirmSkipView(v);
     case Flow::kConfirmRedo: return SetConfirmRedoView(v);
+    case Flow::kOfferRefit: return SetOfferRefitView(v);
     case Flow::kDone: return SetDoneView(v);
   }
+}
+
+// The refit this run made: what changed, the new verdict and numbers, the earlier result kept.
+void WizardEngine::SetRefittedView(WizardView& v) const {
+  const FinalSummary& summary = refit_->summary;
+  v.verdict = std::string(VerdictToString(summary.verdict));
+  v.prompt = summary.ending;
+  v.lines = {fmt::format("Refitted ({}), the captures fitted again with:", refit_->refit_step)};
+  if (refit_->changes.empty()) v.lines.push_back("  no input changed: fitted again as recorded");
+  for (const std::string& change : refit_->changes) v.lines.push_back("  " + change);
+  v.lines.insert(v.lines.end(), summary.lines.begin(), summary.lines.end());
+  v.lines.push_back(fmt::format("The earlier calibration{} kept in the session; `accelcal report {}` shows "
+                                "this one and lists what changed.",
+                                refit_->earlier_results == 1 ? " is" : "s are", options_.session_name));
+}
+
+// A finished session opened again: its verdict and numbers, and the offer to correct its inputs.
+void WizardEngine::SetOfferRefitView(WizardView& v) const {
+  const FinalSummary& summary = *session_.steps.final_summary();
+  v.screen = WizardScreen::kDone;
+  v.verdict = std::string(VerdictToString(summary.verdict));
+  v.prompt = fmt::format("This session is finished: {} in an earlier run. A wrong gravity, equipment or "
+                         "identification is corrected by fitting its captures again (the earlier calibration "
+                         "is kept). Refit it with new inputs?",
+                         v.verdict);
+  v.lines = options_.notes;
+  v.lines.insert(v.lines.end(), summary.lines.begin(), summary.lines.end());
+  v.input = InputRequest{"refit",
+                         "What changed (gravity 9.78030 +- 0.00002 or gravity lat -34.9 alt 43; equipment "
+                         "ruler id RUL-07 cal C-2291; device SN; operator NAME; place TEXT), or Enter to "
+                         "leave it as it is",
+                         "", refit_error_};
+  v.keys = {{"Enter", "leave it as it is"}, {"q", "leave"}};
 }
 
 void WizardEngine::SetConfirmSkipView(WizardView& v) const {
   v.screen = WizardScreen::kPlacePose;
   v.prompt = step().required
                  ? fmt::format("Skip '{}'? The procedure requires it: without it the report's verdict "
-                               "is INCOMPLETE. Press s again to skip it, Enter to do it.", step().title)
+                               "is INCOMPLETE. Press s again to skip it, Enter to do it.", StepDisplayTitle(step()))
                  : fmt::format("Skip '{}'? The report will list it as skipped. Press s again to skip "
-                               "it, Enter to do it.", step().title);
+                               "it, Enter to do it.", StepDisplayTitle(step()));
   v.keys = {{"s", "skip it"}, {"Enter", "do it"}, {"q", "save and quit"}};
 }
 
@@ -85,16 +123,20 @@ void WizardEngine::SetDoneView(WizardView& v) const {
   // The verdict and the headline numbers of this run's report (final_summary.h).
   if (const FinalSummary* summary = session_.steps.final_summary()) {
     v.verdict = std::string(VerdictToString(summary->verdict));
-    // The verdict is the summary's first line; the prompt does not say it again.
-    if (resumed_ && !session_.progressed) v.prompt = "Calibration complete (in an earlier run): nothing left to do.";
+    // The verdict is the summary's first line; the prompt says what it means ("Calibration
+    // complete." only for a PASS) and where the next steps are.
+    v.prompt = resumed_ && !session_.progressed ? EarlierEnding(summary->verdict) : summary->ending;
+    if (refit_) return SetRefittedView(v);
     v.lines = summary->lines;
+    // The flags this run did not use, and what would (a refit), before the summary.
+    if (resumed_ && !session_.progressed) v.lines.insert(v.lines.begin(), options_.notes.begin(), options_.notes.end());
   }
 }
 
 // Every screen but the final one says the time; a running capture or record has set its own
 // (it knows its progress).
 void WizardEngine::SetTimeView(WizardView& v) const {
-  if (flow_ == Flow::kDone || !v.time_text.empty()) return;
+  if (flow_ == Flow::kDone || flow_ == Flow::kOfferRefit || !v.time_text.empty()) return;
   v.session_left_s = SessionLeftS(false);
   if (!InSteps(current_)) {
     v.time_text = WaitingTimeText(kNaN, kNaN, v.session_left_s);

@@ -1,13 +1,23 @@
 // What a wizard session is started with (the command line's choices): its name, the defaults
-// the welcome offers, the quiet period of the noise floor, the clocks and where the report goes.
+// the welcome offers, the quiet period of the noise floor, the clocks, where the report goes and
+// what to say about the flags a resumed session does not use.
 #pragma once
 
 #include <functional>
 #include <string>
+#include <vector>
 
 #include "accelcal/base/gravity.h"
+#include "accelcal/session/equipment.h"
 
 namespace accelcal {
+
+// What the lab's register said of the bench's equipment (WizardOptions::check_equipment).
+struct WelcomeLabCheck {
+  std::vector<std::string> warnings;  // one line each: expired, running out, unknown to the lab
+  std::string unreachable;            // non-empty: the lab could not be reached, and why (one line)
+};
+class MavlinkSource;
 
 struct WizardOptions {
   std::string session_name = "session";  // shown in the view and in the calibration's source
@@ -32,6 +42,26 @@ struct WizardOptions {
   // procedure's [target] plans each capture's length (bench_plan.h), or, without a target, each
   // step's own duration.
   double fixed_duration_s = 0.0;
+  // The lab's check of the bench's equipment (app/lab_equipment_check.h: WelcomeEquipmentCheck):
+  // its warnings (expired, running out, unknown to the lab) are shown at the welcome, for the
+  // procedure's items and again for the items the equipment answer names; a lab out of reach
+  // is said there too (the session goes on, kept on the bench). Empty: no check.
+  std::function<WelcomeLabCheck(const std::vector<EquipmentItem>&)> check_equipment = {};
+  // The equipment answer offered at the welcome (equipment_input.h); empty: "keep" (the
+  // procedure's). The virtual bench offers its lab's (virtual_lab.h).
+  std::string default_equipment = {};
+  // Said on the first screen of a session resumed (or already finished): the command line's
+  // flags this run does not use, with what to do instead (app/refit_session.h).
+  std::vector<std::string> notes = {};
+  // What the source's device already holds and what was done with it (a MAVLink vehicle's own
+  // accelerometer calibration: read, then taken out of the readings or left in; app/device/
+  // vehicle_session.h), one fact per line: shown at the welcome and recorded with its answers.
+  // Empty for a source without such a device.
+  std::vector<std::string> device_lines = {};
+  // The MAVLink vehicle behind the session's source (the source itself, or inside the remote
+  // bench's wrapper), borrowed: the write-back step (steps/write_back_step.cpp) writes the
+  // calibration into it through the source's own link. nullptr for any other source.
+  MavlinkSource* vehicle = nullptr;
 
   // Empty when the options are usable; else why not.
   std::string Validate() const {

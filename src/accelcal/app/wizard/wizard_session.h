@@ -42,6 +42,10 @@ class StepSequence {
   // What q does, asked by a step at a dead end: everything accepted is saved, the wizard ends
   // and the session resumes at this step.
   virtual void SaveAndLeave() = 0;
+  // The accepted capture of step `step_id` taken again at once, as b would offer it (the new
+  // capture replaces it once accepted; b or s keeps it); the wizard then goes on from the first
+  // step not recorded.
+  virtual void RetakeStep(const std::string& step_id) = 0;
   // Records `capture`, accepted at the current step (in a redo, superseding the capture taken
   // again), before the wizard moves on.
   virtual void RecordCapture(const Capture& capture) = 0;

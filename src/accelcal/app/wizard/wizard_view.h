@@ -135,6 +135,11 @@ struct WizardView {
   // `lines` then hold the summary (limits failed, headline numbers, report paths). Empty before.
   std::string verdict;
   std::string status;             // the source's brief status ("sim: up, 100.0 Hz, ...")
+  // What the source noticed, in the bench's words ("The device restarted ..."; source_notices.h),
+  // until the next key; and the figures behind it (the source's own words, its counts), one key
+  // away. Empty when there is nothing to say.
+  std::string source_notice;
+  std::string source_detail;
   bool finished = false;          // nothing more to do; the front end may exit
 };
 

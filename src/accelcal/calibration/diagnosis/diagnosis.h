@@ -90,6 +90,10 @@ struct CandidateScore {
   double lr_p_value = 1.0;      // likelihood-ratio test against the current model (uncorrected)
   // Non-empty: scored, but failed a test of the guard (prediction, plausibility), in words.
   std::string rejected_reason;
+  // Passed every test of the guard and lost only the tie-break with the winner of its round, by
+  // the left-out prediction, less than 6 behind it in BIC: a near-tie (calibration/near_tie.h).
+  // rejected_reason says so in words.
+  bool near_tie = false;
 };
 
 struct AdoptedEffect {
@@ -110,6 +114,7 @@ struct DiagnosisRound {
   ResidualStats current;                 // the model's residuals entering the round
   std::vector<CandidateScore> candidates;
   std::string outcome;                   // what the round concluded, in words
+  std::string adopted;                   // the effect the round adopted; empty when none
 };
 
 struct DiagnosisReport {

@@ -8,6 +8,7 @@
 
 #include "accelcal/base/error.h"
 #include "accelcal/base/utc_time.h"
+#include "accelcal/base/uuid.h"
 #include "accelcal/session/detail/row_checksum.h"
 
 namespace accelcal::detail {
@@ -19,7 +20,7 @@ CREATE TABLE session (
   name TEXT NOT NULL, procedure TEXT NOT NULL, source TEXT NOT NULL,
   device TEXT NOT NULL DEFAULT '', operator TEXT NOT NULL DEFAULT '',
   created_utc TEXT NOT NULL, updated_utc TEXT NOT NULL,
-  state TEXT NOT NULL CHECK (state IN ('open', 'done')));
+  state TEXT NOT NULL CHECK (state IN ('open', 'done')), uuid TEXT);
 CREATE TABLE devices (serial TEXT PRIMARY KEY, first_seen_utc TEXT NOT NULL);
 CREATE TABLE captures (
   seq INTEGER PRIMARY KEY AUTOINCREMENT,
@@ -54,6 +55,13 @@ CREATE TABLE record_gaps (
   PRIMARY KEY (step_id, before_chunk));
 )sql";
 
+// Added in version 6: what a lab's store assigned when the session was published there.
+constexpr const char* kLabCertificatesTable = R"sql(
+CREATE TABLE lab_certificates (
+  sensor_index INTEGER PRIMARY KEY CHECK (sensor_index >= 0),
+  certificate_number TEXT NOT NULL, lab TEXT NOT NULL, published_utc TEXT NOT NULL);
+)sql";
+
 // Version 3: the capture statistics' second moments are named for what they hold, the co-moment
 // sum (x - mean)(y - mean) (versions 1 and 2 called it cov_*; the values are unchanged).
 constexpr const char* kRenameComoments = R"sql(
@@ -84,6 +92,14 @@ void MigrateToSuperseded(SqliteDb& db) {
     db.Exec("ALTER TABLE captures ADD COLUMN superseded_by TEXT");
 }
 
+// Version 6: the session's identity (a random UUID: a session made before has none, so it gets
+// one now, once: every later open reads the same) and the lab's certificate numbers.
+void MigrateToLabIdentity(SqliteDb& db) {
+  if (!HasColumn(db, "session", "uuid")) db.Exec("ALTER TABLE session ADD COLUMN uuid TEXT");
+  SqliteStatement(db, "UPDATE session SET uuid = ? WHERE uuid IS NULL").Bind(1, NewRandomUuid()).Run();
+  if (!HasTable(db, "lab_certificates")) db.Exec(kLabCertificatesTable);
+}
+
 }  // namespace
 
 bool IsEmptyDatabase(SqliteDb& db) {
@@ -100,11 +116,13 @@ void CreateSessionSchema(SqliteDb& db, const std::string& name, const std::strin
   SqliteTransaction transaction(db);
   db.Exec(kTables);
   db.Exec(kRecordTables);
+  db.Exec(kLabCertificatesTable);
   const std::string now = UtcNowIso8601();
   SqliteStatement insert(db,
                          "INSERT INTO session (id, name, procedure, source, created_utc, "
-                         "updated_utc, state) VALUES (1, ?, ?, ?, ?, ?, 'open')");
-  insert.Bind(1, name).Bind(2, procedure).Bind(3, source).Bind(4, now).Bind(5, now).Run();
+                         "updated_utc, state, uuid) VALUES (1, ?, ?, ?, ?, ?, 'open', ?)");
+  insert.Bind(1, name).Bind(2, procedure).Bind(3, source).Bind(4, now).Bind(5, now)
+      .Bind(6, NewRandomUuid()).Run();
   db.Exec(fmt::format("PRAGMA application_id = {}; PRAGMA user_version = {}",
                       kSessionApplicationId, kSessionSchemaVersion));
   transaction.Commit();
@@ -162,6 +180,7 @@ void MigrateSessionSchema(SqliteDb& db) {
   if (version < 3) db.Exec(kRenameComoments);
   if (version < 4) MigrateToChecksums(db);
   if (version < 5) MigrateToSuperseded(db);
+  if (version < 6) MigrateToLabIdentity(db);
   db.Exec(fmt::format("PRAGMA user_version = {}", kSessionSchemaVersion));
   transaction.Commit();
 }

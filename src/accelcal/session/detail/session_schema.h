@@ -2,7 +2,8 @@
 // marked as accelcal's by PRAGMA application_id):
 //
 //   session    one row: name, procedure, source, device, operator, created_utc, updated_utc,
-//              state ('open' | 'done')
+//              state ('open' | 'done'), uuid (version 6: the session's identity wherever it is
+//              copied or published, base/uuid.h; given to older files when they are migrated)
 //   devices    serial (one row per device seen), first_seen_utc
 //   captures   seq (recording order), step_id UNIQUE, capture_id, kind, label, radius_m, rpm,
 //              up_axis, rejection_reason, n, mean_{x,y,z}_counts,
@@ -20,14 +21,19 @@
 //              step's samples, one row per chunk (version 2)
 //   record_gaps    (step_id, before_chunk) PRIMARY KEY, t_start_s, t_end_s, reason,
 //              recorded_utc: the hole just before chunk `before_chunk` (version 2)
+//   lab_certificates  sensor_index PRIMARY KEY, certificate_number, lab, published_utc: the
+//              number a lab's store assigned to the calibration of each sensor when the session
+//              was published there (version 6; accelcal lab publish, docs/lab.md)
 //
 // An older version is migrated by the first read-write open, in one transaction: version 1 gets
 // the two record tables; versions 1 and 2 get the co-moment columns' names (they were called
 // cov_*, for values that were always the co-moment); versions 1 to 3 get the checksum columns,
 // filled for the rows they hold (row_checksum.h); versions 1 to 4 get captures.superseded_by
-// (NULL: no capture of theirs was ever taken again). A read-only open of an older file reads it
+// (NULL: no capture of theirs was ever taken again); versions 1 to 5 get session.uuid (a new
+// random one) and the lab_certificates table. A read-only open of an older file reads it
 // as it is (a version-1 file has no records; rows
-// of a file older than version 4 have no checksum to verify).
+// of a file older than version 4 have no checksum to verify; one older than version 6 has no
+// uuid and was never published).
 //
 // NaN (no radius, no temperature) is stored as NULL. Times are UTC ISO 8601 text.
 #pragma once
@@ -38,7 +44,7 @@
 
 namespace accelcal::detail {
 
-inline constexpr int kSessionSchemaVersion = 5;
+inline constexpr int kSessionSchemaVersion = 6;
 inline constexpr int kSessionApplicationId = 0x41434331;  // "ACC1"
 
 // Creates the tables and the session row in a new, empty database (one transaction).

@@ -6,6 +6,7 @@
 #include <fmt/core.h>
 
 #include "accelcal/acquire/source/bench_control.h"
+#include "accelcal/acquire/source/discard_backlog.h"
 #include "accelcal/app/wizard/capture_messages.h"
 #include "accelcal/app/wizard/pose_setting.h"
 #include "accelcal/app/wizard/time_estimate.h"
@@ -22,7 +23,14 @@ void AcquiringStep::Handle(const Intent& intent) {
   const bool again = accept || intent.kind == IntentKind::kRetry;
   switch (phase_) {
     case Phase::kNoiseFloor:
-      if (again && !session_.noise_floor.measuring()) session_.noise_floor.Measure(step_.timeout_s);
+      // Refused again and again: Enter no longer measures the same bench (r still does).
+      if (accept && !session_.noise_floor.measuring() &&
+          session_.noise_floor.refusals_in_row() >= NoiseFloorStep::kRefusalsBeforeLeaving)
+        return session_.sequence.SaveAndLeave();
+      if (again && !session_.noise_floor.measuring()) {
+        DiscardBacklog(session_.source);  // the floor of the bench at rest now, not while asked
+        session_.noise_floor.Measure(step_.timeout_s);
+      }
       return;
     case Phase::kProblem:
       if (!again) return;
@@ -79,9 +87,12 @@ void AcquiringStep::EnterPlace() {
   phase_ = Phase::kPlace;
 }
 
-// Without a noise floor (the source ended while it was measured) it is measured first.
+// Without a noise floor (the source ended while it was measured) it is measured first. What a
+// live source sent while the question waited is dropped: judged are the samples taken after the
+// answer (the pose of before is not the one asked for).
 void AcquiringStep::Begin() {
   if (!session_.noise_floor.floor()) return EnterPlace();
+  DiscardBacklog(session_.source);
   BeginCapture();
 }
 
@@ -183,7 +194,7 @@ CaptureRequest AcquiringStep::Planned(CaptureRequest request) const {
 }
 
 void AcquiringStep::OnCaptureRejected() {
-  const CaptureMessage said = DescribeEnded(session_.acq.reason(), step_.timeout_s);
+  const CaptureMessage said = RejectedMessage();
   session_.screen.problem = said.text;
   session_.screen.detail = said.detail;
   phase_ = Phase::kProblem;
@@ -204,7 +215,12 @@ std::string AcquiringStep::ProblemToCheck() const {
   return check;
 }
 
+CaptureMessage AcquiringStep::RejectedMessage() const { return DescribeEnded(session_.acq.reason(), step_.timeout_s); }
+
+// A capture given up because the sensor was never still: what to do about the bench (placing the
+// prism again would not help); else how to place it.
 std::string AcquiringStep::RejectedHint() const {
+  if (const std::string bench = StillnessHint(session_.acq.reason()); !bench.empty()) return bench;
   return IsTiltedPose(step_.up)
              ? fmt::format("set the prism {} and let go; Enter tries again", PrismSetting(step_.up, step_.pose_name))
              : fmt::format("put the prism with {} and let go; Enter tries again", MakeRequest().expected.name);

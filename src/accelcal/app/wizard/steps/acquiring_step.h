@@ -8,6 +8,7 @@
 #pragma once
 
 #include "accelcal/acquire/capture_engine/capture_engine.h"
+#include "accelcal/app/wizard/capture_messages.h"
 #include "accelcal/app/wizard/step_controller.h"
 #include "accelcal/app/wizard/time_estimate.h"
 #include "accelcal/app/wizard/wizard_session.h"
@@ -66,7 +67,9 @@ class AcquiringStep : public StepController {
   // Leveling measures the same pose twice: it checks no duplicate.
   virtual bool ChecksDuplicates() const { return true; }
   virtual void OnCaptureAccepted(Capture capture) = 0;
-  // The hint under a capture that ended unaccepted.
+  // What the screen says of a capture that ended unaccepted (words, and the figures apart), and
+  // the hint under it.
+  virtual CaptureMessage RejectedMessage() const;
   virtual std::string RejectedHint() const;
   // Enter after a problem, before the acquisition begins again.
   virtual void BeforeRetry() {}

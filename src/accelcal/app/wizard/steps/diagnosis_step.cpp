@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "accelcal/app/wizard/diagnosis_words.h"
+#include "accelcal/app/wizard/session_settings.h"
 #include "accelcal/app/wizard/step_registry.h"
 #include "accelcal/app/wizard/steps/result_step.h"
 
@@ -15,12 +16,9 @@ class DiagnosisStep final : public ResultStep {
  public:
   using ResultStep::ResultStep;
 
-  // A diagnosis decided in an earlier run: adopted effects go into the report.
-  void Resume() override {
-    const std::map<std::string, std::string>& done = session_.model.done_steps();
-    if (const auto d = done.find(step_.id); d != done.end())
-      session_.adopt_effects = d->second.rfind("adopted", 0) == 0;
-  }
+  // A diagnosis decided in an earlier run: adopted effects go into the report (read as
+  // `accelcal refit` reads it: session_settings.h).
+  void Resume() override { session_.adopt_effects = RecordedAdoptEffects(session_.procedure, session_.model); }
 
  protected:
   StepOutcome Run() override {

@@ -82,7 +82,7 @@ class LevelStep final : public AcquiringStep {
     if (intent.kind == IntentKind::kBack) return session_.sequence.GoBack();
     const bool accept = intent.kind == IntentKind::kAccept || intent.kind == IntentKind::kSubmitText;
     if (!result_) {  // turned: measure again
-      if (accept || intent.kind == IntentKind::kRetry) BeginCapture();
+      if (accept || intent.kind == IntentKind::kRetry) Begin();
       return;
     }
     if (intent.kind == IntentKind::kRetry) return EnterPlace();

@@ -1,11 +1,11 @@
 #include "accelcal/app/wizard/steps/noise_floor_step.h"
 
 #include <algorithm>
-#include <sstream>
 
 #include <fmt/core.h>
 #include <fmt/format.h>
 
+#include "accelcal/app/wizard/session_settings.h"
 #include "accelcal/app/wizard/step_controller.h"
 #include "accelcal/app/wizard/wizard_session.h"
 #include "accelcal/session/session_inputs.h"
@@ -21,30 +21,18 @@ StaticStabilityOptions ProcedureStability(const Procedure& p) {
   return o;
 }
 
-std::string FloorTriadText(const Eigen::Vector3d& v) {
-  return fmt::format("{:.6g} {:.6g} {:.6g}", v.x(), v.y(), v.z());
-}
-
-bool ParseFloorTriad(const std::string& text, Eigen::Vector3d* v) {
-  std::istringstream in(text);
-  return static_cast<bool>(in >> (*v)[0] >> (*v)[1] >> (*v)[2]) && v->allFinite();
-}
-
 }  // namespace
 
 NoiseFloorStep::NoiseFloorStep(const Procedure& procedure, SessionModel& model, StepAcquisition& acq,
-                               ScreenMessages& screen, double quiet_period_s)
+                               ScreenMessages& screen, double quiet_period_s, const SampleSource* source)
     : procedure_(procedure), model_(model), acq_(acq), screen_(screen), quiet_period_s_(quiet_period_s),
+      source_(source),
       guard_(procedure.expected_noise_counts, procedure.noise_floor_max_ratio, ProcedureStability(procedure)) {}
 
-// A floor lowered in an earlier run stays: the captures were judged again with it.
+// A floor lowered in an earlier run stays: the captures were judged again with it. Read as
+// `accelcal refit` reads it (session_settings.h).
 void NoiseFloorStep::Resume() {
-  const auto inputs = model_.inputs().find(kNoiseFloorStepId);
-  if (inputs == model_.inputs().end()) return;
-  const auto lowered = inputs->second.find(noise_floor_key::kLoweredStdCounts);
-  Eigen::Vector3d std_counts;
-  if (lowered != inputs->second.end() && ParseFloorTriad(lowered->second, &std_counts))
-    lowered_ = NoiseFloor{std_counts, "lowered in an earlier run"};
+  if (std::optional<NoiseFloor> lowered = RecordedLoweredFloor(model_.inputs())) lowered_ = std::move(lowered);
 }
 
 void NoiseFloorStep::Measure(double timeout_s) {
@@ -58,8 +46,11 @@ bool NoiseFloorStep::OnMeasured() {
   if (!j.ok) {
     screen_.problem = j.reason;
     screen_.hint = "keep hands off the bench and stop what shakes it, then Enter measures again";
+    Refused("keep hands off the bench and stop what shakes it (or check that the procedure's "
+            "expected noise is this sensor's)");
     return false;
   }
+  refusals_in_row_ = 0;
   // A lower floor of an earlier run (proved by its captures) wins over a new measurement above it.
   if (lowered_) {
     NoiseFloor f = *guard_.floor();
@@ -69,18 +60,51 @@ bool NoiseFloorStep::OnMeasured() {
   }
   screen_.problem.clear();
   screen_.hint.clear();
-  model_.RecordInput(kNoiseFloorStepId, noise_floor_key::kStdCounts, FloorTriadText(guard_.floor()->std_counts));
+  model_.RecordInput(kNoiseFloorStepId, noise_floor_key::kStdCounts, TriadText(guard_.floor()->std_counts));
   lines_ = {"Noise floor: " + guard_.Describe()};
+  if (const std::string limit = ResolutionLimit(); !limit.empty()) {
+    lines_.push_back(limit);
+    model_.RecordInput(kNoiseFloorStepId, noise_floor_key::kResolution, limit);
+  }
   return true;
+}
+
+// The floor is limited by the stream's resolution when an axis's floor is not well above its
+// step: below a step the rounding is most of what is measured (step / sqrt 12 of it when the
+// noise dithers the rounding, anything from 0 to step / 2 when it does not).
+std::string NoiseFloorStep::ResolutionLimit() const {
+  if (source_ == nullptr || !guard_.floor()) return "";
+  const SourceStatus& status = source_->status();
+  const double step = status.resolution_counts;
+  if (!(step > 0.0)) return "";
+  if (guard_.floor()->std_counts.minCoeff() >= 2.0 * step) return "";
+  return fmt::format("Limited by the resolution: {} (the floor measured is within two steps of it).",
+                     status.ResolutionNote());
 }
 
 void NoiseFloorStep::OnSilent() {
   measuring_ = false;
   screen_.problem = acq_.reason();
   screen_.hint = "check the cable or the sample server; Enter measures again, q leaves";
+  Refused("check the cable or the sample server");
+}
+
+// A measurement refused: after kRefusalsBeforeLeaving in a row the same bench measured again
+// will not do, and Enter saves and quits instead (a loop of Enter would never end).
+void NoiseFloorStep::Refused(const std::string& check) {
+  if (++refusals_in_row_ < kRefusalsBeforeLeaving) return;
+  screen_.hint = fmt::format("not accepted {} times in a row: {} (the same again will not do); r measures "
+                             "again, Enter saves and quits (the session resumes here)",
+                             refusals_in_row_, check);
 }
 
 void NoiseFloorStep::SetView(WizardView& v) const {
+  if (!measuring_ && refusals_in_row_ >= kRefusalsBeforeLeaving) {
+    v.screen = WizardScreen::kPlacePose;
+    v.prompt = fmt::format("The noise floor was not accepted {} times in a row.", refusals_in_row_);
+    v.keys = WithNavigation({{"r", "measure again"}, {"Enter", "save and quit"}});
+    return;
+  }
   if (!measuring_) {
     v.screen = WizardScreen::kPlacePose;
     v.prompt = fmt::format(
@@ -106,7 +130,7 @@ void NoiseFloorStep::Recheck(const Capture& latest, std::vector<CapturedPose>& c
       used.push_back(&c.capture);
   const NoiseFloorRecheck r = guard_.Recheck(latest, used);
   if (!r.lowered) return;
-  model_.RecordInput(kNoiseFloorStepId, noise_floor_key::kLoweredStdCounts, FloorTriadText(r.after.std_counts));
+  model_.RecordInput(kNoiseFloorStepId, noise_floor_key::kLoweredStdCounts, TriadText(r.after.std_counts));
   model_.RecordInput(kNoiseFloorStepId, noise_floor_key::kLowered, r.note);
   lowered_ = r.after;
   lines_ = {"Noise floor: " + guard_.Describe(), r.note};

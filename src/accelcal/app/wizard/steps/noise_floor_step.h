@@ -3,7 +3,9 @@
 // (acquiring_step.h runs it there), the floor is judged, recorded (input "noise_floor" of the
 // journal) and shown; on a resume, a floor an earlier run lowered is restored; each static
 // capture accepted checks it again (Recheck), lowering it when the capture proves it too high
-// and leaving out the captures that fail the lower floor.
+// and leaving out the captures that fail the lower floor. A source whose readings come in steps
+// (MAVLink's SCALED_IMU: 1 mG) as coarse as the floor measured has its resolution said beside
+// the floor and recorded (input "resolution"): such a floor is the rounding, not the sensor.
 #pragma once
 
 #include <optional>
@@ -12,6 +14,7 @@
 
 #include "accelcal/acquire/capture_engine/noise_floor.h"
 #include "accelcal/acquire/capture_engine/orientation_check.h"
+#include "accelcal/acquire/source/sample_source.h"
 #include "accelcal/app/wizard/noise_floor_guard.h"
 #include "accelcal/app/wizard/session_model.h"
 #include "accelcal/app/wizard/step_acquisition.h"
@@ -24,9 +27,10 @@ struct ScreenMessages;
 
 class NoiseFloorStep {
  public:
-  // Borrows everything; `quiet_period_s`: how long the sensor rests, s.
+  // Borrows everything; `quiet_period_s`: how long the sensor rests, s; `source` (nullable): the
+  // source whose resolution is said beside the floor.
   NoiseFloorStep(const Procedure& procedure, SessionModel& model, StepAcquisition& acq,
-                 ScreenMessages& screen, double quiet_period_s);
+                 ScreenMessages& screen, double quiet_period_s, const SampleSource* source = nullptr);
 
   // Reads a floor lowered in an earlier run (the captures were judged again with it).
   void Resume();
@@ -44,9 +48,16 @@ class NoiseFloorStep {
   void Ask() { measuring_ = false; }
   void Measure(double timeout_s);
   bool measuring() const { return measuring_; }
+  // Measurements refused (or silent) in a row in this run: after kRefusalsBeforeLeaving, Enter
+  // no longer measures the same bench again (it saves and quits; r still measures).
+  int refusals_in_row() const { return refusals_in_row_; }
+  static constexpr int kRefusalsBeforeLeaving = 3;
   bool OnMeasured();
   void OnSilent();
   void SetView(WizardView& v) const;
+  // What the source's resolution means for the floor measured: empty when the step is unknown
+  // or well below the floor on every axis.
+  std::string ResolutionLimit() const;
 
   // `latest`, a static capture just accepted, checks the floor: when it proves it too high the
   // floor is lowered, and the captures judged with the old one judged again; those that fail
@@ -54,15 +65,19 @@ class NoiseFloorStep {
   void Recheck(const Capture& latest, std::vector<CapturedPose>& captured);
 
  private:
+  void Refused(const std::string& check);
+
   const Procedure& procedure_;
   SessionModel& model_;
   StepAcquisition& acq_;
   ScreenMessages& screen_;
   double quiet_period_s_;
+  const SampleSource* source_;
   NoiseFloorGuard guard_;
   std::optional<NoiseFloor> lowered_;  // a floor lowered by the captures (this run or before)
   std::vector<std::string> lines_;
   bool measuring_ = false;
+  int refusals_in_row_ = 0;
 };
 
 }  // namespace accelcal

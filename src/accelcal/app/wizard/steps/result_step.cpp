@@ -57,7 +57,9 @@ void ResultStep::SetView(WizardView& v) const {
 
 void ResultStep::SetAnswerView(WizardView& v) const {
   v.prompt = "Press Enter to continue.";
-  v.keys = WithNavigation({{"Enter", "continue"}, {"r", "retry"}});
+  v.keys = {{"Enter", "continue"}, {"r", "retry"}};
+  if (!details_.empty()) v.keys.push_back({"d", show_details_ ? "plain words" : "statistics"});
+  v.keys = WithNavigation(v.keys);
 }
 
 double ResultEstimateS(const ProcedureStep&, const TimeAllowances& a) { return a.read_result_s; }

@@ -5,6 +5,7 @@
 #include <fmt/core.h>
 
 #include "accelcal/app/wizard/pose_setting.h"
+#include "accelcal/app/wizard/settling_wait.h"
 #include "accelcal/app/wizard/step_registry.h"
 #include "accelcal/app/wizard/steps/acquiring_step.h"
 
@@ -24,8 +25,13 @@ class StaticStep final : public AcquiringStep {
     session_.sequence.ContinueFromFirstOpenStep();
   }
 
-  // The plan's length, ended by its stop rule (bench_plan.h).
-  CaptureRequest MakeRequest() const override { return Planned(AcquiringStep::MakeRequest()); }
+  // The plan's length, ended by its stop rule (bench_plan.h); before the capture starts, as long
+  // as the session's captures say the sensor needs to settle.
+  CaptureRequest MakeRequest() const override {
+    CaptureRequest r = Planned(AcquiringStep::MakeRequest());
+    AddSettlingWait(session_, r);
+    return r;
+  }
   double CaptureS() const override { return session_.bench_plan.CaptureS(step_); }
 
   void SetPlaceView(WizardView& v) const override {

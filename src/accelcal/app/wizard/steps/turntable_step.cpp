@@ -10,6 +10,7 @@
 
 #include "accelcal/acquire/source/bench_control.h"
 #include "accelcal/app/wizard/quantity_input.h"
+#include "accelcal/app/wizard/resume_summary.h"
 #include "accelcal/app/wizard/step_registry.h"
 #include "accelcal/app/wizard/steps/acquiring_step.h"
 #include "accelcal/session/session_inputs.h"
@@ -59,6 +60,7 @@ class TurntableStep final : public AcquiringStep {
 
   void SetHeader(WizardView& v) const override {
     AcquiringStep::SetHeader(v);
+    v.step_title = StepDisplayTitle(step_);  // the radius and speed tell the runs of a mounting apart
     v.expected_up = SensorAxisVector(step_.up_axis);
   }
 
@@ -95,8 +97,34 @@ class TurntableStep final : public AcquiringStep {
     session_.acq.Stop();
   }
 
+  // The pull toward the outside that does not match the speed and radius entered, in bench words
+  // (a table that does not turn; the speed or the radius that the measurement fits); the figures
+  // apart.
+  CaptureMessage RejectedMessage() const override {
+    const TurntableVerdict& v = session_.acq.last_turntable();
+    const std::string& reason = session_.acq.reason();
+    if (v.consistent || !std::isfinite(v.centripetal_ratio) || reason.rfind("radius looks", 0) == 0 ||
+        reason.find("expected from") == std::string::npos)
+      return AcquiringStep::RejectedMessage();
+    if (v.centripetal_ratio < 0.05)
+      return {fmt::format("the table does not seem to turn: no pull toward the outside was measured (at {:g} rpm "
+                          "it would be {:.2g} g)",
+                          rpm_, v.expected_centripetal_mps2 / session_.gravity.gravity_mps2),
+              reason, false};
+    const double ratio = std::max(v.centripetal_ratio, 0.0);
+    return {fmt::format("the table's pull does not match {:g} rpm at {:g} mm: it fits {:.3g} rpm at that radius, "
+                        "or {:.3g} mm at that speed",
+                        rpm_, radius_m_ * 1000.0, rpm_ * std::sqrt(ratio), radius_m_ * 1000.0 * ratio),
+            reason, false};
+  }
+
   std::string RejectedHint() const override {
     const TurntableVerdict& v = session_.acq.last_turntable();
+    if (!v.consistent && std::isfinite(v.centripetal_ratio) && v.centripetal_ratio < 0.05)
+      return fmt::format("start the table at {:g} rpm and wait until it turns steadily; Enter tries again", rpm_);
+    if (!v.consistent && std::isfinite(v.centripetal_ratio))
+      return "measure the radius with the ruler and check the speed on the table (or with a tachometer); "
+             "Enter tries again, b re-enters them";
     if (!v.mounted_as_asked && !v.mounting_found.empty())
       return fmt::format("stop the table, mount the sensor {} as asked and start the table again; "
                          "Enter tries again", step_.pose_name);
@@ -230,9 +258,10 @@ double TurntableEstimateS(const ProcedureStep& step, const TimeAllowances& a) {
 // A turntable step whose title is only its mounting (several steps share it) gets "Turntable"
 // and its radius ("Turntable x radial, z up at 100 mm").
 std::string TurntableDisplayTitle(const ProcedureStep& step) {
-  if (step.title == step.pose_name)
-    return fmt::format("Turntable {} at {:g} mm", step.pose_name, step.radius_m * 1000.0);
-  return step.title;
+  if (step.title != step.pose_name) return step.title;
+  std::string title = fmt::format("{} at {:g} mm", step.pose_name, step.radius_m * 1000.0);
+  if (std::isfinite(step.rpm)) title += fmt::format(", {:g} rpm", step.rpm);
+  return title;
 }
 
 // What to type at the run's two questions.

@@ -9,6 +9,7 @@
 
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "accelcal/app/wizard/step_controller.h"
 #include "accelcal/app/wizard/wizard_session.h"
@@ -28,6 +29,11 @@ class WelcomeStep final : public StepController {
   void Resume() override;
   void SetHeader(WizardView& v) const override { v.step_title = "Welcome"; }
   void SetView(WizardView& v) const override;
+  // What the source's device holds (WizardOptions::device_lines), above the questions.
+  void AddText(std::vector<std::string>& lines) const override;
+  // A session resumed after its welcome: what the device holds now, and whether it is what the
+  // session recorded when it began (a vehicle calibrated again in between says so).
+  std::vector<std::string> DeviceResumeLines() const;
 
  private:
   // A question: its input key, label and default answer.
@@ -41,13 +47,23 @@ class WelcomeStep final : public StepController {
   Question QuestionAt(int index) const;
   // Empty when `value` answers `key`; else why not.
   std::string Check(const std::string& key, const std::string& value);
+  std::string CheckEquipment(const std::string& value);
+  std::string DefaultAnswer(const Question& question) const;
   void ReadGravity(const WelcomeAnswers& answers);
   void ReadEquipment(const WelcomeAnswers& answers);
+  // The session's equipment through the options' check_equipment (the lab's register).
+  void CheckEquipmentWithLab();
+  void AddLabUnreachable(WizardView& v) const;
+  // Records the device's lines with the answers (when there are some).
+  void RecordDeviceLines();
 
   WizardSession& session_;
   int question_ = 0;
   std::string input_error_;  // why the last answer was refused
   std::string input_note_;   // said above the question (b at the first one)
+  std::vector<std::string> equipment_warnings_;  // the lab's, listed on the welcome's questions
+  std::string lab_unreachable_;                  // non-empty: the lab could not be reached (why)
+  std::string examples_warned_;  // the equipment answer refused once for its example ids
 };
 
 // What to type at a question of the welcome (its input key), for the help on ?; empty for a key
