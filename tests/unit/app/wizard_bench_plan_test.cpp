@@ -162,6 +162,13 @@ TEST(WizardBenchPlan, TheSessionTimeLeftIsThePlans) {
   // The difference of the two estimates is the difference of the capture lengths.
   EXPECT_NEAR(fixed.engine.View().session_left_s - planned.engine.View().session_left_s,
               fixed_capture_s - plan_capture_s, 15.0);
+  // And the captures are counted as the welcome's plan counts them (each mounting once): the rest
+  // of the session is the plan's bench time and the steps without a capture (the fit, the
+  // diagnosis, the report: a reading each), not 9 mountings.
+  const double plan_total_s = plan_capture_s + InputNumber(*planned.journal, "bench_plan", "planned_settle_s") +
+                              InputNumber(*planned.journal, "bench_plan", "planned_handling_s");
+  EXPECT_GE(planned.engine.View().session_left_s, plan_total_s);
+  EXPECT_LE(planned.engine.View().session_left_s, plan_total_s + 120.0);
 }
 
 }  // namespace

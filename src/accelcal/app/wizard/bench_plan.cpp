@@ -81,12 +81,19 @@ double BenchPlan::CaptureS(const ProcedureStep& step) const {
   return step.duration_s;
 }
 
-double BenchPlan::StepLeftS(const ProcedureStep& step, double step_estimate_s) const {
+double BenchPlan::StepLeftS(const ProcedureStep& step, double step_estimate_s, std::set<std::string>* mounted) const {
   if (LeavesOut(step)) return 0.0;
   if (fixed_s_ <= 0.0 && plan_.For(step.id) == nullptr) return step_estimate_s;
   const StepAcquires a = InfoOf(step.kind).acquires;
   if (a != StepAcquires::kStaticCapture && a != StepAcquires::kTurntableCapture) return step_estimate_s;
-  return std::max(step_estimate_s - step.duration_s, 0.0) + CaptureS(step);
+  const ProcedureTarget& t = procedure_.target;
+  double left_s = CaptureS(step) + t.pose_handling_s;
+  if (a == StepAcquires::kStaticCapture) return left_s + kPlannedStaticSettleS;
+  left_s += kPlannedTurntableSettleS;
+  const std::string mounting =
+      std::string(SensorAxisToString(step.radial_axis)) + "/" + std::string(SensorAxisToString(step.up_axis));
+  if (mounted->insert(mounting).second) left_s += t.mounting_s;
+  return left_s;
 }
 
 void BenchPlan::Apply(const ProcedureStep& step, CaptureRequest* request) const {

@@ -13,6 +13,7 @@
 #pragma once
 
 #include <optional>
+#include <set>
 #include <string>
 
 #include <Eigen/Core>
@@ -40,10 +41,12 @@ class BenchPlan {
   // duration (no count) for a step the plan does not hold.
   double CaptureS(const ProcedureStep& step) const;
   void Apply(const ProcedureStep& step, CaptureRequest* request) const;
-  // The session's time left for `step` whose kind estimates `step_estimate_s` from its own
-  // duration (time_estimate.h): the plan's capture length instead of the step's; 0 for a step
-  // the plan leaves out (it is skipped).
-  double StepLeftS(const ProcedureStep& step, double step_estimate_s) const;
+  // The session's time left for `step`, whose kind estimates `step_estimate_s` (time_estimate.h):
+  // a capture step the plan holds takes the plan's time, as the welcome counted it (its capture
+  // length, settling, the pose's handling, and its turntable mounting unless `mounted` says one
+  // of its mounting was counted already: each mounting is paid once); 0 for a step the plan
+  // leaves out (it is skipped); any other step its kind's estimate.
+  double StepLeftS(const ProcedureStep& step, double step_estimate_s, std::set<std::string>* mounted) const;
   // The plan leaves `step` out: an optional capture that buys nothing for this sensor.
   bool LeavesOut(const ProcedureStep& step) const { return fixed_s_ <= 0.0 && plan_.LeftOut(step.id); }
 

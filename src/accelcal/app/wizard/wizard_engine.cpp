@@ -4,6 +4,7 @@
 #include "accelcal/app/wizard/wizard_engine.h"
 
 #include <algorithm>
+#include <set>
 #include <utility>
 
 #include <fmt/core.h>
@@ -258,11 +259,15 @@ void WizardEngine::Handle(const Intent& intent) {
 // The steps not yet recorded from the current one (or the next, once the current one runs).
 double WizardEngine::SessionLeftS(bool current_started) const {
   const int first = current_started ? current_ + 1 : current_;
-  // Each capture as long as the plan has it (bench_plan.h), the steps it leaves out not at all.
+  // Each capture as the plan counts it (bench_plan.h), the steps it leaves out not at all; the
+  // mounting of the run on the table is not paid again.
+  std::set<std::string> mounted;
+  if (InSteps(current_) && current_ < first && InfoOf(step().kind).acquires == StepAcquires::kTurntableCapture)
+    (void)session_.bench_plan.StepLeftS(step(), 0.0, &mounted);
   double total_s = 0.0;
   for (int i = std::max(first, 0); InSteps(i); ++i) {
     const ProcedureStep& s = procedure_.steps[static_cast<size_t>(i)];
-    if (!model_.StepRecorded(s.id)) total_s += session_.bench_plan.StepLeftS(s, StepEstimateS(s));
+    if (!model_.StepRecorded(s.id)) total_s += session_.bench_plan.StepLeftS(s, StepEstimateS(s), &mounted);
   }
   return total_s;
 }

@@ -24,8 +24,7 @@ void AcquiringStep::Handle(const Intent& intent) {
   switch (phase_) {
     case Phase::kNoiseFloor:
       // Refused again and again: Enter no longer measures the same bench (r still does).
-      if (accept && !session_.noise_floor.measuring() &&
-          session_.noise_floor.refusals_in_row() >= NoiseFloorStep::kRefusalsBeforeLeaving)
+      if (accept && !session_.noise_floor.measuring() && session_.noise_floor.gives_up())
         return session_.sequence.SaveAndLeave();
       if (again && !session_.noise_floor.measuring()) {
         DiscardBacklog(session_.source);  // the floor of the bench at rest now, not while asked
