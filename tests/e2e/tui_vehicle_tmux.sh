@@ -3,7 +3,8 @@
 # node-mavlink test vehicle (tests/peers/mavlink_vehicle.cjs, SCALED_IMU after its own
 # calibration, 5 % of its frames dropped) behind the virtual bench (lib/remote_bench.bash), from
 # the welcome to the write-back: the vehicle's calibration on the welcome's screen, the 1 mG
-# resolution beside the noise floor, a notice of the source marked [LINK] with its figures on d,
+# resolution beside the noise floor, the vehicle rebooted (SIGUSR1) on a screen past the welcome and
+# said as a notice of the source marked [LINK] with its figures on d,
 # the write-back's question answered by typing yes, the values echoed and read back, and the
 # vehicle holding what the session's export computes. Exit status 0, the terminal restored.
 # Usage: bash tui_vehicle_tmux.sh ACCELCAL SOURCE_DIR DATA_DIR
@@ -51,7 +52,7 @@ tmx new-session -d -s v -x 100 -y 50 "bash '$work/run.sh'"
 has() { grep -qF -- "$1" <<< "$screen"; }
 asking() { grep -q '^> ' <<< "$screen"; }  # a text field: d would be typed
 deadline=$((SECONDS + 280))
-welcome=0 serial=0 operator=0 resolution=0 link=0 figures=0 asked=0 written=0 finished=0
+welcome=0 serial=0 operator=0 resolution=0 link=0 figures=0 asked=0 written=0 finished=0 rebooted=0
 while [ $SECONDS -lt $deadline ]; do
   sleep 0.5
   [ -s "$work/exit" ] && fail "the wizard left before its final screen: $(cat "$work/exit") $(cat "$work/wizard.err")"
@@ -59,7 +60,7 @@ while [ $SECONDS -lt $deadline ]; do
   has "The device's own calibration, as it holds it now:" && has "INS_ACCOFFS: x 0.3" && welcome=1
   has "Limited by the resolution: the readings come in steps of 9.81 counts" && resolution=1
   # d is the figures' key where the keys line offers it so (elsewhere the step's own d, or typed).
-  if has "[LINK] " && has "d figures" && [ $figures = 0 ] && ! asking; then
+  if has "[LINK] The link to the device" && has "d figures" && [ $figures = 0 ] && ! asking; then
     link=1
     tmx send-keys -t v d; sleep 0.5  # the figures, one key away
     screen=$(tmx capture-pane -p -t v 2>/dev/null || true)
@@ -78,12 +79,27 @@ while [ $SECONDS -lt $deadline ]; do
     has "PARAM_SET INS_ACCOFFS_X = " || fail "the write-back asks without showing its PARAM_SETs"
     tmx send-keys -t v -l yes; tmx send-keys -t v Enter; asked=1; continue
   fi
+  # The vehicle reboots on the first screen past the welcome that waits for Enter: the notice comes
+  # at a moment the test picks (the lost samples' notices come when the machine's speed says).
+  if [ $rebooted = 0 ] && grep -q '^ *Step \([2-9]\|[1-9][0-9]\) of' <<< "$screen" && ! asking \
+      && grep -q 'Enter' <<< "$(tail -n 1 <<< "$screen")"; then
+    vehicle=$(pgrep -g "$bench_group" -f '^node .*mavlink_vehicle[.]cjs') || fail "the test vehicle's process was not found"
+    kill -USR1 $vehicle; rebooted=1
+    for _ in $(seq 40); do
+      sleep 0.25
+      screen=$(tmx capture-pane -p -t v 2>/dev/null || true)
+      has "[LINK] The link to the device" && break
+    done
+    has "[LINK] The link to the device" || fail "the vehicle's reboot was not said on the screen"
+    continue
+  fi
   # Enter only where the keys line offers it: a capture's screen (and a notice on it) is left alone.
   grep -q 'Enter' <<< "$(tail -n 1 <<< "$screen")" && tmx send-keys -t v Enter 2>/dev/null
 done
 [ $finished = 1 ] || fail "the session did not reach its final screen"
 [ $welcome = 1 ] || fail "the welcome did not show the vehicle's calibration"
 [ $resolution = 1 ] || fail "the noise floor did not say the 1 mG steps"
+[ $rebooted = 1 ] || fail "the vehicle was never rebooted (no screen past the welcome waited for Enter)"
 [ $link = 1 ] || fail "no notice of the source was shown"
 [ $figures = 1 ] || fail "d did not show the notice's figures"
 [ $asked = 1 ] && [ $written = 1 ] || fail "the write-back was not asked and written (asked $asked, written $written)"

@@ -13,8 +13,8 @@
 // table (--param NAME=VALUE[:TYPE]) answered by PARAM_REQUEST_READ/LIST and changed by
 // PARAM_SET, which is echoed; a changed calibration applies to the next samples, as on a vehicle.
 //
-// Faults (each one of the clumsy bench's): --reboot-at S (the vehicle goes away for 2.5 s and
-// comes back with its clock and sequence at 0), --drop P (that share of IMU frames never sent:
+// Faults (each one of the clumsy bench's): --reboot-at S or SIGUSR1 (the vehicle goes away for
+// 2.5 s and comes back with its clock and sequence at 0), --drop P (that share of IMU frames never sent:
 // sequence gaps), --sign (MAVLink 2 signing on), --bad-crc-every N, --garbage-every N (100 random
 // bytes), --unknown-every N (a frame of a message no dialect has), --wrong-length-every N (a
 // HIGHRES_IMU 7 bytes too long, CRC right), --no-params, --wrong-echo NAME, --no-echo NAME,
@@ -377,20 +377,24 @@ setInterval(() => {
   send(h);
 }, 1000);
 if (opt.silentAfter !== null) setTimeout(() => { silent = true; console.error('vehicle: silent'); }, opt.silentAfter * 1000);
-if (opt.rebootAt !== null) {
+// The vehicle goes away for 2.5 s and comes back with its clock and sequence at 0.
+function reboot() {
+  if (rebooting) return;
+  console.error('vehicle: rebooting');
+  rebooting = true;
+  if (server) { for (const so of sockets) so.destroy(); server.close(); }
   setTimeout(() => {
-    console.error('vehicle: rebooting');
-    rebooting = true;
-    if (server) { for (const so of sockets) so.destroy(); server.close(); }
-    setTimeout(() => {
-      rebooting = false; bootT = null; seq = 0; rates.clear(); nextDue.clear();
-      if (opt.msg === 'scaled') SCALED.forEach(id => rates.set(id, opt.defaultRate));
-      if (opt.msg === 'raw') rates.set(RAW, opt.defaultRate);
-      if (server) listenTcp(rebootPort);
-      console.error('vehicle: back after the reboot');
-    }, 2500);
-  }, opt.rebootAt * 1000);
+    rebooting = false; bootT = null; seq = 0; rates.clear(); nextDue.clear();
+    if (opt.msg === 'scaled') SCALED.forEach(id => rates.set(id, opt.defaultRate));
+    if (opt.msg === 'raw') rates.set(RAW, opt.defaultRate);
+    if (server) listenTcp(rebootPort);
+    console.error('vehicle: back after the reboot');
+  }, 2500);
 }
+if (opt.rebootAt !== null) setTimeout(reboot, opt.rebootAt * 1000);
+// SIGUSR1 reboots it now: a test picks the moment by what the wizard's screen shows, where a
+// time would depend on how fast the machine runs the session.
+process.on('SIGUSR1', reboot);
 let rebootPort = opt.tcp;
 if (server) server.on('listening', () => { rebootPort = server.address().port; });
 
