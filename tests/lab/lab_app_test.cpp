@@ -197,6 +197,28 @@ TEST_F(LabApp, WhatCannotBePublishedSaysWhy) {
   EXPECT_NE(out[1].message.find("no session"), std::string::npos) << out[1].message;
 }
 
+// A finished session of several sensors (a fixture) is refused in plain words, before anything
+// reaches the lab: never filed under the fixture's name with its first board's calibration.
+TEST_F(LabApp, AFixtureSessionIsNotPublishedAndSaysWhy) {
+  const std::string path = MakeSession("plate", "fixture");
+  {
+    Fixture plate;
+    plate.sensors.resize(2);
+    plate.sensors[0].serial = "BOARD-1";
+    plate.sensors[1].serial = "BOARD-2";
+    Writer(path)->RecordSensors(plate);
+  }
+  const auto lab = As("bench_1");
+  const std::vector<SessionPublishOutcome> out = PublishSessionFiles(*lab, {path}, kProcedure);
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(out[0].kind, Kind::kNotReady);
+  EXPECT_NE(DescribeOutcome(out[0]).find("not published, a session of 2 sensors on a fixture"), std::string::npos)
+      << DescribeOutcome(out[0]);
+  EXPECT_TRUE(out[0].certificate_numbers.empty());
+  EXPECT_TRUE(Writer(path)->LabCertificates().empty());
+  EXPECT_FALSE(fs::exists(ReportPathFor(path, "html")));
+}
+
 TEST_F(LabApp, TheEquipmentCheckWarnsOfExpiredSoonAndUnknownItems) {
   const auto manager = As(kManager);
   manager->RegisterEquipment(

@@ -7,11 +7,11 @@
 #include <fmt/core.h>
 
 #include "accelcal/app/analyze_recording.h"
+#include "accelcal/app/calibration_input.h"
 #include "accelcal/base/error.h"
 #include "accelcal/io/export/kalibr_imu_yaml.h"
 #include "accelcal/io/allan_file.h"
 #include "accelcal/io/atomic_write.h"
-#include "accelcal/io/calibration_file.h"
 #include "accelcal/report/allan_text.h"
 #include "cli/cli_checks.h"
 #include "cli/commands.h"
@@ -23,7 +23,7 @@ namespace {
 struct AllanCommandOptions {
   std::string recording_path;   // a recording file, or a session file holding a record
   std::string step;             // the session's record step; empty: its only (or first) one
-  std::string calibration_path;  // empty: figures in counts
+  std::string calibration_path;  // a calibration file or a session (app/calibration_input.h); empty: counts
   std::string output_path;       // allan.json; empty: none
   std::string kalibr_path;       // imu.yaml; empty: none
   double drift_window_s = 60.0;
@@ -53,7 +53,7 @@ void RunAllan(const AllanCommandOptions& o) {
   options.rate_hz = format.rate_hz;
   options.drift.window_s = o.drift_window_s;
   std::optional<Calibration> cal;
-  if (!o.calibration_path.empty()) cal = ReadCalibrationFile(o.calibration_path);
+  if (!o.calibration_path.empty()) cal = ReadCalibrationInput(o.calibration_path).calibration;
   if (!o.kalibr_path.empty() && !cal)
     throw Error("--kalibr: Kalibr wants m/s^2; give the sensor's --calibration");
   const RecordInputAnalysis in = AnalyzeRecordInput(o.recording_path, o.step, options, cal, format);
@@ -96,7 +96,7 @@ void SetupAllanCommand(CLI::App& app) {
       ->required();
   sub->add_option("--step", opts->step, "The session's record step (default: its first record)");
   sub->add_option("--calibration", opts->calibration_path,
-                  "Calibration file: figures in m/s^2 instead of counts")
+                  "Calibration file, or a finished session: figures in m/s^2 instead of counts")
       ->check(InputFile());
   sub->add_option("-o,--output", opts->output_path, "Write the analysis (allan.json) here");
   sub->add_option("--kalibr", opts->kalibr_path,

@@ -7,6 +7,7 @@
 
 #include "accelcal/base/error.h"
 #include "accelcal/io/capture_set_writer.h"
+#include "accelcal/session/sensor_journal_view.h"
 #include "accelcal/session/session_paths.h"
 #include "accelcal/session/session_store.h"
 #include "cli/commands.h"
@@ -17,13 +18,17 @@ namespace {
 struct ExportCommandOptions {
   std::string session;      // path or name in the default directory
   std::string output_path;
+  int sensor = 1;           // --sensor N of a several-sensor session (1-based)
 };
 
 void RunExport(const ExportCommandOptions& o) {
   SessionOpenOptions read_only;
   read_only.read_only = true;
   const std::string path = ResolveSessionPath(o.session);
-  const std::unique_ptr<SessionStore> store = SessionStore::Open(path, read_only);
+  const std::unique_ptr<SessionStore> session = SessionStore::Open(path, read_only);
+  // One sensor of a several-sensor session reads as a session of its own (its captures).
+  const std::unique_ptr<SensorJournalView> store =
+      std::make_unique<SensorJournalView>(*session, o.sensor - 1);
   CaptureSet set;
   set.source_name = path;
   // A capture taken again (redo) is superseded: kept in the session, never exported.
@@ -62,6 +67,8 @@ void SetupExportCommand(CLI::App& app) {
   sub->add_option("session", opts->session, "Session file, or a session's name in the default directory")
       ->required();
   sub->add_option("-o,--output", opts->output_path, "Capture-set file to write")->required();
+  sub->add_option("--sensor", opts->sensor, "Which sensor of a several-sensor session (1-based)")
+      ->check(CLI::PositiveNumber)->capture_default_str();
   sub->callback([opts] { RunExport(*opts); });
 }
 

@@ -48,12 +48,13 @@ struct ExportCalCommandOptions {
   double gyro_random_walk = kNaN;
   std::string rostopic = "/imu0";
   bool apply = false;  // mavlink:LINK: send the PARAM_SETs (else only say them)
+  int sensor = 1;      // --sensor N of a several-sensor session (1-based)
 };
 
 // The calibration (app/calibration_input.h: a file or a session), and what is known of its
 // origin: what the options say, else the session's device and creation date.
 Calibration ReadInput(const ExportCalCommandOptions& o, ExportContext* context) {
-  CalibrationInput in = ReadCalibrationInput(o.input);
+  CalibrationInput in = ReadCalibrationInput(o.input, o.sensor - 1);
   context->source = o.input;
   context->device = o.device;
   context->date_utc = o.date_utc;
@@ -179,6 +180,8 @@ void SetupExportCalCommand(CLI::App& app) {
                 "(without it: a dry run that prints them)");
   sub->add_option("-o,--output", opts->output_path, "File to write (default: standard output)");
   sub->add_option("--device", opts->device, "Device serial for the file's comment (a session gives it)");
+  sub->add_option("--sensor", opts->sensor, "Which sensor of a several-sensor session (1-based)")
+      ->check(CLI::PositiveNumber)->capture_default_str();
   sub->add_option("--date", opts->date_utc, "Calibration date for the file's comment (a session gives it)");
   sub->add_option("--nominal-scale-counts-per-mps2", opts->nominal_scale_counts_per_mps2,
                   "ardupilot/px4: the driver's scale, counts per m/s^2 (datasheet; one value or x y z)")

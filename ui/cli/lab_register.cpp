@@ -1,4 +1,5 @@
 // `accelcal lab history|due|equipment`: reading the lab's register, and keeping its equipment.
+#include <functional>
 #include <iostream>
 #include <memory>
 
@@ -86,15 +87,27 @@ std::string EquipmentText(const std::vector<LabEquipmentStatus>& items) {
   return t;
 }
 
-struct HistoryOptions {
-  std::string serial;
-  std::string format = "text";
-};
+// Opens the lab's store (LabStore::Connect).
+using LabConnect = std::function<std::unique_ptr<LabStore>()>;
 
-struct DueOptions {
-  std::string within = "30d";
-  std::string format = "text";
-};
+// A listing of the lab's register: the subcommand `name` of `lab`, its own options bound by
+// `bind` (to what `query` reads), then --format; it prints what `query` reads as `text` or
+// `json`. `query` connects (through its argument) once its options are checked: a wrong option
+// is said without asking the lab.
+template <class Result>
+CLI::App* AddLabQuery(CLI::App& lab, const std::string& name, const std::string& description,
+                      const std::function<void(CLI::App*)>& bind, std::function<Result(const LabConnect&)> query,
+                      std::string (*text)(const Result&), std::string (*json)(const Result&)) {
+  auto format = std::make_shared<std::string>("text");
+  CLI::App* sub = lab.add_subcommand(name, description);
+  bind(sub);
+  AddFormatOption(sub, format.get());
+  sub->callback([format, query = std::move(query), text, json] {
+    const Result result = query([] { return LabStore::Connect(); });
+    std::cout << (*format == "json" ? json(result) : text(result));
+  });
+  return sub;
+}
 
 struct EquipmentOptions {
   std::vector<std::string> check;
@@ -124,32 +137,29 @@ void RunEquipment(const EquipmentOptions& o) {
 }  // namespace
 
 void SetupLabHistoryCommand(CLI::App& lab) {
-  auto o = std::make_shared<HistoryOptions>();
-  CLI::App* sub = lab.add_subcommand(
-      "history", "Every certificate of a device across the lab's benches, withdrawn ones included");
-  sub->add_option("serial", o->serial, "Device serial")->required();
-  AddFormatOption(sub, &o->format);
-  sub->callback([o] {
-    const LabHistory h = LabStore::Connect()->History(o->serial);
-    std::cout << (o->format == "json" ? LabHistoryJsonText(h) : HistoryText(h));
-  });
+  auto serial = std::make_shared<std::string>();
+  AddLabQuery<LabHistory>(
+      lab, "history", "Every certificate of a device across the lab's benches, withdrawn ones included",
+      [serial](CLI::App* sub) { sub->add_option("serial", *serial, "Device serial")->required(); },
+      [serial](const LabConnect& connect) { return connect()->History(*serial); }, &HistoryText, &LabHistoryJsonText);
 }
 
 void SetupLabDueCommand(CLI::App& lab) {
-  auto o = std::make_shared<DueOptions>();
-  CLI::App* sub = lab.add_subcommand(
-      "due",
+  auto within = std::make_shared<std::string>("30d");
+  AddLabQuery<LabDueList>(
+      lab, "due",
       "Devices and equipment due for recalibration: a device its type's interval (else the\n"
       "lab's default) after its last valid calibration, an item of equipment when its\n"
-      "certificate runs out; overdue ones first");
-  sub->add_option("--within", o->within, "Window from today: 30d, 6w, 1y (default 30d)");
-  AddFormatOption(sub, &o->format);
-  sub->callback([o] {
-    const std::optional<long> days = ParseDays(o->within);
-    if (!days) throw Error(fmt::format("--within {}: give days, weeks or years (30d, 6w, 1y)", o->within));
-    const LabDueList due = LabStore::Connect()->Due(static_cast<int>(*days));
-    std::cout << (o->format == "json" ? LabDueJsonText(due) : DueText(due));
-  });
+      "certificate runs out; overdue ones first",
+      [within](CLI::App* sub) {
+        sub->add_option("--within", *within, "Window from today: 30d, 6w, 1y (default 30d)");
+      },
+      [within](const LabConnect& connect) {
+        const std::optional<long> days = ParseDays(*within);
+        if (!days) throw Error(fmt::format("--within {}: give days, weeks or years (30d, 6w, 1y)", *within));
+        return connect()->Due(static_cast<int>(*days));
+      },
+      &DueText, &LabDueJsonText);
 }
 
 void SetupLabEquipmentCommand(CLI::App& lab) {

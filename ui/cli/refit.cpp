@@ -1,16 +1,12 @@
 // `accelcal refit SESSION`: a finished session fitted again with corrected inputs (gravity,
-// equipment, identification); the use case is app/refit_session.h, this is its command line.
+// equipment, identification); the use case is app/refit_session.h's RefitSessionFile (the
+// session opened by app/calibration_input.h's rule), this is its command line.
 #include <iostream>
 #include <memory>
 
 #include <fmt/core.h>
 
 #include "accelcal/app/refit_session.h"
-#include "accelcal/base/error.h"
-#include "accelcal/base/utc_time.h"
-#include "accelcal/io/procedure_file.h"
-#include "accelcal/session/session_paths.h"
-#include "accelcal/session/session_store.h"
 #include "cli/commands.h"
 #include "cli/gravity_options.h"
 #include "cli/output.h"
@@ -25,42 +21,19 @@ struct RefitCommandOptions {
   std::optional<std::string> equipment, device, operator_name, place;
 };
 
-// The procedure the session ran: the one given, else the shipped full procedure when its title
-// is the session's.
-Procedure SessionProcedure(const std::string& given, const SessionInfo& info) {
-  if (!given.empty()) {
-    Procedure p = LoadProcedure(given);
-    if (!p.IsTitled(info.procedure))
-      throw Error(fmt::format("session {} ran the procedure \"{}\", not \"{}\" ({})", info.path, info.procedure,
-                              p.title, given));
-    return p;
-  }
-  Procedure shipped = LoadProcedure(ShippedProcedurePath("full_calibration.toml"));
-  if (!shipped.IsTitled(info.procedure))
-    throw Error(fmt::format("session {} ran the procedure \"{}\": give its file with --procedure", info.path,
-                            info.procedure));
-  return shipped;
-}
-
 void RunRefit(const RefitCommandOptions& o, const GravityFlags& gravity) {
-  const std::string path = ResolveSessionPath(o.session);
-  SessionOpenOptions open;
-  open.create_if_missing = false;
-  const std::unique_ptr<SessionStore> store = SessionStore::Open(path, open);
-  const SessionInfo info = store->Info();
-  const Procedure procedure = SessionProcedure(o.procedure_path, info);
-  RefitRequest request;
-  if (!gravity.Given().empty()) request.gravity = gravity.Resolve();
-  request.equipment_answer = o.equipment;
-  request.device = o.device;
-  request.operator_name = o.operator_name;
-  request.place = o.place;
-  request.session_name = path;
-  request.report_beside = path;
-  request.source = info.source;
-  request.now_utc = UtcNowIso8601();
-  const RefitOutcome out = RefitSession(*store, procedure, request);
-  std::cout << fmt::format("Refitted session {} ({}):\n", path, out.refit_step);
+  RefitFileRequest request;
+  request.input = o.session;
+  request.procedure_path = o.procedure_path;
+  request.default_procedure_path = ShippedProcedurePath("full_calibration.toml");
+  if (!gravity.Given().empty()) request.corrections.gravity = gravity.Resolve();
+  request.corrections.equipment_answer = o.equipment;
+  request.corrections.device = o.device;
+  request.corrections.operator_name = o.operator_name;
+  request.corrections.place = o.place;
+  const RefitFileOutcome done = RefitSessionFile(request);
+  const RefitOutcome& out = done.refit;
+  std::cout << fmt::format("Refitted session {} ({}):\n", done.path, out.refit_step);
   if (out.changes.empty()) std::cout << "  no input changed: fitted again as recorded\n";
   for (const std::string& c : out.changes) std::cout << "  " << c << '\n';
   for (const std::string& line : out.summary.lines) std::cout << "  " << line << '\n';

@@ -7,6 +7,7 @@
 #include <fmt/core.h>
 
 #include "accelcal/app/report_metadata.h"
+#include "accelcal/app/fixture/sensor_batch.h"
 #include "accelcal/io/calibration_file.h"
 #include "accelcal/io/report_json.h"
 #include "accelcal/report/report_html.h"
@@ -26,11 +27,21 @@ struct ReportCommandOptions {
   std::string allan_path;        // allan.json (docs/certificate.md, "Reports"); empty: the session's, if any
   std::string noise_path;        // noise.json; empty: the session's, if any
   std::string procedure_path;    // limits from here; empty: the default procedure when it matches
+  int sensor = 1;                // --sensor N: which sensor of a several-sensor session (1-based)
 };
+
+// `--format batch-csv`: every sensor of the session, one row each (app/sensor_batch.h).
+void RunBatchCsv(const ReportCommandOptions& o, const ReportRequest& request) {
+  const std::vector<SensorBatchRow> rows = SensorBatchOf(request);
+  WriteOutputText(o.output_path, BatchSummaryCsv(rows));
+  if (!o.output_path.empty())
+    std::cout << fmt::format("batch summary of {} sensor(s) written to {}\n", rows.size(),
+                             o.output_path);
+}
 
 void RunReport(const ReportCommandOptions& o) {
   if (o.format == "calibration") {
-    const Calibration cal = ReportInputsOf(o.input).calibration;
+    const Calibration cal = ReportInputsOf(o.input, o.sensor - 1).calibration;
     WriteOutputText(o.output_path, CalibrationToJsonText(cal) + "\n");
     if (!o.output_path.empty()) std::cout << fmt::format("calibration written to {}\n", o.output_path);
     return;
@@ -41,6 +52,8 @@ void RunReport(const ReportCommandOptions& o) {
   request.default_procedure_path = ShippedProcedurePath("full_calibration.toml");
   request.allan_path = o.allan_path;
   request.noise_path = o.noise_path;
+  request.sensor = o.sensor - 1;
+  if (o.format == "batch-csv") return RunBatchCsv(o, request);
   const ReportModel model = BuildReportModel(ReportInputsFor(request));
   std::string text;
   if (o.format == "html") text = RenderReportHtml(model);
@@ -67,12 +80,20 @@ void SetupReportCommand(CLI::App& app) {
       "  accelcal report 20250301T140509Z\n"
       "  accelcal report /tmp/s.db --format html -o report.html --allan allan.json\n"
       "  accelcal report cal.json --format json\n"
-      "  accelcal report /tmp/s.db --format calibration -o cal.json");
+      "  accelcal report /tmp/s.db --format calibration -o cal.json\n"
+      "  accelcal report plate.db --format batch-csv -o batch.csv\n"
+      "  accelcal report plate.db --sensor 3 --format html -o board3.html");
   sub->add_option("input", opts->input,
                   "Session file, a session's name in the default directory, or a calibration file")
       ->required();
-  sub->add_option("--format", opts->format, "text, html, json (the report) or calibration")
-      ->check(CLI::IsMember({"text", "html", "json", "calibration"}))->capture_default_str();
+  sub->add_option("--format", opts->format,
+                  "text, html, json (the report), calibration, or batch-csv (one row per sensor "
+                  "of a several-sensor session)")
+      ->check(CLI::IsMember({"text", "html", "json", "calibration", "batch-csv"}))
+      ->capture_default_str();
+  sub->add_option("--sensor", opts->sensor,
+                  "Which sensor of a several-sensor session (1-based; every format but batch-csv)")
+      ->check(CLI::PositiveNumber)->capture_default_str();
   sub->add_option("-o,--output", opts->output_path, "Write here instead of standard output");
   sub->add_option("--allan", opts->allan_path, "Allan-deviation analysis (JSON) to include");
   sub->add_option("--noise", opts->noise_path, "Noise analysis (JSON) to include");

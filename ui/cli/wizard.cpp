@@ -28,7 +28,9 @@
 #include "cli/output.h"
 #include "cli/source_preflight.h"
 #include "cli/terminal_answers.h"
+#include "cli/usage_errors.h"
 #include "cli/gravity_options.h"
+#include "cli/wizard_fixture.h"
 #include "cli/wizard_journal.h"
 #include "cli/shipped_files.h"
 #include "frontend.h"
@@ -90,23 +92,39 @@ int RunWizard(const WizardCommandOptions& options) {
   source_options.seed = options.seed;
   const bool sim = options.source == "sim";
   if (!options.scenario_path.empty()) source_options.scenario = sim::LoadScenario(options.scenario_path);
-  std::unique_ptr<SampleSource> source = OpenSource(options.source, source_options);
+  // Several sensors at once (cli/wizard_fixture.h): asked for, or the scenario's plate.
+  const bool several = WantsFixture(options) || (source_options.scenario && source_options.scenario->fixture);
+  std::unique_ptr<SampleSource> source;
+  if (!several) source = OpenSource(options.source, source_options);
   // The vehicle's calibration is said at the welcome (and recorded there); a refusal, here.
-  std::vector<std::string> device_lines = PrepareVehicle(*source, options.vehicle_calibration, nullptr, stdout);
+  std::vector<std::string> device_lines;
+  if (source) device_lines = PrepareVehicle(*source, options.vehicle_calibration, nullptr, stdout);
   // The vehicle, for the write-back step, before the source is wrapped.
   MavlinkSource* vehicle = dynamic_cast<MavlinkSource*>(source.get());
-  if (!options.bench_control.empty())
+  if (source && !options.bench_control.empty())
     source = WithRemoteBench(std::move(source), ParseHostPort(options.bench_control, options.bench_control,
                                                               "--bench-control HOST:PORT"));
   // A new session goes to the default session directory, where `accelcal sessions` looks.
   const std::string session = options.session_path.empty() ? NewSessionPath() : options.session_path;
   std::unique_ptr<SessionJournal> journal = OpenWizardJournal(session, procedure.title, options.source);
+  FixtureWizard fixture;
+  if (several) {
+    // Line mode names a sensor left out of a pose as it happens; the TUI keeps the screen.
+    const bool line_mode = tty || options.plain || ::isatty(STDOUT_FILENO) != 1;
+    fixture = OpenFixtureWizard(options, source_options, procedure, *journal,
+                                [line_mode](const std::string& note) {
+                                  if (line_mode) std::cout << "  note: " << note << "\n";
+                                });
+  }
+  SampleSource& samples = several ? *fixture.source : *source;
+  SessionJournal& record = several ? static_cast<SessionJournal&>(*fixture.journal) : *journal;
 
   WizardOptions wizard;
   wizard.session_name = session;
   wizard.default_operator = DefaultOperator(sim);
-  wizard.default_device = sim ? "SIM-0001" : "";
+  wizard.default_device = several ? "fixture" : sim ? "SIM-0001" : "";
   wizard.default_place = options.place;
+  wizard.fixed_duration_s = options.fixed_duration_s;
   wizard.device_lines = std::move(device_lines);
   wizard.vehicle = vehicle;
   wizard.gravity = options.gravity;
@@ -118,8 +136,8 @@ int RunWizard(const WizardCommandOptions& options) {
   if (!options.no_lab) wizard.check_equipment = AnnouncedEquipmentCheck();
   // A flag this run does not use (the session recorded its own at its welcome) is said, never
   // silently ignored.
-  wizard.notes = UnusedResumeFlags(*journal, session, options.gravity_flag, options.place);
-  WizardEngine engine(procedure, *source, *journal, wizard);
+  wizard.notes = UnusedResumeFlags(record, session, options.gravity_flag, options.place);
+  WizardEngine engine(procedure, samples, record, wizard);
 
   const bool terminal = ::isatty(STDIN_FILENO) == 1 && ::isatty(STDOUT_FILENO) == 1;
   int status = 0;
@@ -131,9 +149,15 @@ int RunWizard(const WizardCommandOptions& options) {
     // On a terminal, q is read while the wizard captures; a pipe's lines wait for questions.
     status = ui::RunLineModeOn(engine, STDIN_FILENO, ::isatty(STDIN_FILENO) == 1, std::cout);
   }
+  // A session left at a dead end (a fit refused, a capture refused again and again) is saved
+  // to resume like one left with q, but the job failed: a script must not take it for done.
+  if (status == 0 && engine.left_on_failure()) return kExitFailure;
   // Done only when the procedure ran to its end; a session left with q stays open to resume.
+  if (status == 0 && engine.completed() && several)
+    FinishFixtureWizard(fixture, *journal, procedure, procedure_path, session, std::cout);
   if (status == 0 && engine.completed()) {
     journal->MarkDone();
+    fixture = {};     // holds the session: let go first
     journal.reset();  // closed before the session is opened to publish it
     if (!options.no_lab) PublishAtTheEnd(session, procedure_path);
   }
@@ -167,6 +191,10 @@ void SetupWizardCommand(CLI::App& app) {
   sub->add_option("--session", options->session_path,
                   "Session file: created when new, resumed when it exists (default: a new one)");
   sub->add_flag("--plain", options->plain, "Plain line mode even on a terminal");
+  sub->add_option("--fixed-duration", options->fixed_duration_s,
+                  "Every capture this long, s, as before the plan (for comparison); default: the "
+                  "procedure's [target] plans each capture's length")
+      ->check(CLI::PositiveNumber);
   sub->add_flag("--no-lab", options->no_lab,
                 "On a bench pointed at a lab's register (docs/lab.md): neither check the equipment\n"
                 "at the welcome nor publish the finished session (`accelcal lab publish` does later)");
@@ -177,6 +205,15 @@ void SetupWizardCommand(CLI::App& app) {
   sub->add_option("--bench-control", options->bench_control,
                   "The virtual bench behind --source is another process's (accelcal record "
                   "--bench-listen): its controls at HOST:PORT place the sensor (tests)");
+  sub->add_option("--sensors", options->sensors,
+                  "sim: a plate of N boards calibrated at once, each on its own (docs/fixtures.md)")
+      ->check(CLI::Range(1, 64));
+  sub->add_option("--fixture", options->fixture_path,
+                  "Several sensors at once: the fixture file (serials, mountings, offsets; "
+                  "docs/fixtures.md)");
+  sub->add_option("--columns", options->columns,
+                  "A text source carrying several sensors: its columns, one ax,ay,az triple per "
+                  "sensor (t,ax,ay,az,ax,ay,az,...)");
   gravity->Bind(*sub);
   sub->footer(
       "Examples:\n"

@@ -21,10 +21,16 @@ struct WizardCommandOptions {
   // session published at the end. --no-lab: neither.
   bool no_lab = false;
   std::string place;                // offered at the welcome (the lab, the bench)
+  double fixed_duration_s = 0.0;    // > 0: every capture this long (no plan by the target), s
   std::string bench_control;        // HOST:PORT of a remote virtual bench's controls (tests)
   std::string vehicle_calibration = "undo";  // mavlink: undo | as-is
   GravitySpec gravity;
   std::string gravity_flag;         // the gravity flag as given ("--latitude 0"); empty: none
+  // Several sensors at once (issue 31; cli/wizard_fixture.h): sim's --sensors N boards, a
+  // fixture file, or a text link's --columns naming N column triples.
+  int sensors = 0;
+  std::string fixture_path;
+  std::string columns;
 };
 
 // Runs the wizard to its end or until the operator leaves; returns the exit status.

@@ -53,13 +53,23 @@ LocatedCalibrationInput LocateCalibrationInput(const std::string& input) {
   return {CalibrationInputKind::kCalibrationFile, input};
 }
 
-SessionWithResult OpenSessionResult(const std::string& path) {
+SessionWithResult OpenSessionResult(const std::string& path, int sensor) {
   SessionOpenOptions read_only;
   read_only.read_only = true;
   SessionWithResult s;
   s.store = SessionStore::Open(path, read_only);
   s.info = s.store->Info();
-  std::optional<std::string> result = s.store->Result();
+  const Fixture sensors = SessionSensors(*s.store);
+  if (sensor < 0 || static_cast<std::size_t>(sensor) >= sensors.sensors.size())
+    throw Error(fmt::format("--sensor {}: session {} has {} sensor(s)", sensor + 1, path,
+                            sensors.sensors.size()));
+  if (s.store->Sensors()) s.info.device = sensors.sensors[static_cast<std::size_t>(sensor)].serial;
+  std::optional<std::string> result = s.store->SensorResult(sensor);
+  if (!result && sensor > 0)
+    throw Error(fmt::format("session {} has no calibration of sensor {} ({}): {} of its captures "
+                            "accepted", path, sensor + 1,
+                            sensors.sensors[static_cast<std::size_t>(sensor)].serial,
+                            s.store->SensorCaptures(sensor).size()));
   if (!result && !DescribeRecords(*s.store).empty())
     throw Error(fmt::format("session {} has no calibration: it holds records ({}), which another "
                             "command analyses", path, DescribeRecords(*s.store)));
@@ -70,12 +80,15 @@ SessionWithResult OpenSessionResult(const std::string& path) {
   return s;
 }
 
-CalibrationInput ReadCalibrationInput(const LocatedCalibrationInput& at) {
+CalibrationInput ReadCalibrationInput(const LocatedCalibrationInput& at, int sensor) {
   CalibrationInput in;
   in.kind = at.kind;
   in.path = at.path;
+  if (at.kind != CalibrationInputKind::kSession && sensor != 0)
+    throw Error(fmt::format("--sensor {}: {} is a calibration file, of one sensor", sensor + 1,
+                            at.path));
   if (at.kind == CalibrationInputKind::kSession) {
-    SessionWithResult s = OpenSessionResult(at.path);
+    SessionWithResult s = OpenSessionResult(at.path, sensor);
     in.text = std::move(s.result_text);
     in.session = std::move(s.info);
   } else {
@@ -85,8 +98,19 @@ CalibrationInput ReadCalibrationInput(const LocatedCalibrationInput& at) {
   return in;
 }
 
-CalibrationInput ReadCalibrationInput(const std::string& input) {
-  return ReadCalibrationInput(LocateCalibrationInput(input));
+CalibrationInput ReadCalibrationInput(const std::string& input, int sensor) {
+  return ReadCalibrationInput(LocateCalibrationInput(input), sensor);
+}
+
+std::unique_ptr<SessionStore> OpenSessionToChange(const std::string& input) {
+  if (IsRegularFile(input) && !IsSessionFile(input)) {
+    LocateCalibrationInput(input);  // throws for a file that is neither
+    throw Error(fmt::format("{} is a calibration file, not a session: only a session holds the captures "
+                            "to fit again (give the session it came from)", input));
+  }
+  SessionOpenOptions existing;
+  existing.create_if_missing = false;
+  return SessionStore::Open(ResolveSessionPath(input), existing);
 }
 
 }  // namespace accelcal

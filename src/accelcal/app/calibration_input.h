@@ -1,7 +1,7 @@
 // A calibration given to a command, from a calibration file or from a wizard session: the one
 // rule that tells the two apart and the one set of errors, for every command that takes either
-// (`report`, `export-cal`), and the one test of "is this a session file?" (also `allan`'s, whose
-// input is a recording or a session).
+// (`report`, `export-cal`, `allan --calibration`) or a session only (`refit`), and the one test
+// of "is this a session file?" (also `allan`'s, whose input is a recording or a session).
 //
 // The rule, on what `input` names:
 //   - something read once (a pipe, `-`, a character device): a calibration file's text (a
@@ -47,7 +47,9 @@ struct SessionWithResult {
   SessionInfo info;
   std::string result_text;  // the calibration file's JSON, with the session's gaps beside it
 };
-SessionWithResult OpenSessionResult(const std::string& path);
+// `sensor`: which of a several-sensor session's sensors (0: the first, a one-sensor session's
+// only; Error naming the count when the session has no such sensor).
+SessionWithResult OpenSessionResult(const std::string& path, int sensor = 0);
 
 // The calibration of `input` and what is known of its origin.
 struct CalibrationInput {
@@ -57,7 +59,13 @@ struct CalibrationInput {
   Calibration calibration;             // strictly read (InputError naming the file or session)
   std::optional<SessionInfo> session;  // from a session: its device, operator, dates, procedure
 };
-CalibrationInput ReadCalibrationInput(const std::string& input);
-CalibrationInput ReadCalibrationInput(const LocatedCalibrationInput& at);
+CalibrationInput ReadCalibrationInput(const std::string& input, int sensor = 0);
+CalibrationInput ReadCalibrationInput(const LocatedCalibrationInput& at, int sensor = 0);
+
+// The session `input` names, by the rule above, opened for writing (its lock held) to change its
+// calibration (`refit`). Throws accelcal::Error for a calibration file ("PATH is a calibration
+// file, not a session: ..."; a refit needs the session's captures), for a file that is neither,
+// and for nothing there (ResolveSessionPath's "no session NAME ...").
+std::unique_ptr<SessionStore> OpenSessionToChange(const std::string& input);
 
 }  // namespace accelcal

@@ -94,6 +94,14 @@ SessionPublishOutcome PublishSession(LabStore& lab, SessionStore& store,
     out.name = info.name;
     if (info.state != SessionState::kDone)
       return NotReady(out, "not finished: the wizard has not reached its end (run it again to finish)");
+    // A session of several sensors (a fixture, docs/fixtures.md) would need one publication
+    // sensor per board, each under its own serial: not built yet. Refused rather than filed
+    // under the fixture's name with its first board's calibration.
+    if (const std::optional<Fixture> sensors = store.Sensors(); sensors && sensors->sensors.size() > 1)
+      return NotReady(out, fmt::format("a session of {} sensors on a fixture: the lab's register takes a "
+                                       "session of one sensor so far (each board's report: accelcal "
+                                       "report {} --sensor N)",
+                                       sensors->sensors.size(), store.path()));
     const std::optional<std::string> calibration_json = store.Result();
     if (!calibration_json) return NotReady(out, "no calibration: nothing to certify");
     if (info.device.empty())

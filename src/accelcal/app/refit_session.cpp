@@ -3,36 +3,40 @@
 #include <algorithm>
 #include <cstdlib>
 #include <map>
+#include <string>
 
 #include <fmt/core.h>
 #include <fmt/format.h>
 
+#include "accelcal/app/calibration_input.h"
 #include "accelcal/app/wizard/calibration_steps.h"
 #include "accelcal/app/wizard/equipment_input.h"
 #include "accelcal/app/wizard/gravity_input.h"
 #include "accelcal/app/wizard/session_gaps.h"
 #include "accelcal/app/wizard/session_settings.h"
 #include "accelcal/base/error.h"
+#include "accelcal/base/utc_time.h"
+#include "accelcal/io/procedure_file.h"
+#include "accelcal/session/session_inputs.h"
 
 namespace accelcal {
 namespace {
 
-constexpr const char* kRefitPrefix = "refit ";
+using Inputs = SessionInputs;
 
-using Inputs = std::map<std::string, std::map<std::string, std::string>>;
-
-std::string WelcomeInput(const Inputs& inputs, const std::string& key) {
-  const auto welcome = inputs.find(kWelcomeStepId);
-  if (welcome == inputs.end()) return "";
-  const auto value = welcome->second.find(key);
-  return value == welcome->second.end() ? "" : value->second;
+// The welcome's answer kept under `key` (a welcome_key, session_inputs.h); "" when none.
+std::string WelcomeInput(const Inputs& inputs, const char* key) {
+  const WelcomeAnswers answers = ReadWelcomeAnswers(inputs);
+  const std::optional<std::string>* answer = answers.Find(key);
+  return answer != nullptr && *answer ? **answer : "";
 }
 
 // The refit steps of `inputs` by their number: "refit 1", "refit 2", ... ("refit 10" after 9).
 std::map<int, const std::map<std::string, std::string>*> RefitSteps(const Inputs& inputs) {
   std::map<int, const std::map<std::string, std::string>*> out;
   for (const auto& [step, values] : inputs)
-    if (step.rfind(kRefitPrefix, 0) == 0) out[std::atoi(step.c_str() + 6)] = &values;
+    if (step.rfind(kRefitStepPrefix, 0) == 0)
+      out[std::atoi(step.c_str() + std::char_traits<char>::length(kRefitStepPrefix))] = &values;
   return out;
 }
 
@@ -54,25 +58,25 @@ std::vector<Change> Changes(const Inputs& inputs, const Procedure& procedure, co
     if (r.gravity->is_standard() && need.local_gravity)
       throw Error("this procedure needs the local gravity, not the standard value: give a measured value "
                   "(--gravity 9.78030+-0.00002) or the place (--latitude -34.9 --altitude 43)");
-    add("gravity", GravityAnswerText(*r.gravity));
+    add(welcome_key::kGravity, GravityAnswerText(*r.gravity));
   }
   if (r.equipment_answer) {
     // An edit applies to the session's equipment, as at the welcome.
-    const std::string before = WelcomeInput(inputs, "equipment");
+    const std::string before = WelcomeInput(inputs, welcome_key::kEquipment);
     const std::string after = EquipmentAnswerOver(before.empty() ? "keep" : before, *r.equipment_answer);
     if (std::string why = ApplyEquipmentAnswer(after, procedure.equipment).error; !why.empty())
       throw Error("--equipment: " + why);
-    add("equipment", after);
+    add(welcome_key::kEquipment, after);
   }
   if (r.device) {
     if (r.device->empty() && need.device_serial) throw Error("this procedure needs the device's serial number");
-    add("device", *r.device);
+    add(welcome_key::kDevice, *r.device);
   }
   if (r.operator_name) {
     if (r.operator_name->empty() && need.operator_name) throw Error("this procedure needs the operator's name");
-    add("operator", *r.operator_name);
+    add(welcome_key::kOperator, *r.operator_name);
   }
-  if (r.place) add("place", *r.place);
+  if (r.place) add(welcome_key::kPlace, *r.place);
   return out;
 }
 
@@ -98,7 +102,7 @@ RefitOutcome RefitSession(SessionJournal& journal, const Procedure& procedure, c
   GravitySpec gravity = settings.gravity.value_or(GravitySpec::Standard());
   if (request.gravity) gravity = *request.gravity;
   for (const Change& c : changes)
-    if (c.key == "equipment") settings.equipment = ApplyEquipmentAnswer(c.after, procedure.equipment).items;
+    if (c.key == welcome_key::kEquipment) settings.equipment = ApplyEquipmentAnswer(c.after, procedure.equipment).items;
   std::unique_ptr<WizardOutputs> outputs =
       request.report_beside.empty() ? nullptr : MakeOutputsBesideSession(request.report_beside);
   CalibrationSteps steps(procedure, model, gravity, request.session_name, outputs.get());
@@ -107,10 +111,10 @@ RefitOutcome RefitSession(SessionJournal& journal, const Procedure& procedure, c
   if (const StepOutcome fit = steps.Fit(); !fit.problem.empty()) throw Error("refit: " + fit.problem);
 
   // What changed, when; then the welcome's inputs take the corrected values.
-  out.refit_step = fmt::format("{}{}", kRefitPrefix, RefitSteps(model.inputs()).size() + 1);
-  model.RecordInput(out.refit_step, "at", request.now_utc);
+  out.refit_step = fmt::format("{}{}", kRefitStepPrefix, RefitSteps(model.inputs()).size() + 1);
+  model.RecordInput(out.refit_step, refit_key::kAt, request.now_utc);
   for (size_t i = 0; i < out.changes.size(); ++i)
-    model.RecordInput(out.refit_step, fmt::format("change {}", i + 1), out.changes[i]);
+    model.RecordInput(out.refit_step, fmt::format("{}{}", refit_key::kChangePrefix, i + 1), out.changes[i]);
   for (const Change& c : changes) model.RecordInput(kWelcomeStepId, c.key, c.after);
 
   ReportMeta meta;
@@ -126,6 +130,41 @@ RefitOutcome RefitSession(SessionJournal& journal, const Procedure& procedure, c
   return out;
 }
 
+namespace {
+
+// The procedure the session ran: the one given, else the default when its title is the session's.
+Procedure SessionProcedure(const RefitFileRequest& r, const SessionInfo& info) {
+  if (!r.procedure_path.empty()) {
+    Procedure p = LoadProcedure(r.procedure_path);
+    if (!p.IsTitled(info.procedure))
+      throw Error(fmt::format("session {} ran the procedure \"{}\", not \"{}\" ({})", info.path, info.procedure,
+                              p.title, r.procedure_path));
+    return p;
+  }
+  Procedure shipped = LoadProcedure(r.default_procedure_path);
+  if (!shipped.IsTitled(info.procedure))
+    throw Error(fmt::format("session {} ran the procedure \"{}\": give its file with --procedure", info.path,
+                            info.procedure));
+  return shipped;
+}
+
+}  // namespace
+
+RefitFileOutcome RefitSessionFile(const RefitFileRequest& request) {
+  const std::unique_ptr<SessionStore> store = OpenSessionToChange(request.input);
+  const SessionInfo info = store->Info();
+  const Procedure procedure = SessionProcedure(request, info);
+  RefitRequest refit = request.corrections;
+  refit.session_name = info.path;
+  refit.report_beside = info.path;
+  refit.source = info.source;
+  refit.now_utc = UtcNowIso8601();
+  RefitFileOutcome out;
+  out.path = info.path;
+  out.refit = RefitSession(*store, procedure, refit);
+  return out;
+}
+
 std::vector<std::string> SessionHistory(const SessionJournal& journal, int earlier_results) {
   const Inputs inputs = journal.Inputs();
   std::vector<std::string> out;
@@ -133,8 +172,8 @@ std::vector<std::string> SessionHistory(const SessionJournal& journal, int earli
     std::vector<std::string> changes;
     std::string at;
     for (const auto& [key, value] : *values) {
-      if (key == "at") at = value;
-      else if (key.rfind("change ", 0) == 0) changes.push_back(value);
+      if (key == refit_key::kAt) at = value;
+      else if (key.rfind(refit_key::kChangePrefix, 0) == 0) changes.push_back(value);
     }
     out.push_back(fmt::format("refit {} ({}): {}", n, at.empty() ? "time not recorded" : at,
                               changes.empty() ? "no input changed" : fmt::format("{}", fmt::join(changes, "; "))));
@@ -151,15 +190,15 @@ std::vector<std::string> UnusedResumeFlags(const SessionJournal& journal, const 
   std::vector<std::string> out;
   // A session still under way has no calibration to refit yet: the command is for its end.
   const std::string when = journal.ResultCount() > 0 ? "" : ", once the session is finished";
-  const std::string gravity = WelcomeInput(inputs, "gravity");
+  const std::string gravity = WelcomeInput(inputs, welcome_key::kGravity);
   if (!gravity_flag.empty() && !gravity.empty())
     out.push_back(fmt::format("{} ignored: this session's gravity was recorded at its welcome ({}); to "
                               "calibrate it with another{}: accelcal refit {} {}",
                               gravity_flag, gravity, when, session, gravity_flag));
-  if (!place_flag.empty() && inputs.count(kWelcomeStepId) != 0 && inputs.at(kWelcomeStepId).count("place") != 0)
+  if (!place_flag.empty() && ReadWelcomeAnswers(inputs).place)
     out.push_back(fmt::format("--place {} ignored: this session's place was recorded at its welcome ({}); "
                               "to change it{}: accelcal refit {} --place '{}'",
-                              place_flag, WelcomeInput(inputs, "place"), when, session, place_flag));
+                              place_flag, WelcomeInput(inputs, welcome_key::kPlace), when, session, place_flag));
   return out;
 }
 

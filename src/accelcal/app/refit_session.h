@@ -48,6 +48,24 @@ struct RefitOutcome {
 // unusable fit (nothing is recorded then).
 RefitOutcome RefitSession(SessionJournal& journal, const Procedure& procedure, const RefitRequest& request);
 
+// `accelcal refit`: the session `input` names (a file, or a name in the default folder; opened by
+// app/calibration_input.h's OpenSessionToChange: a calibration file is refused), refitted with
+// the procedure it ran, `procedure_path`'s (refused when the session ran another), else
+// `default_procedure_path`'s when it is that one (else an Error asks for --procedure), with
+// `corrections` (its gravity, equipment and identification; the session's name, source, the
+// report beside it and the time are filled here). Throws as RefitSession.
+struct RefitFileRequest {
+  std::string input;
+  std::string procedure_path;          // empty: the default, when the session ran it
+  std::string default_procedure_path;  // the shipped full procedure
+  RefitRequest corrections;
+};
+struct RefitFileOutcome {
+  std::string path;  // the session file refitted
+  RefitOutcome refit;
+};
+RefitFileOutcome RefitSessionFile(const RefitFileRequest& request);
+
 // What the session's history says: each refit with what it changed, and (when
 // `earlier_results` > 0) that the earlier calibrations are kept ("1 earlier calibration is kept
 // in the session; this is the latest"); empty for a session fitted once.

@@ -8,14 +8,17 @@
 #include "accelcal/io/noise_file.h"
 #include "accelcal/io/procedure_file.h"
 #include "accelcal/io/session_result_file.h"
+#include "accelcal/session/sensor_journal_view.h"
 
 namespace accelcal {
 
 namespace {
 
-ReportInputs FromSession(const std::string& path) {
-  const SessionWithResult session = OpenSessionResult(path);
-  ReportInputs in = ReportInputsFromJournal(*session.store, path);
+ReportInputs FromSession(const std::string& path, int sensor) {
+  const SessionWithResult session = OpenSessionResult(path, sensor);
+  // A sensor of a several-sensor session reads as a one-sensor session (its captures, result).
+  SensorJournalView view(*session.store, sensor);
+  ReportInputs in = ReportInputsFromJournal(view, path);
   const SessionInfo& info = session.info;
   in.meta.device = info.device;
   in.meta.operator_name = info.operator_name;
@@ -24,9 +27,9 @@ ReportInputs FromSession(const std::string& path) {
   in.meta.session_path = info.path;
   in.meta.procedure = info.procedure;
   in.meta.source = info.source;
-  // One sensor per session today: its lab number, once published (docs/lab.md).
+  // The sensor's lab number, once published (docs/lab.md; keyed by sensor index).
   for (const LabCertificateMark& mark : session.store->LabCertificates())
-    if (mark.sensor_index == 0) in.meta.certificate_number = mark.certificate_number;
+    if (mark.sensor_index == sensor) in.meta.certificate_number = mark.certificate_number;
   return in;
 }
 
@@ -64,10 +67,10 @@ void AddLimits(const ReportRequest& r, ReportInputs* in) {
 
 }  // namespace
 
-ReportInputs ReportInputsOf(const std::string& input) {
+ReportInputs ReportInputsOf(const std::string& input, int sensor) {
   const LocatedCalibrationInput at = LocateCalibrationInput(input);
-  if (at.kind == CalibrationInputKind::kSession) return FromSession(at.path);
-  const CalibrationInput file = ReadCalibrationInput(at);
+  if (at.kind == CalibrationInputKind::kSession) return FromSession(at.path, sensor);
+  const CalibrationInput file = ReadCalibrationInput(at, sensor);
   ReportInputs in;
   in.calibration = file.calibration;
   ReadAnalysesFromResultText(file.text, file.path, &in);
@@ -75,7 +78,7 @@ ReportInputs ReportInputsOf(const std::string& input) {
 }
 
 ReportInputs ReportInputsFor(const ReportRequest& request) {
-  ReportInputs in = ReportInputsOf(request.input);
+  ReportInputs in = ReportInputsOf(request.input, request.sensor);
   AddLimits(request, &in);
   if (!request.allan_path.empty()) in.allan = ReadAllanFile(request.allan_path);
   if (!request.noise_path.empty()) in.noise = ReadNoiseFile(request.noise_path);

@@ -21,12 +21,15 @@ struct ReportRequest {
   std::string default_procedure_path;  // the shipped seed procedure (the front end knows where)
   std::string allan_path;      // an Allan analysis (allan.json) to include; empty: the input's
   std::string noise_path;      // a noise analysis (noise.json) to include; empty: the input's
+  // Which sensor of a several-sensor session (`--sensor N`, here N - 1): its captures, its
+  // calibration, its serial as the device (sensor_journal_view.h). 0 for any other input.
+  int sensor = 0;
 };
 
 // The report's inputs from `input` alone: the calibration and the analyses and session gaps
 // recorded beside it; from a session, its captures and meta too. Throws accelcal::Error (an
 // InputError for a damaged file) naming what could not be read.
-ReportInputs ReportInputsOf(const std::string& input);
+ReportInputs ReportInputsOf(const std::string& input, int sensor = 0);
 
 // ReportInputsOf(request.input), with the procedure's limits and equipment and the analyses
 // given. Throws as ReportInputsOf, and naming the procedure or analysis file that cannot be read.

@@ -1,8 +1,11 @@
 #include "accelcal/bags/ros2_sqlite_file.h"
 
 #include <sqlite3.h>
+#include <sys/stat.h>
 
 #include <algorithm>
+#include <cctype>
+#include <cstring>
 #include <map>
 
 #include <fmt/format.h>
@@ -63,6 +66,26 @@ sqlite3* OpenReadOnly(const std::string& path, std::string* error) {
     return nullptr;
   }
   return db;
+}
+
+bool SameWord(const std::string& a, const char* b) {
+  return std::equal(a.begin(), a.end(), b, b + std::strlen(b),
+                    [](char x, char y) { return std::tolower(static_cast<unsigned char>(x)) == y; });
+}
+
+// True when the messages table is (id INTEGER PRIMARY KEY, topic_id, timestamp, data) in this
+// order, as rosbag2 creates it (its values' types are checked row by row).
+bool RosbagMessagesColumns(sqlite3* db) {
+  Statement s(db, "PRAGMA table_info(messages)");
+  const char* const names[] = {"id", "topic_id", "timestamp", "data"};
+  size_t n = 0;
+  while (s.get() != nullptr && sqlite3_step(s.get()) == SQLITE_ROW) {
+    if (n >= 4 || ColumnText(s.get(), 1) != names[n]) return false;
+    if (n == 0 && (!SameWord(ColumnText(s.get(), 2), "integer") || sqlite3_column_int(s.get(), 5) != 1))
+      return false;
+    ++n;
+  }
+  return n == 4;
 }
 
 }  // namespace
@@ -165,29 +188,86 @@ std::optional<std::vector<TopicSummary>> Ros2SqliteFile::IndexedTopics(bool with
   return out;
 }
 
-// The statement over the rows of the wanted topics, in the order they were written.
+// The wanted topics' rows, in the order they were written: from the pages when it can.
 void Ros2SqliteFile::StartReading(MessageSink* sink) {
   started_ = true;
-  std::string ids;
   for (Topic& t : topics_) {
     t.slot = sink->Wants(t.connection);
-    if (t.slot >= 0) ids += (ids.empty() ? "" : ",") + std::to_string(t.id);
+    if (t.slot >= 0) wanted_ids_.push_back(t.id);
   }
-  if (ids.empty()) {
+  if (wanted_ids_.empty()) {
     done_ = true;
     return;
   }
-  const std::string sql = fmt::format(
-      "SELECT topic_id, timestamp, data FROM messages WHERE topic_id IN ({}) ORDER BY id", ids);
+  if (!StartReadingPages()) PrepareRows(std::nullopt);
+}
+
+// The rows read from the file's pages (sqlite_row_pages.h), inside a read transaction held to
+// the end so that no writer changes them meanwhile; false when the file is not one it reads (a
+// WAL database whose log holds pages, a table of another shape).
+bool Ros2SqliteFile::StartReadingPages() {
+  if (sqlite3_exec(db_, "BEGIN", nullptr, nullptr, nullptr) != SQLITE_OK) return false;
+  int64_t root = 0;
+  {
+    Statement s(db_, "SELECT rootpage FROM sqlite_master WHERE type = 'table' AND name = 'messages'");
+    if (s.get() == nullptr || sqlite3_step(s.get()) != SQLITE_ROW) return false;
+    root = sqlite3_column_int64(s.get(), 0);
+  }
+  if (root < 2 || root > UINT32_MAX || !RosbagMessagesColumns(db_)) return false;
+  try {
+    mapped_ = std::make_unique<MappedFile>(path_);
+  } catch (const Error&) {
+    return false;
+  }
+  pages_ = SqliteRowPages::Open(mapped_.get(), static_cast<uint32_t>(root), wanted_ids_);
+  struct stat wal {};
+  if (pages_ && pages_->read_version() == 2 && ::stat((path_ + "-wal").c_str(), &wal) == 0 && wal.st_size > 0)
+    pages_.reset();  // WAL: the newest pages may be in the log
+  if (!pages_) mapped_.reset();
+  return pages_.has_value();
+}
+
+void Ros2SqliteFile::PrepareRows(std::optional<int64_t> after_rowid) {
+  std::string ids;
+  for (const int64_t id : wanted_ids_) ids += (ids.empty() ? "" : ",") + std::to_string(id);
+  const std::string sql = fmt::format("SELECT topic_id, timestamp, data FROM messages WHERE topic_id IN ({}){} "
+                                      "ORDER BY id", ids, after_rowid ? " AND id > ?1" : "");
   if (sqlite3_prepare_v2(db_, sql.c_str(), -1, &rows_, nullptr) != SQLITE_OK)
     Fail(std::string("its messages table: ") + sqlite3_errmsg(db_));
+  if (after_rowid) sqlite3_bind_int64(rows_, 1, *after_rowid);
+}
+
+// The topics' slots by id: a handful of topics, looked up by a short scan.
+int Ros2SqliteFile::SlotOf(int64_t topic_id) const {
+  int slot = -1;
+  for (const Topic& t : topics_)
+    if (t.id == topic_id) slot = t.slot;
+  return slot;
 }
 
 bool Ros2SqliteFile::ReadBatch(MessageSink* sink) {
   if (!started_) StartReading(sink);
   if (done_) return false;
-  // The topics' slots by id: a handful of topics, looked up by a short scan.
-  for (int n = 0; n < kRowsPerBatch; ++n) {
+  int n = 0;
+  if (pages_) {
+    SqliteRowPages::Row row;
+    for (; n < kRowsPerBatch; ++n) {
+      if (!pages_->Next(&row)) break;
+      ++rows_read_;
+      const int slot = SlotOf(row.topic_id);
+      if (slot >= 0) sink->OnMessage(slot, static_cast<uint64_t>(row.timestamp), row.data, row.size);
+    }
+    if (n == kRowsPerBatch) return true;
+    if (!pages_->stopped()) {
+      done_ = true;
+      return true;
+    }
+    // Something the page reader does not read: SQLite goes on from the last row it read.
+    PrepareRows(pages_->read_any() ? std::optional<int64_t>(pages_->last_rowid()) : std::nullopt);
+    pages_.reset();
+    mapped_.reset();
+  }
+  for (; n < kRowsPerBatch; ++n) {
     const int rc = sqlite3_step(rows_);
     if (rc == SQLITE_DONE) {
       done_ = true;
@@ -201,10 +281,7 @@ bool Ros2SqliteFile::ReadBatch(MessageSink* sink) {
       return true;
     }
     ++rows_read_;
-    const int64_t topic_id = sqlite3_column_int64(rows_, 0);
-    int slot = -1;
-    for (const Topic& t : topics_)
-      if (t.id == topic_id) slot = t.slot;
+    const int slot = SlotOf(sqlite3_column_int64(rows_, 0));
     if (slot < 0) continue;
     const auto time_ns = static_cast<uint64_t>(sqlite3_column_int64(rows_, 1));
     const auto* data = static_cast<const uint8_t*>(sqlite3_column_blob(rows_, 2));

@@ -171,6 +171,19 @@ std::string HeaderUnitHint(std::string_view cell) {
   return {};
 }
 
+std::optional<NamedColumn> ColumnFromListName(std::string_view name) {
+  if (name == "-") return NamedColumn{SampleColumn::kIgnore, 1.0};
+  if (name == "t" || name == "t_s") return NamedColumn{SampleColumn::kT, 1.0};
+  if (name == "t_ms") return NamedColumn{SampleColumn::kT, 1e-3};
+  if (name == "t_us") return NamedColumn{SampleColumn::kT, 1e-6};
+  if (name == "t_ns") return NamedColumn{SampleColumn::kT, 1e-9};
+  if (name == "ax") return NamedColumn{SampleColumn::kAx, 1.0};
+  if (name == "ay") return NamedColumn{SampleColumn::kAy, 1.0};
+  if (name == "az") return NamedColumn{SampleColumn::kAz, 1.0};
+  if (name == "temp_c") return NamedColumn{SampleColumn::kTempC, 1.0};
+  return std::nullopt;
+}
+
 std::vector<NamedColumn> ParseColumnList(std::string_view text, std::string* error) {
   std::vector<NamedColumn> columns;
   std::vector<std::string> names;
@@ -181,22 +194,13 @@ std::vector<NamedColumn> ParseColumnList(std::string_view text, std::string* err
     std::string_view name = text.substr(start, comma - start);
     while (!name.empty() && name.front() == ' ') name.remove_prefix(1);
     while (!name.empty() && name.back() == ' ') name.remove_suffix(1);
-    NamedColumn c;
-    if (name == "-") c = {SampleColumn::kIgnore, 1.0};
-    else if (name == "t" || name == "t_s") c = {SampleColumn::kT, 1.0};
-    else if (name == "t_ms") c = {SampleColumn::kT, 1e-3};
-    else if (name == "t_us") c = {SampleColumn::kT, 1e-6};
-    else if (name == "t_ns") c = {SampleColumn::kT, 1e-9};
-    else if (name == "ax") c = {SampleColumn::kAx, 1.0};
-    else if (name == "ay") c = {SampleColumn::kAy, 1.0};
-    else if (name == "az") c = {SampleColumn::kAz, 1.0};
-    else if (name == "temp_c") c = {SampleColumn::kTempC, 1.0};
-    else {
+    const std::optional<NamedColumn> c = ColumnFromListName(name);
+    if (!c) {
       *error = fmt::format("--columns: unknown column '{}' (known: t, t_ms, t_us, t_ns, ax, ay, "
                            "az, temp_c, and - for a column to ignore)", name);
       return {};
     }
-    columns.push_back(c);
+    columns.push_back(*c);
     names.emplace_back(name);
     start = comma + 1;
   }

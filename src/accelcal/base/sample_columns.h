@@ -46,6 +46,10 @@ NamedColumn RecognizeColumnName(std::string_view cell);
 // not recognised).
 std::string HeaderUnitHint(std::string_view cell);
 
+// One name of a `--columns` list (t, t_s, t_ms, t_us, t_ns, ax, ay, az, temp_c, -); nullopt for
+// any other.
+std::optional<NamedColumn> ColumnFromListName(std::string_view name);
+
 // Parses a `--columns` list: canonical names (t, t_ms, t_us, t_ns, ax, ay, az, temp_c, -)
 // separated by commas. Each of ax, ay, az exactly once; t and temp_c at most once.
 // Returns the columns, or sets *error (and returns empty) with what is wrong.

@@ -7,6 +7,7 @@
 #include <fmt/core.h>
 #include <nlohmann/json.hpp>
 
+#include "accelcal/io/detail/fixture_toml.h"
 #include "accelcal/io/detail/json_values.h"
 #include "accelcal/io/detail/toml_reader.h"
 #include "accelcal/base/error.h"
@@ -224,6 +225,68 @@ CapturePlan ReadCapture(TomlTableReader& r) {
   return c;
 }
 
+// [[fixture.board]]: the fixture file's fields, and what only the virtual bench has (the truth,
+// the real mounting, the faults).
+FixtureBoard ReadBoard(TomlTableReader& r, const std::string& source) {
+  FixtureBoard b;
+  b.declared = detail::ReadFixtureSensorFields(r);
+  b.mounted_to_plate = b.declared.sensor_to_plate;
+  if (r.Has("mounted_x") || r.Has("mounted_y")) {
+    b.mounted_to_plate = detail::ReadSensorToPlate(r, "mounted_x", "mounted_y");
+  }
+  if (r.Has("bias_counts") || r.Has("scale_counts_per_mps2") || r.Has("misalignment_rad")) {
+    SensorModel m;
+    m.bias_counts = r.Vector3("bias_counts", std::nullopt);
+    m.scale_counts_per_mps2 =
+        r.Vector3("scale_counts_per_mps2", std::nullopt, NumberRange::kPositive);
+    if (const toml::table* mis = r.Table("misalignment_rad")) {
+      TomlTableReader mr(*mis, "misalignment_rad", source);
+      m.a_yz_rad = mr.Number("yz", 0.0);
+      m.a_zy_rad = mr.Number("zy", 0.0);
+      m.a_zx_rad = mr.Number("zx", 0.0);
+      mr.Finish();
+    }
+    b.model = m;
+  }
+  const std::string fault = r.String("fault", std::string("none"));
+  if (fault == "dead") {
+    b.fault = BoardFault::kDead;
+  } else if (fault == "loose") {
+    b.fault = BoardFault::kLoose;
+  } else if (fault != "none") {
+    r.Fail(*r.Get("fault"), "fault", "expected \"none\", \"dead\" or \"loose\", got '" + fault + "'");
+  }
+  b.dead_from_s = r.Number("dead_from_s", b.dead_from_s, NumberRange::kNonNegative);
+  b.loose_deg = r.Number("loose_deg", b.loose_deg, NumberRange::kPositive);
+  if (b.fault != BoardFault::kDead && r.Has("dead_from_s")) {
+    r.FailKey("dead_from_s", "only a board with fault = \"dead\" has dead_from_s");
+  }
+  if (b.fault != BoardFault::kLoose && r.Has("loose_deg")) {
+    r.FailKey("loose_deg", "only a board with fault = \"loose\" has loose_deg");
+  }
+  return b;
+}
+
+BenchFixture ReadFixture(TomlTableReader& r, const std::string& source) {
+  BenchFixture f;
+  f.name = r.String("name", std::string());
+  f.bias_spread_counts =
+      r.Number("bias_spread_counts", f.bias_spread_counts, NumberRange::kNonNegative);
+  f.scale_spread = r.Number("scale_spread", f.scale_spread, NumberRange::kNonNegative);
+  f.misalignment_spread_rad =
+      r.Number("misalignment_spread_rad", f.misalignment_spread_rad, NumberRange::kNonNegative);
+  const toml::array* boards = r.ArrayOfTables("board");
+  if (boards == nullptr || boards->empty()) {
+    throw InputError(source, 0, 0, "fixture: no [[fixture.board]]");
+  }
+  for (std::size_t i = 0; i < boards->size(); ++i) {
+    TomlTableReader br(*boards->get(i)->as_table(), fmt::format("fixture.board {}", i + 1), source);
+    f.boards.push_back(ReadBoard(br, source));
+    br.Finish();
+  }
+  return f;
+}
+
 // Reads a required or optional top-level table through its own reader and checks its keys.
 template <typename Fn>
 void WithTable(TomlTableReader& root, std::string_view key, bool required,
@@ -267,6 +330,8 @@ Scenario ParseScenario(std::string_view toml_text, const std::string& source_nam
   WithTable(root, "effects", false, source_name, [&](TomlTableReader& r) {
     s.effects = ReadEffects(r, source_name, s.bench.temperature_c);
   });
+  WithTable(root, "fixture", false, source_name,
+            [&](TomlTableReader& r) { s.fixture = ReadFixture(r, source_name); });
   WithTable(root, "lab", false, source_name, [&](TomlTableReader& r) { s.lab = ReadLab(r); });
   WithTable(root, "technician", false, source_name,
             [&](TomlTableReader& r) { s.technician = ReadTechnician(r, source_name); });

@@ -1,12 +1,16 @@
 #include "accelcal/lab/lab_schema.h"
 
+#include <string>
+
+#include <fmt/core.h>
+
 namespace accelcal {
 namespace {
 
 // Version 1: the register. Functions that must see what the calling role may not (the sequence)
 // are SECURITY DEFINER with a fixed search_path (PostgreSQL's manual, "Writing SECURITY DEFINER
 // Functions Safely"); the rules' triggers stamp session_user, the role that logged in.
-constexpr std::string_view kVersion1 = R"sql(
+constexpr std::string_view kVersion1Register = R"sql(
 DO $roles$
 BEGIN
   IF NOT EXISTS (SELECT FROM pg_roles WHERE rolname = 'accelcal_bench') THEN
@@ -231,33 +235,40 @@ CREATE FUNCTION accelcal.certificate_is_mine(number text) RETURNS boolean LANGUA
   SELECT EXISTS (SELECT 1 FROM accelcal.certificates c JOIN accelcal.sessions s USING (session_uuid)
                  WHERE c.certificate_number = number AND s.bench = current_user) $$;
 
-ALTER TABLE accelcal.sessions ENABLE ROW LEVEL SECURITY;
-CREATE POLICY lab_reads ON accelcal.sessions FOR SELECT USING (true);
-CREATE POLICY bench_inserts_own ON accelcal.sessions FOR INSERT TO accelcal_bench
-  WITH CHECK (bench = current_user);
-ALTER TABLE accelcal.session_sensors ENABLE ROW LEVEL SECURITY;
-CREATE POLICY lab_reads ON accelcal.session_sensors FOR SELECT USING (true);
-CREATE POLICY bench_inserts_own ON accelcal.session_sensors FOR INSERT TO accelcal_bench
-  WITH CHECK (accelcal.session_is_mine(session_uuid));
-ALTER TABLE accelcal.calibrations ENABLE ROW LEVEL SECURITY;
-CREATE POLICY lab_reads ON accelcal.calibrations FOR SELECT USING (true);
-CREATE POLICY bench_inserts_own ON accelcal.calibrations FOR INSERT TO accelcal_bench
-  WITH CHECK (accelcal.session_is_mine(session_uuid));
-ALTER TABLE accelcal.session_equipment ENABLE ROW LEVEL SECURITY;
-CREATE POLICY lab_reads ON accelcal.session_equipment FOR SELECT USING (true);
-CREATE POLICY bench_inserts_own ON accelcal.session_equipment FOR INSERT TO accelcal_bench
-  WITH CHECK (accelcal.session_is_mine(session_uuid));
-ALTER TABLE accelcal.certificates ENABLE ROW LEVEL SECURITY;
-CREATE POLICY lab_reads ON accelcal.certificates FOR SELECT USING (true);
-CREATE POLICY bench_inserts_own ON accelcal.certificates FOR INSERT TO accelcal_bench
-  WITH CHECK (accelcal.session_is_mine(session_uuid));
-CREATE POLICY manager_sets_status ON accelcal.certificates FOR UPDATE TO accelcal_manager
-  USING (true) WITH CHECK (true);
-ALTER TABLE accelcal.certificate_documents ENABLE ROW LEVEL SECURITY;
-CREATE POLICY lab_reads ON accelcal.certificate_documents FOR SELECT USING (true);
-CREATE POLICY bench_inserts_own ON accelcal.certificate_documents FOR INSERT TO accelcal_bench
-  WITH CHECK (accelcal.certificate_is_mine(certificate_number));
 )sql";
+
+// Version 1's row-level security, one row a table a bench inserts into: everyone of the lab
+// reads every row; a bench inserts only rows that pass `bench_check` (its own sessions and what
+// hangs from them).
+struct BenchInsertRule {
+  std::string_view table;
+  std::string_view bench_check;
+};
+constexpr BenchInsertRule kBenchInsertRules[] = {
+    {"sessions", "bench = current_user"},
+    {"session_sensors", "accelcal.session_is_mine(session_uuid)"},
+    {"calibrations", "accelcal.session_is_mine(session_uuid)"},
+    {"session_equipment", "accelcal.session_is_mine(session_uuid)"},
+    {"certificates", "accelcal.session_is_mine(session_uuid)"},
+    {"certificate_documents", "accelcal.certificate_is_mine(certificate_number)"},
+};
+
+// Version 1 whole: the register, then the rules above, then the one update a role may make of
+// those tables (a manager's of a certificate's status).
+std::string Version1() {
+  std::string sql(kVersion1Register);
+  for (const BenchInsertRule& r : kBenchInsertRules)
+    sql += fmt::format(
+        "ALTER TABLE accelcal.{0} ENABLE ROW LEVEL SECURITY;\n"
+        "CREATE POLICY lab_reads ON accelcal.{0} FOR SELECT USING (true);\n"
+        "CREATE POLICY bench_inserts_own ON accelcal.{0} FOR INSERT TO accelcal_bench\n"
+        "  WITH CHECK ({1});\n",
+        r.table, r.bench_check);
+  sql +=
+      "CREATE POLICY manager_sets_status ON accelcal.certificates FOR UPDATE TO accelcal_manager\n"
+      "  USING (true) WITH CHECK (true);\n";
+  return sql;
+}
 
 // Version 2: when a device or an item of equipment is due for recalibration. A device's
 // interval is its type's, else the lab's default; it is due that long after its latest valid
@@ -321,9 +332,10 @@ GRANT SELECT ON accelcal.device_history TO accelcal_bench, accelcal_manager;
 }  // namespace
 
 const std::vector<LabMigration>& LabMigrations() {
+  static const std::string version1 = Version1();
   static const std::vector<LabMigration> migrations = {
       {1, "the register: devices, sessions, sensors, calibrations, certificates, equipment; roles", true,
-       kVersion1},
+       version1},
       {2, "recalibration due: device types and intervals, device_due and equipment_due", true, kVersion2},
       {3, "the device_history view", true, kVersion3},
   };

@@ -6,6 +6,8 @@
 #include <fmt/core.h>
 #include <fmt/format.h>
 
+#include "accelcal/calibration/diagnosis/effect.h"
+
 namespace accelcal {
 namespace {
 
@@ -64,26 +66,35 @@ std::string NotVerified(const std::vector<EquipmentItem>& equipment, EquipmentRo
                      IsPlaceholderId(item->identification) ? "not identified" : "no calibration stated");
 }
 
+// The item of the equipment table named `key` ("ruler", "turntable"); nullptr when none is.
+const EquipmentRoleInfo* EquipmentRoleNamed(std::string_view key) {
+  for (const EquipmentRoleInfo& r : EquipmentRoles())
+    if (r.key == key) return &r;
+  return nullptr;
+}
+
 // A scale found and corrected, against what the verified item allows (k = 2 on both the
-// item's u and the effect's own 1-sigma); empty when within it.
+// item's u and the effect's own 1-sigma); empty when within it. The item is the one the effect
+// names (Effect::VerifiedBy), its unit the equipment table's.
 std::string BeyondVerified(const CalibrationEffect& e, const std::vector<EquipmentItem>& equipment,
                            const GravitySpec& gravity) {
   if (e.parameters.empty()) return "";
+  const Effect* effect = FindEffect(e.name);
+  const std::optional<Effect::VerifyingEquipment> verified = effect ? effect->VerifiedBy() : std::nullopt;
+  const EquipmentRoleInfo* role = verified ? EquipmentRoleNamed(verified->item) : nullptr;
+  if (role == nullptr) return "";
   const EffectParameter& p = e.parameters.front();
-  const bool speed = e.name == "rpm_scale";
-  const EquipmentItem* item = FindEquipment(equipment, speed ? EquipmentRole::kTurntable : EquipmentRole::kRuler);
+  const EquipmentItem* item = FindEquipment(equipment, role->role);
   if (item == nullptr || !std::isfinite(item->standard_uncertainty)) return "";
   const double allowed = 2.0 * std::hypot(item->standard_uncertainty, std::isfinite(p.sigma) ? p.sigma : 0.0);
   if (std::fabs(p.value) <= allowed) return "";
-  const double scale = speed ? 100.0 : 1000.0;
-  const char* unit = speed ? "%" : "mm";
+  const double scale = 1.0 / role->to_si;
   return fmt::format(
       "the turntable's {0} is verified to u = {1:g} {2} ({3}, calibration {4}) but the data finds it "
       "{5:.2g} {2} off: either the {0} is not what its verification says (check it again: {6}) or the "
       "local gravity used, {7}, is wrong (a wrong gravity gives the same signature: check it)",
-      speed ? "speed" : "radius", item->standard_uncertainty * scale, unit, item->identification,
-      item->calibration, std::fabs(p.value) * scale,
-      speed ? "a calibrated tachometer" : "a calibrated ruler", gravity.Describe());
+      verified->quantity, item->standard_uncertainty * scale, role->file_unit, item->identification,
+      item->calibration, std::fabs(p.value) * scale, verified->checked_with, gravity.Describe());
 }
 
 void AddGravityOrTurntable(const ReportInputs& in, std::vector<std::string>* out) {

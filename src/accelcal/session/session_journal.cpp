@@ -12,8 +12,58 @@
 namespace accelcal {
 
 std::string DamagedCapture::Describe() const {
-  return fmt::format("the capture of step '{}' (\"{}\") is damaged in the session file ({}): left out",
-                     ShortDisplayText(step_id, 80), ShortDisplayText(label, 80), problem);
+  const std::string whose = sensor > 0 ? fmt::format(" of sensor {}", sensor + 1) : "";
+  return fmt::format("the capture of step '{}'{} (\"{}\") is damaged in the session file ({}): "
+                     "left out",
+                     ShortDisplayText(step_id, 80), whose, ShortDisplayText(label, 80), problem);
+}
+
+void SessionJournal::RecordSensors(const Fixture& /*sensors*/) {
+  throw Error("this session journal holds one sensor");
+}
+
+void SessionJournal::RecordSensorCaptures(const std::string& step_id,
+                                          const std::vector<SensorCapture>& captures) {
+  if (captures.size() == 1 && captures.front().sensor == 0) {
+    RecordCapture(step_id, captures.front().capture);
+    return;
+  }
+  throw Error("this session journal holds one sensor");
+}
+
+void SessionJournal::RecordSensorRedoCaptures(const std::string& step_id,
+                                              const std::vector<SensorCapture>& captures,
+                                              const std::string& superseded_step_id) {
+  if (captures.size() == 1 && captures.front().sensor == 0) {
+    RecordRedoCapture(step_id, captures.front().capture, superseded_step_id);
+    return;
+  }
+  throw Error("this session journal holds one sensor");
+}
+
+std::vector<JournalCapture> SessionJournal::SensorCaptures(int sensor) const {
+  if (sensor == 0) return Captures();
+  return {};
+}
+
+void SessionJournal::RecordSensorResult(int sensor, const std::string& calibration_json) {
+  if (sensor != 0) throw Error("this session journal holds one sensor");
+  RecordResult(calibration_json);
+}
+
+std::optional<std::string> SessionJournal::SensorResult(int sensor) const {
+  if (sensor == 0) return Result();
+  return std::nullopt;
+}
+
+Fixture SessionSensors(const SessionJournal& journal) {
+  if (std::optional<Fixture> sensors = journal.Sensors()) return *sensors;
+  std::string serial;
+  const SessionInputs inputs = journal.Inputs();
+  for (const auto& [step, values] : inputs) {
+    if (auto device = values.find(welcome_key::kDevice); device != values.end()) serial = device->second;
+  }
+  return SingleSensorFixture(serial);
 }
 
 void CheckRecordChunk(const std::string& step_id, const RecordChunk& chunk,

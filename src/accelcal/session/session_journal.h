@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "accelcal/base/capture.h"
+#include "accelcal/base/fixture.h"
 #include "accelcal/session/session_inputs.h"
 
 namespace accelcal {
@@ -33,8 +34,16 @@ struct JournalCapture {
   // redo: RecordRedoCapture); empty while it is current. A superseded capture stays in the
   // session but is out of the fit, the report and the exports (CurrentCaptures).
   std::string superseded_by;
+  // Which of the session's sensors took it (issue 31): 0, the first (a one-sensor session's).
+  int sensor = 0;
 
   bool superseded() const { return !superseded_by.empty(); }
+};
+
+// One sensor's capture of a pose that several sensors took at once.
+struct SensorCapture {
+  int sensor = 0;  // index into the session's sensors
+  Capture capture;
 };
 
 // The captures of `all` that are not superseded, in the same order.
@@ -47,6 +56,7 @@ struct DamagedCapture {
   std::string step_id;
   std::string label;    // as stored (it may be the damaged part)
   std::string problem;  // "its checksum does not match what it holds"
+  int sensor = 0;       // whose (the session's sensors)
 
   // "the capture of step 'face_3' (\"Z up\") is damaged in the session file (its checksum
   // does not match what it holds): left out"
@@ -108,6 +118,33 @@ class SessionJournal {
   // `superseded_step_id` has no capture or one already superseded (nothing is recorded then).
   virtual void RecordRedoCapture(const std::string& step_id, const Capture& capture,
                                  const std::string& superseded_step_id) = 0;
+  // --- Several sensors in one session (issue 31). A one-sensor session never calls these: its
+  // one sensor is sensor 0, and Captures() is its captures. ---
+  // The session's sensors (a fixture: serials, mountings, links), recorded before the first
+  // capture of any sensor but the first. Recording the same again is a no-op (a resume); other
+  // sensors throw accelcal::Error (a session's sensors never change under its captures).
+  virtual void RecordSensors(const Fixture& sensors);
+  // What RecordSensors recorded; nullopt: a one-sensor session (every older one).
+  virtual std::optional<Fixture> Sensors() const { return std::nullopt; }
+  // One pose's captures of several sensors for `step_id`, in one transaction: all are
+  // recorded, or none. Throws accelcal::Error as RecordCapture does (a sensor's second capture
+  // of the step), and for a sensor the session does not have.
+  virtual void RecordSensorCaptures(const std::string& step_id,
+                                    const std::vector<SensorCapture>& captures);
+  // A redo of a pose for several sensors: every sensor's capture of `superseded_step_id`
+  // marked superseded and `captures` recorded for `step_id`, in one transaction (as
+  // RecordRedoCapture, which is this for sensor 0 alone).
+  virtual void RecordSensorRedoCaptures(const std::string& step_id,
+                                        const std::vector<SensorCapture>& captures,
+                                        const std::string& superseded_step_id);
+  // Sensor `sensor`'s captures, in recording order (Captures() is sensor 0's).
+  virtual std::vector<JournalCapture> SensorCaptures(int sensor) const;
+  // Sensor `sensor`'s result (RecordResult and Result are sensor 0's). A later one replaces it.
+  virtual void RecordSensorResult(int sensor, const std::string& calibration_json);
+  virtual std::optional<std::string> SensorResult(int sensor) const;
+  // How many results sensor `sensor` has, its latest included (ResultCount is sensor 0's).
+  virtual int SensorResultCount(int sensor) const { return SensorResult(sensor) ? 1 : 0; }
+
   // A step finished without a capture (leveling done, skipped, ...), with its outcome.
   virtual void RecordStepDone(const std::string& step_id, const std::string& outcome) = 0;
   // The session's result (the calibration file's JSON). A later one becomes the result; the
@@ -124,14 +161,17 @@ class SessionJournal {
   // record's last one.
   virtual void AppendRecordChunk(const std::string& step_id, const RecordChunk& chunk) = 0;
 
-  // What was recorded (for resuming and for reports), in the order recorded. A capture that
-  // fails its check on read (session_store.h) is left out here and named by DamagedCaptures().
+  // What was recorded (for resuming and for reports), in the order recorded: sensor 0's
+  // captures (every capture of a one-sensor session; SensorCaptures for the others). A capture
+  // that fails its check on read (session_store.h) is left out here and named (whichever its
+  // sensor) by DamagedCaptures().
   virtual std::vector<JournalCapture> Captures() const = 0;
   virtual std::vector<DamagedCapture> DamagedCaptures() const { return {}; }
   virtual SessionInputs Inputs() const = 0;
   virtual std::map<std::string, std::string> DoneSteps() const = 0;  // step id -> outcome
   virtual std::optional<std::string> Result() const = 0;  // the latest RecordResult text
-  // How many results were recorded, the latest included (0: none).
+  // How many results were recorded, the latest included (0: none); sensor 0's in a session of
+  // several sensors (each fit round records one per sensor).
   virtual int ResultCount() const { return Result() ? 1 : 0; }
   // The record of `step_id` so far (an empty summary when it has none).
   virtual RecordSummary RecordSummaryOf(const std::string& step_id) const = 0;
@@ -167,6 +207,10 @@ void CheckRecordChunk(const std::string& step_id, const RecordChunk& chunk,
 std::string DescribeRecords(const SessionJournal& journal);
 // `so_far` with `chunk` appended.
 RecordSummary AddToSummary(RecordSummary so_far, const RecordChunk& chunk);
+
+// The session's sensors: Sensors(), or for a one-sensor session its one sensor, named by the
+// device input (kDeviceKey) when it has one.
+Fixture SessionSensors(const SessionJournal& journal);
 
 std::unique_ptr<SessionJournal> MakeMemoryJournal();
 

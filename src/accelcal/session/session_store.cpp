@@ -8,6 +8,7 @@
 #include "accelcal/session/detail/capture_rows.h"
 #include "accelcal/session/detail/record_rows.h"
 #include "accelcal/session/detail/row_checksum.h"
+#include "accelcal/session/detail/sensor_rows.h"
 #include "accelcal/session/detail/session_lock.h"
 #include "accelcal/session/detail/session_schema.h"
 #include "accelcal/session/detail/sqlite_db.h"
@@ -160,12 +161,17 @@ void SessionStore::RecordStepDone(const std::string& step_id, const std::string&
 }
 
 void SessionStore::RecordResult(const std::string& calibration_json) {
+  RecordSensorResult(0, calibration_json);
+}
+
+void SessionStore::RecordSensorResult(int sensor, const std::string& calibration_json) {
   RequireWritable();
+  if (sensor < 0) throw Error(fmt::format("session {}: no sensor {}", path_, sensor));
   const std::string now = UtcNowIso8601();
   SqliteTransaction transaction(*db_);
   // Earlier results stay as history; Result() is the latest.
-  SqliteStatement(*db_, "INSERT INTO results (calibration_json, recorded_utc) VALUES (?, ?)")
-      .Bind(1, calibration_json).Bind(2, now).Run();
+  SqliteStatement(*db_, "INSERT INTO results (calibration_json, recorded_utc, sensor) VALUES (?, ?, ?)")
+      .Bind(1, calibration_json).Bind(2, now).Bind(3, sensor).Run();
   TouchSession(*db_, now);
   transaction.Commit();
 }
@@ -199,12 +205,56 @@ void SessionStore::MarkDone() {
   transaction.Commit();
 }
 
-std::vector<JournalCapture> SessionStore::Captures() const {
-  return detail::ReadCaptureRows(*db_).intact;
+std::vector<JournalCapture> SessionStore::Captures() const { return SensorCaptures(0); }
+
+std::vector<JournalCapture> SessionStore::SensorCaptures(int sensor) const {
+  if (sensor < 0) return {};
+  return detail::ReadCaptureRows(*db_, sensor).intact;
 }
 
 std::vector<DamagedCapture> SessionStore::DamagedCaptures() const {
-  return detail::ReadCaptureRows(*db_).damaged;
+  return detail::ReadCaptureRows(*db_, -1).damaged;
+}
+
+void SessionStore::RecordSensors(const Fixture& sensors) {
+  RequireWritable();
+  const std::string now = UtcNowIso8601();
+  SqliteTransaction transaction(*db_);
+  detail::InsertSensorRows(*db_, sensors, now);
+  TouchSession(*db_, now);
+  transaction.Commit();
+}
+
+std::optional<Fixture> SessionStore::Sensors() const { return detail::ReadSensorRows(*db_); }
+
+void SessionStore::RecordSensorCaptures(const std::string& step_id,
+                                        const std::vector<SensorCapture>& captures) {
+  RecordSensorCapturesSuperseding(step_id, captures, "");
+}
+
+void SessionStore::RecordSensorRedoCaptures(const std::string& step_id,
+                                            const std::vector<SensorCapture>& captures,
+                                            const std::string& superseded_step_id) {
+  RecordSensorCapturesSuperseding(step_id, captures, superseded_step_id);
+}
+
+void SessionStore::RecordSensorCapturesSuperseding(const std::string& step_id,
+                                                   const std::vector<SensorCapture>& captures,
+                                                   const std::string& superseded_step_id) {
+  RequireWritable();
+  const std::size_t sensors = Sensors() ? Sensors()->sensors.size() : 1;
+  for (const SensorCapture& c : captures)
+    if (c.sensor < 0 || static_cast<std::size_t>(c.sensor) >= sensors)
+      throw Error(fmt::format("session {} has {} sensor(s): no sensor {}", path_, sensors,
+                              c.sensor + 1));
+  const std::string now = UtcNowIso8601();
+  SqliteTransaction transaction(*db_);
+  if (!superseded_step_id.empty()) detail::MarkCaptureRowSuperseded(*db_, superseded_step_id, step_id);
+  for (const SensorCapture& c : captures)
+    detail::InsertCaptureRow(*db_, step_id, c.capture, now, c.sensor);
+  TouchSession(*db_, now);
+  transaction.Commit();
+  db_->Exec("PRAGMA wal_checkpoint(PASSIVE)");  // as RecordCapture
 }
 
 SessionInputs SessionStore::Inputs() const {
@@ -221,14 +271,30 @@ std::map<std::string, std::string> SessionStore::DoneSteps() const {
   return out;
 }
 
-std::optional<std::string> SessionStore::Result() const {
-  SqliteStatement row(*db_, "SELECT calibration_json FROM results ORDER BY seq DESC LIMIT 1");
+std::optional<std::string> SessionStore::Result() const { return SensorResult(0); }
+
+std::optional<std::string> SessionStore::SensorResult(int sensor) const {
+  // A file older than version 7 read as it is: its results are its one sensor's.
+  const bool by_sensor = detail::HasColumn(*db_, "results", "sensor");
+  if (!by_sensor && sensor != 0) return std::nullopt;
+  SqliteStatement row(*db_, by_sensor ? "SELECT calibration_json FROM results WHERE sensor = ? "
+                                        "ORDER BY seq DESC LIMIT 1"
+                                      : "SELECT calibration_json FROM results ORDER BY seq DESC LIMIT 1");
+  if (by_sensor) row.Bind(1, sensor);
   if (!row.Step()) return std::nullopt;
   return row.ColumnText(0);
 }
 
-int SessionStore::ResultCount() const {
-  return static_cast<int>(db_->QueryInt("SELECT count(*) FROM results"));
+int SessionStore::ResultCount() const { return SensorResultCount(0); }
+
+int SessionStore::SensorResultCount(int sensor) const {
+  // A file older than version 7 read as it is: its results are its one sensor's.
+  if (!detail::HasColumn(*db_, "results", "sensor"))
+    return sensor == 0 ? static_cast<int>(db_->QueryInt("SELECT count(*) FROM results")) : 0;
+  SqliteStatement count(*db_, "SELECT count(*) FROM results WHERE sensor = ?");
+  count.Bind(1, sensor);
+  count.Step();
+  return static_cast<int>(count.ColumnInt(0));
 }
 
 SessionInfo SessionStore::Info() const {
@@ -252,7 +318,7 @@ SessionInfo SessionStore::Info() const {
   }
   if (detail::HasTable(*db_, "lab_certificates"))
     info.num_lab_certificates = static_cast<long>(db_->QueryInt("SELECT count(*) FROM lab_certificates"));
-  info.num_captures = static_cast<long>(db_->QueryInt("SELECT count(*) FROM captures"));
+  info.num_captures = static_cast<long>(db_->QueryInt("SELECT count(DISTINCT step_id) FROM captures"));
   info.num_inputs = static_cast<long>(db_->QueryInt("SELECT count(*) FROM inputs"));
   info.num_done_steps = static_cast<long>(db_->QueryInt("SELECT count(*) FROM steps_done"));
   info.has_result = db_->QueryInt("SELECT count(*) FROM results") > 0;

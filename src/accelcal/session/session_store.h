@@ -101,6 +101,16 @@ class SessionStore final : public SessionJournal {
   void RecordStepDone(const std::string& step_id, const std::string& outcome) override;
   void RecordResult(const std::string& calibration_json) override;
   void AppendRecordChunk(const std::string& step_id, const RecordChunk& chunk) override;
+  void RecordSensors(const Fixture& sensors) override;
+  std::optional<Fixture> Sensors() const override;
+  void RecordSensorCaptures(const std::string& step_id,
+                            const std::vector<SensorCapture>& captures) override;
+  void RecordSensorRedoCaptures(const std::string& step_id, const std::vector<SensorCapture>& captures,
+                                const std::string& superseded_step_id) override;
+  std::vector<JournalCapture> SensorCaptures(int sensor) const override;
+  void RecordSensorResult(int sensor, const std::string& calibration_json) override;
+  std::optional<std::string> SensorResult(int sensor) const override;
+  int SensorResultCount(int sensor) const override;
 
   std::vector<JournalCapture> Captures() const override;
   std::vector<DamagedCapture> DamagedCaptures() const override;
@@ -129,6 +139,11 @@ class SessionStore final : public SessionJournal {
   SessionStore(std::string path, std::unique_ptr<detail::SessionLock> lock,
                std::unique_ptr<detail::SqliteDb> db, bool read_only);
   void RequireWritable() const;
+  // Records `captures` for `step_id` and, unless empty, supersedes every capture of
+  // `superseded_step_id`, in one transaction.
+  void RecordSensorCapturesSuperseding(const std::string& step_id,
+                                       const std::vector<SensorCapture>& captures,
+                                       const std::string& superseded_step_id);
 
   std::string path_;
   std::unique_ptr<detail::SessionLock> lock_;  // owned; null when read-only. Released after db_.

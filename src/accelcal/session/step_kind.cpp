@@ -154,4 +154,6 @@ bool IsRecordStep(StepKind kind) { return InfoOf(kind).acquires == StepAcquires:
 
 bool IsStaticPoseStep(StepKind kind) { return InfoOf(kind).acquires == StepAcquires::kStaticCapture; }
 
+bool IsTurntableRunStep(StepKind kind) { return InfoOf(kind).acquires == StepAcquires::kTurntableCapture; }
+
 }  // namespace accelcal

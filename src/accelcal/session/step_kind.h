@@ -111,5 +111,7 @@ bool KeepsData(StepKind kind);
 bool IsRecordStep(StepKind kind);
 // its capture is a pose of the prism (a tilted one is a known pose to the orientation check).
 bool IsStaticPoseStep(StepKind kind);
+// its capture is a turntable run (a list names it with the radius and speed it was taken at).
+bool IsTurntableRunStep(StepKind kind);
 
 }  // namespace accelcal

@@ -7,6 +7,7 @@
 
 #include <cstdlib>
 #include <fstream>
+#include <memory>
 #include <string>
 #include <thread>
 
@@ -125,6 +126,27 @@ TEST_F(CalibrationInputTest, BareNameIsASessionInTheDefaultFolder) {
   EXPECT_EQ(at.kind, CalibrationInputKind::kSession);
   EXPECT_EQ(at.path, path_);
   EXPECT_EQ(why.rfind("no session nosuch (looked in " + folder.string(), 0), 0u) << why;
+}
+
+// `refit`'s input: a session, opened for writing; a calibration file is refused by name (it has
+// no captures to fit again), a file that is neither and a missing session as for every command.
+TEST_F(CalibrationInputTest, SessionToChangeIsASessionOnly) {
+  MakeSession(true);
+  {
+    const std::unique_ptr<SessionStore> store = OpenSessionToChange(path_);
+    EXPECT_EQ(store->Info().device, "SN-0042");
+    EXPECT_NO_THROW(store->RecordInput(kSessionStep, kDeviceKey, "SN-0043"));  // open for writing
+  }
+  const fs::path file = dir_ / "cal.json";
+  WriteText(file, CalibrationToJsonText(testing::ExportTestCalibration()));
+  const std::string why = ErrorOf([&] { OpenSessionToChange(file.string()); });
+  EXPECT_EQ(why.rfind(file.string() + " is a calibration file, not a session", 0), 0u) << why;
+  const fs::path junk = dir_ / "junk.db";
+  WriteText(junk, "not a database\n");
+  EXPECT_NE(ErrorOf([&] { OpenSessionToChange(junk.string()); }).find("is not an accelcal session"),
+            std::string::npos);
+  const std::string missing = (dir_ / "missing.db").string();
+  EXPECT_EQ(ErrorOf([&] { OpenSessionToChange(missing); }), "no session " + missing);
 }
 
 // A pipe is never sniffed (the bytes read would be gone): it is a calibration file's text.

@@ -54,6 +54,12 @@ TEST(SessionClock, AResumedRunGoesOnAfterTheLastCaptureByTheGap) {
   EXPECT_NEAR(next.front().t_s, 1017.21 + 42.0 + 0.1, 1e-9);
   EXPECT_TRUE(testing::Contains(clock.note(), "42.0 s after the last sample")) << clock.note();
   EXPECT_TRUE(testing::Contains(model.inputs().at(SessionClock::kClockStep).at("resume 1"), "gap of 42.000 s"));
+  // What the record says the run's first sample became: the source's t plus the offset.
+  const std::optional<double> at_s =
+      SessionClock::ResumedAtS(model.inputs().at(SessionClock::kClockStep).at("resume 1"));
+  ASSERT_TRUE(at_s.has_value());
+  EXPECT_NEAR(*at_s - 13.56, clock.offset_s(), 1e-6);
+  EXPECT_FALSE(SessionClock::ResumedAtS("gap of 42 s").has_value());
 }
 
 TEST(SessionClock, ASourceWhoseClockRunsOnIsLeftAlone) {

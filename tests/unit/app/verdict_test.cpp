@@ -259,5 +259,23 @@ TEST(Verdict, ASpeedScaleNeedsAVerifiedTurntableWhateverTheGravity) {
                        "a local gravity other than the one used (9.80620"));
 }
 
+// The radius's error is set against the ruler's verified u (the item the effect names:
+// Effect::VerifiedBy), in the ruler's unit.
+TEST(Verdict, ARadiusOffsetIsSetAgainstTheVerifiedRuler) {
+  ReportInputs in = BenchInputs(GoodLab(), GravitySpec::FromLocation(45.0, 0.0));
+  CalibrationEffect radius;
+  radius.name = "radius_offset";
+  radius.parameters.push_back({"dr", "m", 0.002, 0.0001});
+  in.calibration.effects = {radius};
+  in.limits = SeedLimits();
+  const ReportModel m = BuildReportModel(in);
+  EXPECT_EQ(m.verdict, Verdict::kIncomplete);
+  ASSERT_FALSE(m.incomplete.empty());
+  EXPECT_TRUE(Contains(m.incomplete.back(), "the turntable's radius is verified to u = 0.03 mm (RUL-7, calibration "
+                                            "C-2291) but the data finds it 2 mm off"))
+      << m.incomplete.back();
+  EXPECT_TRUE(Contains(m.incomplete.back(), "check it again: a calibrated ruler")) << m.incomplete.back();
+}
+
 }  // namespace
 }  // namespace accelcal

@@ -175,7 +175,7 @@ TEST_F(SessionRecordTest, AVersionOneSessionIsReadAsItIsAndMigratedByAWriter) {
     EXPECT_EQ(writer->Inputs().at("welcome").at("device"), "SN7");
     writer->AppendRecordChunk("drift", MakeChunk(0));
   }
-  EXPECT_EQ(UserVersion(path_), 6);  // the current version (4 checksums, 5 redo, 6 lab identity)
+  EXPECT_EQ(UserVersion(path_), 7);  // the current version (4 checksums, 5 redo, 6 lab identity, 7 sensors)
   EXPECT_EQ(SessionStore::Open(path_, Reader())->RecordSummaryOf("drift").num_chunks, 1);
 }
 

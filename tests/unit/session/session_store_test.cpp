@@ -95,7 +95,8 @@ TEST_F(SessionStoreTest, AVersionTwoSessionGetsTheCoMomentColumnsRenamedByAWrite
   sqlite3_finalize(st);
   ASSERT_EQ(sqlite3_prepare_v2(db, "PRAGMA user_version", -1, &st, nullptr), SQLITE_OK);
   ASSERT_EQ(sqlite3_step(st), SQLITE_ROW);
-  EXPECT_EQ(sqlite3_column_int64(st, 0), 6);  // the current version (4 checksums, 5 redo, 6 lab identity)
+  // The current version (4 added checksums, 5 redo, 6 lab identity, 7 several sensors).
+  EXPECT_EQ(sqlite3_column_int64(st, 0), 7);
   sqlite3_finalize(st);
   sqlite3_close(db);
   ExpectSameCapture(SessionStore::Open(path_, Reader())->Captures().at(0).capture, capture);
@@ -131,7 +132,7 @@ TEST_F(SessionStoreTest, AVersionFourSessionIsMigratedAndTakesARedo) {
     auto store = SessionStore::Open(path_, Writer());  // migrates
     store->RecordRedoCapture("pose_pz#2", redo, "pose_pz");
   }
-  EXPECT_EQ(UserVersion(path_), 6);
+  EXPECT_EQ(UserVersion(path_), 7);
   auto store = SessionStore::Open(path_, Reader());
   EXPECT_TRUE(store->DamagedCaptures().empty());
   const std::vector<JournalCapture> all = store->Captures();
@@ -257,7 +258,7 @@ TEST_F(SessionStoreTest, RefusesANewerSchemaAndForeignFiles) {
     SessionStore::Open(path_, Reader());
     FAIL() << "no error";
   } catch (const Error& e) {
-    EXPECT_TRUE(Contains(e.what(), "schema version 99, newer than this accelcal reads (6)")) << e.what();
+    EXPECT_TRUE(Contains(e.what(), "schema version 99, newer than this accelcal reads (7)")) << e.what();
   }
   const std::string text_file = (dir_ / "notes.db").string();
   { std::ofstream(text_file) << "this is not a database, just text long enough to be read\n"; }

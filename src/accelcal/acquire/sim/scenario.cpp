@@ -137,6 +137,10 @@ std::string Scenario::Validate() const {
     return "effects.settling_tau_s must be positive";
   if (!bench.table_tilt_deg.allFinite() || (bench.table_tilt_deg.array().abs() > 30.0).any())
     return "bench.table_tilt_deg must be within +-30 deg";
+  if (fixture) {
+    if (fixture->boards.empty()) return "fixture: no [[fixture.board]]";
+    if (std::string why = fixture->Validate(); !why.empty()) return why;
+  }
   return ValidateTechnician(technician);
 }
 

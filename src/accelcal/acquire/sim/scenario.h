@@ -21,6 +21,7 @@
 #include "accelcal/base/capture.h"
 #include "accelcal/base/capture_set.h"
 #include "accelcal/base/sensor_model.h"
+#include "accelcal/acquire/sim/bench_fixture.h"
 #include "accelcal/acquire/sim/bias_noise.h"
 
 namespace accelcal::sim {
@@ -209,6 +210,8 @@ struct Scenario {
   Technician technician;
   LabSpec lab;
   std::vector<CapturePlan> captures;
+  // [fixture]: several boards on one plate (bench_fixture.h); absent: the one [sensor].
+  std::optional<BenchFixture> fixture;
 
   // Length of capture `index` of the plan, s.
   double CaptureDurationS(int index) const;

@@ -42,6 +42,13 @@ Scenario ValidScenario(Scenario scenario) {
   if (std::string why = scenario.Validate(); !why.empty()) {
     throw Error(scenario.source_name + ": " + why);
   }
+  // One sensor's bench: a plate of boards is not simulated by it (issue 31: the fixture bench
+  // comes next), and is refused rather than simulated as one sensor.
+  if (scenario.fixture) {
+    throw Error(scenario.source_name + ": its [fixture] of " +
+                std::to_string(scenario.fixture->boards.size()) +
+                " boards is not simulated yet: the virtual bench holds one sensor");
+  }
   return scenario;
 }
 

@@ -126,6 +126,7 @@ void SimSource::StopTurntable() {
   if (mounting_.kind != CaptureKind::kTurntable) return;
   // The table stops with the sensor on it, seated as it was mounted: not a request to the
   // technician. The stop shakes it like a hand letting go.
+  ++placements_;  // a fixture's loose board settles anew at a stop too
   mounting_ = bench_.StopTurntable(mounting_, now_s());
   turn_from_ = Eigen::Quaterniond(mounting_.platform_rotation);
   ScheduleSettle(true);
@@ -141,6 +142,7 @@ void SimSource::LevelTurntable() { bench_.LevelTurntable(1.0 - technician_.spec(
 
 void SimSource::Place(const sim::CapturePlan& plan, bool settle) {
   const double t_s = now_s();
+  ++placements_;
   const bool was_static = mounting_.kind == CaptureKind::kStatic;
   const Eigen::Quaterniond before(PlatformToWorld(t_s));
   mounting_ = bench_.BeginCapture(plan, t_s);
@@ -223,12 +225,15 @@ Sample SimSource::Generate(long k) {
     // little).
     Eigen::Matrix3d f_mps2 = bench_.SpecificForcePerAxis(mounting_, t_s);
     f_mps2.colwise() += JitterWorld(t_s) + ShakeWorld(t_s);
+    if (force_tap_) force_tap_(t_s, f_mps2);
     return bench_.MeasurePerAxis(f_mps2, t_s);
   }
   Eigen::Vector3d f_world = bench_.scenario().bench.gravity_mps2 * Eigen::Vector3d::UnitZ() +
                             JitterWorld(t_s) + ShakeWorld(t_s);
   for (const sim::ActivePulse& pulse : mounting_.pulses) f_world += pulse.AccelerationWorld(t_s);
-  return bench_.Measure(PlatformToWorld(t_s).transpose() * f_world, t_s);
+  const Eigen::Vector3d f_platform = PlatformToWorld(t_s).transpose() * f_world;
+  if (force_tap_) force_tap_(t_s, f_platform.replicate<1, 3>());
+  return bench_.Measure(f_platform, t_s);
 }
 
 }  // namespace accelcal

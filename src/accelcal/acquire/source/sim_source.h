@@ -11,6 +11,7 @@
 // Initially the sensor rests level, +z up, still.
 #pragma once
 
+#include <functional>
 #include <random>
 #include <string>
 #include <vector>
@@ -54,6 +55,15 @@ class SimSource final : public SampleSource, public BenchControl {
   const sim::VirtualBench& bench_state() const { return bench_; }
   // Bumps that have been scheduled so far (tests check the detector sees them).
   long bumps_scheduled() const { return bumps_scheduled_; }
+  // Placements so far (the technician's, and the table stopping): a fixture's loose board
+  // settles anew at each.
+  long placements() const { return placements_; }
+
+  // Called for each sample generated, before it is measured, with the specific force the
+  // platform (a fixture's plate) feels at its reference point, in its frame, per sensing axis
+  // (columns), m/s^2: the fixture bench measures it through each board (fixture_sim_source.h).
+  using ForceTap = std::function<void(double t_s, const Eigen::Matrix3d& f_per_axis_mps2)>;
+  void set_force_tap(ForceTap tap) { force_tap_ = std::move(tap); }
 
  private:
   struct JitterTone {
@@ -89,6 +99,8 @@ class SimSource final : public SampleSource, public BenchControl {
   double wall_origin_s_;           // wall time at which sample 0 (t = 0) was due, s
   double last_burst_wall_s_ = -1e300;  // wall time of the last paced delivery, s
   long bumps_scheduled_ = 0;
+  long placements_ = 0;
+  ForceTap force_tap_;
 };
 
 }  // namespace accelcal

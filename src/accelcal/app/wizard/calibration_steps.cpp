@@ -77,6 +77,27 @@ std::string NoiseOutcome(const analysis::NoiseReport& n) {
 
 }  // namespace
 
+CalibrationRequest WizardCalibrationRequest(const Procedure& procedure, const GravitySpec& gravity,
+                                            const std::vector<EquipmentItem>& equipment,
+                                            const std::optional<NoiseFloor>& lowered,
+                                            std::string source_name) {
+  CalibrationRequest request;
+  request.source_name = std::move(source_name);
+  request.gravity = gravity;
+  request.references = ToReferenceUncertainties(equipment, gravity.sigma_mps2);
+  request.screening.adc_range = procedure.adc_range;
+  if (lowered) {
+    // The captures judged with the floor before it was lowered are judged again: the ones the
+    // wizard left out (and captured again) are left out of the fit with the reason.
+    OfflineStabilityOptions stability;
+    stability.stability.std_multiplier = procedure.std_multiplier;
+    stability.stability.trend_multiplier = procedure.trend_multiplier;
+    stability.noise_floor_counts = lowered->std_counts;
+    request.stability = stability;
+  }
+  return request;
+}
+
 CalibrationSteps::CalibrationSteps(const Procedure& procedure, SessionModel& model,
                                    GravitySpec gravity, std::string session_name,
                                    WizardOutputs* outputs)
@@ -102,23 +123,11 @@ void CalibrationSteps::set_noise_floor(const std::optional<NoiseFloor>& lowered)
 
 const CalibrationOutcome& CalibrationSteps::Run() {
   if (outcome_ && outcome_captures_ == model_.captures().size()) return *outcome_;
-  CalibrationRequest request;
+  CalibrationRequest request =
+      WizardCalibrationRequest(procedure_, gravity_, equipment_, lowered_floor_, session_name_);
   // A capture taken again (redo) is superseded: out of the fit.
   for (const JournalCapture& c : model_.captures())
     if (!c.superseded()) request.captures.push_back(c.capture);
-  request.source_name = session_name_;
-  request.gravity = gravity_;
-  request.references = ToReferenceUncertainties(equipment_, gravity_.sigma_mps2);
-  request.screening.adc_range = procedure_.adc_range;
-  if (lowered_floor_) {
-    // The captures judged with the floor before it was lowered are judged again: the ones the
-    // wizard left out (and captured again) are left out of the fit with the reason.
-    OfflineStabilityOptions stability;
-    stability.stability.std_multiplier = procedure_.std_multiplier;
-    stability.stability.trend_multiplier = procedure_.trend_multiplier;
-    stability.noise_floor_counts = lowered_floor_->std_counts;
-    request.stability = stability;
-  }
   outcome_ = CalibrateCaptures(std::move(request));
   outcome_captures_ = model_.captures().size();
   return *outcome_;
@@ -181,6 +190,7 @@ ReportInputs CalibrationSteps::Inputs(const Calibration& cal, const ReportMeta& 
   in.calibration = cal;
   in.meta = meta;
   FillMetaFromInputs(model_.inputs(), &in.meta);  // what was typed wins over the defaults
+  in.bench_time = BenchTimeFromInputs(model_.inputs());
   for (const JournalCapture& c : model_.captures())  // their statistics: no copy of the samples
     if (!c.superseded()) in.captures.push_back(ReportStatsOf(c.capture));
   in.limits = procedure_.limits;

@@ -29,6 +29,15 @@ struct StepOutcome {
   std::string hint;
 };
 
+// The pipeline's request as the wizard's fit makes it, without the captures: the session's
+// `gravity`, its `equipment` (the budget's type B inputs), the procedure's ADC range, and the
+// static captures judged again against a `lowered` noise floor (nullopt: as judged live). The
+// fixture's end (app/fixture/fixture_finish.h) calibrates every sensor from the same request.
+CalibrationRequest WizardCalibrationRequest(const Procedure& procedure, const GravitySpec& gravity,
+                                            const std::vector<EquipmentItem>& equipment,
+                                            const std::optional<NoiseFloor>& lowered,
+                                            std::string source_name);
+
 class CalibrationSteps {
  public:
   // Borrows `procedure`, `model` and `outputs` (nullable: no file written); all must outlive

@@ -1,11 +1,13 @@
 #include "accelcal/app/wizard/refit_answer.h"
 
+#include <algorithm>
 #include <sstream>
 #include <vector>
 
 #include <fmt/core.h>
 
 #include "accelcal/app/wizard/gravity_input.h"
+#include "accelcal/session/equipment.h"
 
 namespace accelcal {
 namespace {
@@ -26,8 +28,10 @@ std::pair<std::string, std::string> FirstWord(const std::string& segment) {
   return {word, Trimmed(rest)};
 }
 
+// An item of the equipment table by its name ("ruler", "turntable", ...: session/equipment.h).
 bool IsEquipmentRole(const std::string& word) {
-  return word == "ruler" || word == "turntable" || word == "level" || word == "prism";
+  const std::vector<EquipmentRoleInfo>& roles = EquipmentRoles();
+  return std::any_of(roles.begin(), roles.end(), [&](const EquipmentRoleInfo& r) { return r.key == word; });
 }
 
 }  // namespace

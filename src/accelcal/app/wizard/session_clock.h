@@ -20,18 +20,26 @@
 #pragma once
 
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "accelcal/app/wizard/session_model.h"
 #include "accelcal/base/capture.h"
+#include "accelcal/session/session_inputs.h"
 
 namespace accelcal {
 
 class SessionClock {
  public:
-  static constexpr const char* kClockStep = "session_clock";
+  static constexpr const char* kClockStep = kSessionClockStepId;  // its keys: session_inputs.h
   static constexpr double kMinGapS = 1.0;
+
+  // The session time at which a resumed run's clock goes on, from its "resume N" input as
+  // recorded (t_first_source_s + offset_s(): the run's first sample); nullopt when it does not
+  // read. With the source's own t of that first sample it gives the run's offset to whoever
+  // sees the source's samples before the clock does (app/fixture: the other sensors').
+  static std::optional<double> ResumedAtS(const std::string& resume_value);
 
   // Reads what the session holds. `wall_now_s`: the computer's clock (s since the epoch).
   SessionClock(const SessionModel& model, std::function<double()> wall_now_s);

@@ -49,7 +49,7 @@ std::vector<std::string> AddLeftOutByTheFit(const Procedure& procedure, const Se
     if (c == nullptr) continue;
     for (const CalibrationCapture& used : cal.captures) {
       if (used.id != c->capture.id || used.used) continue;
-      const bool turntable = s.kind == StepKind::kTurntable;
+      const bool turntable = IsTurntableRunStep(s.kind);
       const std::string title =
           turntable ? fmt::format("{} at {:g} mm, {:g} rpm", s.title, c->capture.radius_m * 1000.0, c->capture.rpm)
                     : s.title;

@@ -39,14 +39,8 @@ std::optional<NoiseFloor> RecordedLoweredFloor(const SessionInputs& inputs) {
   return NoiseFloor{std_counts, "lowered in an earlier run"};
 }
 
-bool RecordedAdoptEffects(const Procedure& procedure, const SessionModel& model) {
-  bool adopt = true;
-  for (const ProcedureStep& step : procedure.steps)
-    if (step.kind == StepKind::kDiagnosis)
-      if (auto d = model.done_steps().find(step.id); d != model.done_steps().end())
-        adopt = d->second.rfind("adopted", 0) == 0;
-  return adopt;
-}
+// RecordedAdoptEffects is the diagnosis's (steps/diagnosis_step.cpp: it reads what its step
+// recorded).
 
 SessionSettings ReadSessionSettings(const Procedure& procedure, const SessionModel& model) {
   const WelcomeAnswers answers = ReadWelcomeAnswers(model.inputs());

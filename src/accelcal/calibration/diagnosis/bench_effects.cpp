@@ -96,6 +96,9 @@ class RadiusOffset final : public BenchError<RadiusOffset> {
   }
   std::string_view PlainName() const override { return "a wrong turntable radius"; }
   bool TakesGravityErrorForItsOwn() const override { return true; }
+  std::optional<VerifyingEquipment> VerifiedBy() const override {
+    return VerifyingEquipment{"ruler", "radius", "a calibrated ruler"};
+  }
   std::optional<BenchStatement> InBenchTerms(std::span<const double> dr, std::span<const double> sigma,
                                              std::string_view, double) const override {
     return DirectionStatement("the turntable radius seems ", dr, sigma, 1000.0, 1, "mm", "longer", "shorter",
@@ -133,6 +136,9 @@ class RpmScale final : public BenchError<RpmScale> {
   }
   std::string_view PlainName() const override { return "a wrong table speed"; }
   bool TakesGravityErrorForItsOwn() const override { return true; }
+  std::optional<VerifyingEquipment> VerifiedBy() const override {
+    return VerifyingEquipment{"turntable", "speed", "a calibrated tachometer"};
+  }
   std::optional<BenchStatement> InBenchTerms(std::span<const double> s, std::span<const double> sigma,
                                              std::string_view, double) const override {
     return DirectionStatement("the turntable seems to turn ", s, sigma, 100.0, 2, "%", "faster", "slower",
@@ -252,7 +258,12 @@ class TurntableTilt final : public BenchError<TurntableTilt> {
                                              std::string_view interpretation, double) const override {
     std::string lead = "the turntable's spin axis is not vertical";
     if (!interpretation.empty()) lead += ": " + std::string(interpretation);
-    return BenchStatement{std::move(lead), {}, "; level the turntable"};
+    // Member by member: GCC 12 at -O3 (the Release build) takes the braced form's empty size for
+    // an uninitialised string (a false -Wmaybe-uninitialized, an error under -Werror).
+    BenchStatement statement;
+    statement.lead = std::move(lead);
+    statement.tail = "; level the turntable";
+    return statement;
   }
 };
 

@@ -114,6 +114,18 @@ class Effect {
   // error of the gravity value looks the same, and while gravity is the standard value the
   // report says so and the verdict cannot be PASS.
   virtual bool TakesGravityErrorForItsOwn() const { return false; }
+  // For an effect that is an error of a bench quantity an item of the lab's equipment verifies
+  // (the radius, the table's speed): that item, by its name in the procedure's [equipment]
+  // ("ruler", "turntable": session/equipment.h's table), what of the turntable it verifies
+  // ("radius", "speed") and what checks it again ("a calibrated ruler"). Its first parameter is
+  // that quantity's error in SI (m, a fraction); the report sets it against the item's stated
+  // uncertainty. nullopt (the default): no item verifies it.
+  struct VerifyingEquipment {
+    std::string_view item;
+    std::string_view quantity;
+    std::string_view checked_with;
+  };
+  virtual std::optional<VerifyingEquipment> VerifiedBy() const { return std::nullopt; }
 
   // --- How each export carries it (io/export/) ----------------------------------------------
   // Every export writes its parameters (CSV) and says what it cannot hold; a session's effect

@@ -19,12 +19,20 @@
 namespace accelcal::detail {
 
 // The columns each table's checksum covers, in this order (every column but the checksum).
-inline constexpr const char* kCaptureChecksumColumns =
+// Versions 4 to 6 (a file read as it is; the version-7 migration checks them).
+inline constexpr const char* kCaptureChecksumColumnsV4 =
     "step_id, capture_id, kind, label, radius_m, rpm, up_axis, rejection_reason, n, "
     "mean_x_counts, mean_y_counts, mean_z_counts, comoment_xx_counts2, comoment_xy_counts2, "
     "comoment_xz_counts2, comoment_yy_counts2, comoment_yz_counts2, comoment_zz_counts2, "
     "t_first_s, t_last_s, mean_temp_c, samples, recorded_utc";
-inline constexpr int kCaptureChecksumColumnCount = 23;
+inline constexpr int kCaptureChecksumColumnCountV4 = 23;
+// Version 7: the same and the sensor.
+inline constexpr const char* kCaptureChecksumColumns =
+    "step_id, capture_id, kind, label, radius_m, rpm, up_axis, rejection_reason, n, "
+    "mean_x_counts, mean_y_counts, mean_z_counts, comoment_xx_counts2, comoment_xy_counts2, "
+    "comoment_xz_counts2, comoment_yy_counts2, comoment_yz_counts2, comoment_zz_counts2, "
+    "t_first_s, t_last_s, mean_temp_c, samples, recorded_utc, sensor";
+inline constexpr int kCaptureChecksumColumnCount = 24;
 inline constexpr const char* kChunkChecksumColumns =
     "step_id, chunk_index, n, t_first_s, t_last_s, wall_end_s, samples, recorded_utc";
 inline constexpr int kChunkChecksumColumnCount = 8;

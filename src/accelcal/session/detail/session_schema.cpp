@@ -3,6 +3,7 @@
 #include <filesystem>
 #include <fstream>
 #include <utility>
+#include <vector>
 
 #include <fmt/core.h>
 
@@ -24,7 +25,7 @@ CREATE TABLE session (
 CREATE TABLE devices (serial TEXT PRIMARY KEY, first_seen_utc TEXT NOT NULL);
 CREATE TABLE captures (
   seq INTEGER PRIMARY KEY AUTOINCREMENT,
-  step_id TEXT NOT NULL UNIQUE,
+  step_id TEXT NOT NULL,
   capture_id INTEGER NOT NULL, kind TEXT NOT NULL CHECK (kind IN ('static', 'turntable')),
   label TEXT NOT NULL, radius_m REAL, rpm REAL, up_axis TEXT, rejection_reason TEXT NOT NULL,
   n INTEGER NOT NULL,
@@ -32,12 +33,17 @@ CREATE TABLE captures (
   comoment_xx_counts2 REAL, comoment_xy_counts2 REAL, comoment_xz_counts2 REAL,
   comoment_yy_counts2 REAL, comoment_yz_counts2 REAL, comoment_zz_counts2 REAL,
   t_first_s REAL, t_last_s REAL, mean_temp_c REAL,
-  samples BLOB NOT NULL, recorded_utc TEXT NOT NULL, checksum INTEGER, superseded_by TEXT);
+  samples BLOB NOT NULL, recorded_utc TEXT NOT NULL, checksum INTEGER, superseded_by TEXT,
+  sensor INTEGER NOT NULL DEFAULT 0 CHECK (sensor >= 0), UNIQUE (step_id, sensor));
+CREATE TABLE sensors (
+  sensor INTEGER PRIMARY KEY CHECK (sensor >= 0), serial TEXT NOT NULL UNIQUE,
+  sensor_to_plate TEXT NOT NULL, offset_m TEXT NOT NULL, source TEXT NOT NULL,
+  fixture_name TEXT NOT NULL, recorded_utc TEXT NOT NULL);
 CREATE TABLE inputs (step_id TEXT NOT NULL, key TEXT NOT NULL, value TEXT NOT NULL,
   recorded_utc TEXT NOT NULL, PRIMARY KEY (step_id, key));
 CREATE TABLE steps_done (step_id TEXT PRIMARY KEY, outcome TEXT NOT NULL, recorded_utc TEXT NOT NULL);
 CREATE TABLE results (seq INTEGER PRIMARY KEY AUTOINCREMENT, calibration_json TEXT NOT NULL,
-  recorded_utc TEXT NOT NULL);
+  recorded_utc TEXT NOT NULL, sensor INTEGER NOT NULL DEFAULT 0 CHECK (sensor >= 0));
 )sql";
 
 // (The checksum columns came in version 4: MigrateToChecksums adds them to older files.)
@@ -77,8 +83,12 @@ ALTER TABLE captures RENAME COLUMN cov_zz_counts2 TO comoment_zz_counts2;
 // the rows an older accelcal wrote. (Tables created by this build's migration from version 1
 // already have the column.)
 void MigrateToChecksums(SqliteDb& db) {
+  // A captures table made by this build already has the sensor (version 7), whose checksum
+  // covers it.
+  const char* capture_columns =
+      HasColumn(db, "captures", "sensor") ? kCaptureChecksumColumns : kCaptureChecksumColumnsV4;
   for (const auto& [table, columns] :
-       {std::pair{"captures", kCaptureChecksumColumns}, std::pair{"record_chunks", kChunkChecksumColumns}}) {
+       {std::pair{"captures", capture_columns}, std::pair{"record_chunks", kChunkChecksumColumns}}) {
     if (!HasColumn(db, table, "checksum"))
       db.Exec(fmt::format("ALTER TABLE {} ADD COLUMN checksum INTEGER", table));
     StoreAllRowChecksums(db, table, columns);
@@ -98,6 +108,55 @@ void MigrateToLabIdentity(SqliteDb& db) {
   if (!HasColumn(db, "session", "uuid")) db.Exec("ALTER TABLE session ADD COLUMN uuid TEXT");
   SqliteStatement(db, "UPDATE session SET uuid = ? WHERE uuid IS NULL").Bind(1, NewRandomUuid()).Run();
   if (!HasTable(db, "lab_certificates")) db.Exec(kLabCertificatesTable);
+}
+
+// Version 7 (issue 31): a session holds several sensors. Each capture names its sensor (0: the
+// first; every capture of an older file is its one sensor's), the step's uniqueness becomes
+// (step_id, sensor), and the table `sensors` lists them (empty: one sensor, the session's
+// device). SQLite cannot change a UNIQUE constraint in place: the table is rebuilt, in the
+// migration's transaction. The checksum now covers the sensor too: it is computed anew for the
+// rows whose version-4 checksum holds, and a row that was already damaged keeps no checksum
+// (read as damaged, as before), so the migration never blesses damage.
+constexpr const char* kCapturesV7 = R"sql(
+CREATE TABLE captures_v7 (
+  seq INTEGER PRIMARY KEY AUTOINCREMENT,
+  step_id TEXT NOT NULL,
+  capture_id INTEGER NOT NULL, kind TEXT NOT NULL CHECK (kind IN ('static', 'turntable')),
+  label TEXT NOT NULL, radius_m REAL, rpm REAL, up_axis TEXT, rejection_reason TEXT NOT NULL,
+  n INTEGER NOT NULL,
+  mean_x_counts REAL, mean_y_counts REAL, mean_z_counts REAL,
+  comoment_xx_counts2 REAL, comoment_xy_counts2 REAL, comoment_xz_counts2 REAL,
+  comoment_yy_counts2 REAL, comoment_yz_counts2 REAL, comoment_zz_counts2 REAL,
+  t_first_s REAL, t_last_s REAL, mean_temp_c REAL,
+  samples BLOB NOT NULL, recorded_utc TEXT NOT NULL, checksum INTEGER, superseded_by TEXT,
+  sensor INTEGER NOT NULL DEFAULT 0 CHECK (sensor >= 0), UNIQUE (step_id, sensor));
+CREATE TABLE sensors (
+  sensor INTEGER PRIMARY KEY CHECK (sensor >= 0), serial TEXT NOT NULL UNIQUE,
+  sensor_to_plate TEXT NOT NULL, offset_m TEXT NOT NULL, source TEXT NOT NULL,
+  fixture_name TEXT NOT NULL, recorded_utc TEXT NOT NULL);
+)sql";
+
+void MigrateToSensors(SqliteDb& db) {
+  if (!HasColumn(db, "results", "sensor"))
+    db.Exec("ALTER TABLE results ADD COLUMN sensor INTEGER NOT NULL DEFAULT 0 CHECK (sensor >= 0)");
+  if (HasColumn(db, "captures", "sensor")) return;
+  std::vector<std::int64_t> damaged;
+  {
+    SqliteStatement rows(db, fmt::format("SELECT seq, {}, checksum FROM captures",
+                                         kCaptureChecksumColumnsV4));
+    while (rows.Step())
+      if (!ChecksumProblem(rows, 1, kCaptureChecksumColumnCountV4,
+                           1 + kCaptureChecksumColumnCountV4).empty())
+        damaged.push_back(rows.ColumnInt(0));
+  }
+  db.Exec(kCapturesV7);
+  db.Exec(fmt::format("INSERT INTO captures_v7 (seq, {0}, checksum, superseded_by, sensor) "
+                      "SELECT seq, {0}, checksum, superseded_by, 0 FROM captures",
+                      kCaptureChecksumColumnsV4));
+  db.Exec("DROP TABLE captures; ALTER TABLE captures_v7 RENAME TO captures");
+  StoreAllRowChecksums(db, "captures", kCaptureChecksumColumns);
+  for (const std::int64_t seq : damaged)
+    SqliteStatement(db, "UPDATE captures SET checksum = NULL WHERE seq = ?").Bind(1, seq).Run();
 }
 
 }  // namespace
@@ -181,6 +240,7 @@ void MigrateSessionSchema(SqliteDb& db) {
   if (version < 4) MigrateToChecksums(db);
   if (version < 5) MigrateToSuperseded(db);
   if (version < 6) MigrateToLabIdentity(db);
+  if (version < 7) MigrateToSensors(db);
   db.Exec(fmt::format("PRAGMA user_version = {}", kSessionSchemaVersion));
   transaction.Commit();
 }

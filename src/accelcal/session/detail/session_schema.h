@@ -13,9 +13,15 @@
 //              superseded_by (version 5: the step id of the capture that replaced this one when
 //              it was taken again; NULL: current. A mark set after the row was written, so it
 //              is outside the checksum)
+//              sensor (version 7: which of the session's sensors, 0 the first; UNIQUE
+//              (step_id, sensor) replaces step_id UNIQUE; covered by the checksum)
+//   sensors    (version 7) sensor PRIMARY KEY, serial UNIQUE, sensor_to_plate (9 numbers, row
+//              by row), offset_m (3 numbers), source, fixture_name, recorded_utc: the session's
+//              sensors (issue 31); no row: one sensor, the session's device
 //   inputs     (step_id, key) PRIMARY KEY, value, recorded_utc
 //   steps_done step_id PRIMARY KEY, outcome, recorded_utc
-//   results    seq, calibration_json (the calibration file's JSON text), recorded_utc
+//   results    seq, calibration_json (the calibration file's JSON text), recorded_utc, sensor
+//              (version 7: whose calibration; 0 the first)
 //   record_chunks  (step_id, chunk_index) PRIMARY KEY, n, t_first_s, t_last_s, wall_end_s,
 //              samples (BLOB, see sample_blob.h), recorded_utc, checksum (version 4): a record
 //              step's samples, one row per chunk (version 2)
@@ -30,10 +36,13 @@
 // cov_*, for values that were always the co-moment); versions 1 to 3 get the checksum columns,
 // filled for the rows they hold (row_checksum.h); versions 1 to 4 get captures.superseded_by
 // (NULL: no capture of theirs was ever taken again); versions 1 to 5 get session.uuid (a new
-// random one) and the lab_certificates table. A read-only open of an older file reads it
+// random one) and the lab_certificates table; versions 1 to 6 get captures.sensor and
+// results.sensor (0: every capture and result is the one sensor's) and the sensors table, the
+// captures table rebuilt for its UNIQUE (step_id, sensor) and its checksums computed anew
+// (session_schema.cpp says how damage is kept). A read-only open of an older file reads it
 // as it is (a version-1 file has no records; rows
 // of a file older than version 4 have no checksum to verify; one older than version 6 has no
-// uuid and was never published).
+// uuid and was never published; one older than version 7 holds one sensor, sensor 0).
 //
 // NaN (no radius, no temperature) is stored as NULL. Times are UTC ISO 8601 text.
 #pragma once
@@ -44,7 +53,7 @@
 
 namespace accelcal::detail {
 
-inline constexpr int kSessionSchemaVersion = 6;
+inline constexpr int kSessionSchemaVersion = 7;
 inline constexpr int kSessionApplicationId = 0x41434331;  // "ACC1"
 
 // Creates the tables and the session row in a new, empty database (one transaction).

@@ -67,6 +67,16 @@ class DiagnosisStep final : public ResultStep {
 
 }  // namespace
 
+// session_settings.h: the outcome Answer records, read back (a resume, `accelcal refit`).
+bool RecordedAdoptEffects(const Procedure& procedure, const SessionModel& model) {
+  bool adopt = true;
+  for (const ProcedureStep& step : procedure.steps)
+    if (step.kind == StepKind::kDiagnosis)
+      if (auto d = model.done_steps().find(step.id); d != model.done_steps().end())
+        adopt = d->second.rfind("adopted", 0) == 0;
+  return adopt;
+}
+
 StepControllerKind DiagnosisStepKind() {
   return {StepKind::kDiagnosis, &MakeStepController<DiagnosisStep>, &ResultEstimateS, nullptr, nullptr};
 }

@@ -83,12 +83,14 @@ class RepeatStep final : public AcquiringStep {
   // The pose was captured before: taking it again is the point.
   bool ChecksDuplicates() const override { return false; }
 
-  // Before the capture starts: as long as the session's captures say the sensor needs to settle.
+  // The plan's length, ended by its stop rule (bench_plan.h: a capture like any pose); before
+  // the capture starts, as long as the session's captures say the sensor needs to settle.
   CaptureRequest MakeRequest() const override {
-    CaptureRequest r = AcquiringStep::MakeRequest();
+    CaptureRequest r = Planned(AcquiringStep::MakeRequest());
     AddSettlingWait(session_, r);
     return r;
   }
+  double CaptureS() const override { return session_.bench_plan.CaptureS(step_); }
 
   void OnCaptureAccepted(Capture capture) override {
     KeepCapture(capture);

@@ -168,6 +168,8 @@ void WelcomeStep::SetView(WizardView& v) const {
   const Question question = QuestionAt(question_);
   v.screen = WizardScreen::kWelcome;
   v.prompt = fmt::format("Welcome to {}.", session_.procedure.title);
+  session_.bench_plan.Refresh(session_);  // the bench time the plan takes (bench_plan.h)
+  if (const std::string plan = session_.bench_plan.WelcomeText(); !plan.empty()) v.prompt += " " + plan;
   if (!input_note_.empty()) v.prompt += " " + input_note_;
   v.input = InputRequest{question.key, question.label, DefaultAnswer(question), input_error_};
   v.keys = {{"Enter", "accept"}, {"b", "back"}, {"q", "save and quit"}};

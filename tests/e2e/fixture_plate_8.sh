@@ -1,0 +1,110 @@
+#!/usr/bin/env bash
+# Issue 31's done-when, on the virtual bench: a fixture of 8 boards (tests/data/fixture/
+# plate_8_faults.toml: board 2 loose, board 5 dead from the start, board 7 turned a quarter
+# turn) calibrated in one wizard session, each pose taken once for all. Killed mid-session and
+# resumed: every sensor keeps its captures. At the end: 7 calibrations, each within 4 sigma of
+# its own board's truth, the dead board named with why, a report with its own certificate per
+# board, and the batch summary (beside the session and from `report --format batch-csv`).
+# Usage: bash fixture_plate_8.sh ACCELCAL SOURCE_DIR DATA_DIR
+set -euo pipefail
+accelcal=$1
+source_dir=$2
+data_dir=$3
+. "$source_dir/tests/e2e/lib/common.bash"
+. "$source_dir/tests/e2e/lib/clumsy.bash"
+command -v jq > /dev/null || { echo "jq missing: skipped"; exit 77; }
+short_procedure
+db="$work/plate.db"
+run() {  # the wizard on the plate, answers all Enter
+  { yes '' || true; } | "$accelcal" wizard --source sim --speed 0 \
+    --scenario "$data_dir/fixture/plate_8_faults.toml" --procedure "$work/short.toml" \
+    --session "$db" --plain
+}
+
+# A first run given the answers up to the sixth pose only (the fifth, +y up, taken), so that it
+# waits there whatever the machine's speed, then killed; resumed to the end. The resume puts
+# the source's restarted clock on the session's (app/wizard/session_clock.h): every board's
+# samples must follow the lead's onto it, turntable runs included (their accepted samples have
+# the table's swing taken out, so they cannot be matched with the source's by their readings).
+mkfifo "$work/answers"
+"$accelcal" wizard --source sim --speed 0 --scenario "$data_dir/fixture/plate_8_faults.toml" \
+  --procedure "$work/short.toml" --session "$db" --plain < "$work/answers" > "$work/out.1" 2>&1 &
+pid=$!
+exec 3> "$work/answers"
+printf '\n%.0s' $(seq 14) >&3
+for _ in $(seq 6000); do
+  grep -q '^\[8/' "$work/out.1" 2>/dev/null && break  # step 8: five poses taken
+  kill -0 "$pid" 2>/dev/null || break
+  sleep 0.01
+done
+kill -0 "$pid" 2>/dev/null || { cat "$work/out.1" >&2; fail "the first run ended before it was killed"; }
+kill -9 "$pid"
+wait "$pid" 2>/dev/null || true
+exec 3>&-
+captures_of() {  # SENSOR [KIND] -> how many captures the session holds of it (of that kind)
+  "$accelcal" export "$db" --sensor "$1" -o "$work/export_$1.csv" > /dev/null
+  grep -v '^#' "$work/export_$1.csv" | tail -n +2 | awk -F, -v k="${2:-}" 'k == "" || $2 == k' |
+    cut -d, -f1 | uniq | wc -l
+}
+before=$(captures_of 1)
+[ "$before" -eq 5 ] || fail "the first run, killed at the sixth pose, holds $before captures of sensor 1, not 5"
+
+run > "$work/out" 2> "$work/err" || { tail -30 "$work/out" >&2; cat "$work/err" >&2; fail "the resumed wizard failed"; }
+said "Resuming session"
+
+# Every sensor but the dead one: its captures kept across the kill, its calibration near its truth.
+truth() {  # SERIAL -> the board's truth as a calibration-shaped JSON (jq reads it)
+  awk -v s="\"$1\"" '
+    $1 == "serial" && $3 == s { on = 1; next }
+    on && /^\[\[fixture.board\]\]/ { exit }
+    on && /^bias_counts/ { sub(/^[^=]*= */, ""); b = $0 }
+    on && /^scale_counts_per_mps2/ { sub(/^[^=]*= */, ""); k = $0 }
+    on && /^misalignment_rad/ { sub(/^[^=]*= */, ""); m = $0 }
+    END { gsub(/=/, ":", m); gsub(/yz/, "\"yz\"", m); gsub(/zy/, "\"zy\"", m); gsub(/zx/, "\"zx\"", m);
+          printf "{\"bias_counts\": %s, \"scale_counts_per_mps2\": %s, \"misalignment_rad\": %s}\n", b, k, m }
+  ' "$data_dir/fixture/plate_8_faults.toml"
+}
+for n in 1 2 3 4 6 7 8; do
+  serial=$(printf 'B%02d' "$n")
+  truth "$serial" > "$work/truth_$n.json"
+  "$accelcal" report "$db" --sensor "$n" --format calibration -o "$work/cal_$n.json" > /dev/null ||
+    fail "no calibration of sensor $n ($serial)"
+  jq -e --slurpfile t "$work/truth_$n.json" '
+    def z(v; s; w): ((v - w) / s) | fabs;
+    [range(3) as $i | z(.bias_counts[$i]; .uncertainty.bias_counts[$i]; $t[0].bias_counts[$i]),
+                      z(.scale_counts_per_mps2[$i]; .uncertainty.scale_counts_per_mps2[$i];
+                        $t[0].scale_counts_per_mps2[$i])]
+    + [z(.misalignment_rad.yz; .uncertainty.misalignment_rad.yz; $t[0].misalignment_rad.yz),
+       z(.misalignment_rad.zy; .uncertainty.misalignment_rad.zy; $t[0].misalignment_rad.zy),
+       z(.misalignment_rad.zx; .uncertainty.misalignment_rad.zx; $t[0].misalignment_rad.zx)]
+    | max < 4' "$work/cal_$n.json" > /dev/null || {
+    jq -c '{bias_counts, scale_counts_per_mps2, misalignment_rad, uncertainty}' "$work/cal_$n.json" >&2
+    cat "$work/truth_$n.json" >&2
+    fail "sensor $n ($serial): more than 4 sigma from its truth"
+  }
+  [ -s "$work/plate.$serial.report.txt" ] || fail "no report of $serial"
+  grep -q "$serial" "$work/plate.$serial.report.txt" || fail "$serial's report does not name it"
+  sed -n 's/.*Certificate No.: *\(ACC-[^ ]*\).*/\1/p' "$work/plate.$serial.report.txt" >> "$work/numbers"
+done
+[ "$(sort -u "$work/numbers" | wc -l)" -eq 7 ] || { cat "$work/numbers" >&2; fail "7 certificates, each its own number"; }
+
+# The dead board: no calibration, named with why; the others have their verdicts.
+"$accelcal" report "$db" --format batch-csv -o "$work/batch.csv" > /dev/null
+cmp -s "$work/batch.csv" "$work/plate.batch.csv" || fail "the batch summary beside the session differs from report's"
+head -1 "$work/batch.csv" | grep -qx 'sensor,serial,verdict,bias_x,bias_y,bias_z,scale_x,scale_y,scale_z,a_yz,a_zy,a_zx,reason' ||
+  fail "batch header"
+[ "$(tail -n +2 "$work/batch.csv" | wc -l)" -eq 8 ] || fail "8 rows"
+grep -q '^5,"B05",NO CALIBRATION,,,,,,,,,,"no capture' "$work/batch.csv" || { cat "$work/batch.csv" >&2; fail "the dead board, named"; }
+[ "$(grep -cE '^[0-9],"B0[0-9]",(PASS|FAIL|INCOMPLETE|NO LIMITS STATED),' "$work/batch.csv")" -eq 7 ] ||
+  { cat "$work/batch.csv" >&2; fail "7 verdicts"; }
+# Every board that is not dead took every pose after the resume too (the nine turntable runs
+# all come after it), and each board without a fault passes, as the lead does.
+for n in 1 2 3 4 6 7 8; do
+  runs=$(captures_of "$n" turntable)
+  [ "$runs" -eq 9 ] || { grep 'left out' "$work/out" >&2; fail "sensor $n: $runs turntable runs of 9 after the resume"; }
+done
+for n in 1 3 4 6 7 8; do
+  grep -q "^$n,\"B0$n\",PASS," "$work/batch.csv" || { cat "$work/batch.csv" >&2; fail "board $n (no fault) passes"; }
+done
+said "B05"
+echo "fixture_plate_8: ok"
