@@ -105,12 +105,6 @@ std::string DescribePoseRepeat(const PoseRepeat& r) {
                      r.noise_counts, r.beyond_noise ? " explains" : "");
 }
 
-std::string PoseRepeatLimitWords(const PoseRepeat& r) {
-  return fmt::format("limited by a pose that read differently when taken again: {} {} (a drift, a "
-                     "sensor still warming, the prism or its mount moved); the uncertainty covers the "
-                     "scatter between the captures", r.label, DescribePoseRepeat(r));
-}
-
 std::string PoseRepeatLimitWords(const std::vector<PoseRepeat>& repeats, const std::string& label) {
   return fmt::format("limited by a pose that read differently when taken again: {} (a drift, a "
                      "sensor still warming, the prism or its mount moved); the uncertainty covers the "

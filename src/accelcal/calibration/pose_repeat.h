@@ -61,7 +61,6 @@ std::vector<std::string> RepeatedPoseLabels(const std::vector<PoseRepeat>& repea
 // The verdict's sentence when a pose taken again moved more than noise explains and the fit does
 // not explain it either: "limited by a pose that read differently when taken again: ..." (the
 // pose's whole path when it was taken again more than once).
-std::string PoseRepeatLimitWords(const PoseRepeat& repeat);
 std::string PoseRepeatLimitWords(const std::vector<PoseRepeat>& repeats, const std::string& label);
 
 }  // namespace accelcal
