@@ -47,10 +47,6 @@ struct Trial {
   CandidateScore score;
   FitSummary fit;
   const Effect* effect = nullptr;
-  // A pair (the pair search, RunPairs): the second effect, added with `effect` in one round;
-  // nullptr for a single candidate.
-  const Effect* partner = nullptr;
-  FitSummary effect_alone;  // a pair's: the fit with its first effect alone (a stage of the report)
   double loo_family_p = 1.0;  // of the worst left-out prediction (scaled by the fit's noise)
 };
 
@@ -67,32 +63,19 @@ void ScoreLeftOut(const ExtendedResidualModel& model, const std::vector<FitCaptu
   t->loo_family_p = WorstOfNormalsPValue(std::fabs(t->score.loo_worst_z), static_cast<int>(captures.size()));
 }
 
-// The effects a trial adds: its effect, and its partner for a pair.
-std::vector<const Effect*> Added(const Trial& t) {
-  std::vector<const Effect*> added = {t.effect};
-  if (t.partner != nullptr) added.push_back(t.partner);
-  return added;
-}
-
-// `added` (one effect, or a pair) fitted on top of `adopted` and scored against `current`.
-Trial TryEffects(const std::vector<const Effect*>& added, const std::vector<const Effect*>& adopted,
-                 const FitSummary& current, const std::vector<FitCapture>& captures,
-                 const FitOptions& fit_options, const EffectContext& ctx, const DiagnosisOptions& options) {
+Trial TryCandidate(const Effect* effect, const std::vector<const Effect*>& adopted,
+                   const FitSummary& current, const std::vector<FitCapture>& captures,
+                   const FitOptions& fit_options, const EffectContext& ctx,
+                   const DiagnosisOptions& options) {
   Trial t;
-  t.effect = added.front();
-  t.partner = added.size() > 1 ? added[1] : nullptr;
-  int m = 0;
-  for (const Effect* e : added) {
-    t.score.effect += (t.score.effect.empty() ? "" : " + ") + std::string(e->Name());
-    m += e->NumParameters();
+  t.effect = effect;
+  t.score.effect = std::string(effect->Name());
+  if (std::string why = effect->WhyNotIdentifiable(captures); !why.empty()) {
+    t.score.skipped_reason = why;
+    return t;
   }
-  for (const Effect* e : added)
-    if (std::string why = e->WhyNotIdentifiable(captures); !why.empty()) {
-      t.score.skipped_reason = why;
-      return t;
-    }
   std::vector<const Effect*> effects = adopted;
-  effects.insert(effects.end(), added.begin(), added.end());
+  effects.push_back(effect);
   const ExtendedResidualModel model(effects, ctx);
   const LeastSquaresOptions solver = SolverOptions(fit_options);
   t.fit = SolveWeightedLeastSquares(model, captures, StartFrom(current.parameters, model), solver);
@@ -109,18 +92,12 @@ Trial TryEffects(const std::vector<const Effect*>& added, const std::vector<cons
   t.score.after = StatsOf(t.fit);
   t.score.bic = t.fit.chi2 + k * std::log(n);
   t.score.aicc = t.fit.chi2 + 2.0 * k + (n - k - 1.0 > 0.0 ? 2.0 * k * (k + 1.0) / (n - k - 1.0) : INFINITY);
+  const int m = effect->NumParameters();
   const double noise_scale = std::max(1.0, t.fit.chi2 / t.fit.dof);
   const double delta = std::max(0.0, current.chi2 - t.fit.chi2) / noise_scale;
   t.score.lr_p_value = ChiSquareSurvival(delta, m);
   if (options.leave_one_out) ScoreLeftOut(model, captures, solver, &t);
   return t;
-}
-
-Trial TryCandidate(const Effect* effect, const std::vector<const Effect*>& adopted,
-                   const FitSummary& current, const std::vector<FitCapture>& captures,
-                   const FitOptions& fit_options, const EffectContext& ctx,
-                   const DiagnosisOptions& options) {
-  return TryEffects({effect}, adopted, current, captures, fit_options, ctx, options);
 }
 
 // The ranking: BIC on the chi2 divided by one residual scale shared by the round's candidates,
@@ -219,14 +196,11 @@ std::string WhyNotAdopted(const Trial& t, const std::vector<const Effect*>& adop
                        "times what noise explains (p = {:.2g} over {} captures)", s.loo_worst_id,
                        std::fabs(s.loo_worst_z), t.loo_family_p, captures.size());
   std::vector<const Effect*> effects = adopted;
-  const std::vector<const Effect*> added = Added(t);
-  effects.insert(effects.end(), added.begin(), added.end());
+  effects.push_back(t.effect);
   const ExtendedResidualModel model(effects, ctx);
-  for (size_t i = 0; i < added.size(); ++i) {
-    const std::vector<double> theta = EffectParameters(t.fit, model, static_cast<int>(adopted.size() + i));
-    if (std::string why = added[i]->WhyImplausible(theta.data(), t.fit.Model(), captures); !why.empty())
-      return "implausible: " + why;
-  }
+  const std::vector<double> theta = EffectParameters(t.fit, model, static_cast<int>(adopted.size()));
+  if (std::string why = t.effect->WhyImplausible(theta.data(), t.fit.Model(), captures); !why.empty())
+    return "implausible: " + why;
   return {};
 }
 
@@ -270,87 +244,6 @@ std::string RivalVerdict(const Trial& chosen, const std::vector<const Effect*>& 
   return fmt::format("{} ({}) explains the captures about as well (BIC {:+.1f}, 6 needed): these "
                      "captures cannot name {}", *rival, RivalStory(*rival), blocking_bic - chosen_bic,
                      chosen.score.effect);
-}
-
-// The pair search: the best this many singles by BIC are tried two at a time.
-constexpr size_t kPairPool = 4;
-
-// Empty when each effect of the pair `t` is significant given the other: the pair against the
-// other alone (its single trial `alone_a` / `alone_b` of this round), at the adoption p.
-std::string WhyNotBoth(const Trial& t, const Trial& alone_a, const Trial& alone_b, const DiagnosisOptions& options) {
-  const double noise_scale = std::max(1.0, t.fit.chi2 / t.fit.dof);
-  for (const auto& [member, other] : {std::pair{t.effect, &alone_b}, std::pair{t.partner, &alone_a}}) {
-    const double delta = std::max(0.0, other->fit.chi2 - t.fit.chi2) / noise_scale;
-    const double p = ChiSquareSurvival(delta, member->NumParameters());
-    if (p >= options.adoption_p)
-      return fmt::format("{} adds nothing significant to {} (p = {:.3g}, needed < {:g})", member->Name(),
-                         other->score.effect, p, options.adoption_p);
-  }
-  return {};
-}
-
-// When no single effect passes, two together may: a bench with two causes, each alone explaining
-// too little of the residuals to be significant (its fit pulled by the other), as a turntable
-// radius read short beside a response that bends. The best kPairPool singles by BIC (not
-// implausible) are tried two at a time; a pair is adopted when it passes every test a single must
-// (significance Bonferroni-corrected over the singles and the pairs tried, the left-out
-// prediction, both plausible), each of the two is significant given the other (WhyNotBoth), and
-// no rival outside the library explains the captures as well in place of either. Returns the
-// index in `trials` of the pair adopted (the best by ScaledBic), or -1; every pair tried is
-// added to `trials` and the round's candidates.
-int RunPairs(const std::vector<int>& ranked, int tried, const std::vector<const Effect*>& adopted,
-             const FitSummary& current, const std::vector<FitCapture>& captures, const FitOptions& fit_options,
-             const EffectContext& ctx, const DiagnosisOptions& options, double scale, DiagnosisRound* round,
-             std::vector<Trial>* trials, std::vector<std::string>* ambiguous, std::string* tie) {
-  std::vector<int> pool;
-  for (int i : ranked) {
-    if (pool.size() == kPairPool) break;
-    if ((*trials)[static_cast<size_t>(i)].score.rejected_reason.rfind("implausible", 0) != 0) pool.push_back(i);
-  }
-  if (pool.size() < 2) return -1;
-  const int tested = tried + static_cast<int>(pool.size() * (pool.size() - 1) / 2);
-  const int n = static_cast<int>(captures.size());
-  int chosen = -1;
-  for (size_t a = 0; a < pool.size(); ++a)
-    for (size_t b = a + 1; b < pool.size(); ++b) {
-      const Trial alone_a = (*trials)[static_cast<size_t>(pool[a])];
-      const Trial alone_b = (*trials)[static_cast<size_t>(pool[b])];
-      Trial t = TryEffects({alone_a.effect, alone_b.effect}, adopted, current, captures, fit_options, ctx, options);
-      t.effect_alone = alone_a.fit;
-      if (t.score.skipped_reason.empty()) {
-        t.score.rejected_reason = WhyNotAdopted(t, adopted, current, captures, ctx, tested, options);
-        if (t.score.rejected_reason.empty()) t.score.rejected_reason = WhyNotBoth(t, alone_a, alone_b, options);
-      }
-      trials->push_back(std::move(t));
-      const int index = static_cast<int>(trials->size()) - 1;
-      const Trial& added = trials->back();
-      if (added.score.skipped_reason.empty() && added.score.rejected_reason.empty() &&
-          (chosen < 0 || ScaledBic(added, n, scale) < ScaledBic((*trials)[static_cast<size_t>(chosen)], n, scale)))
-        chosen = index;
-    }
-  const size_t first_pair = round->candidates.size();
-  for (size_t i = first_pair; i < trials->size(); ++i) round->candidates.push_back((*trials)[i].score);
-  if (chosen < 0) return -1;
-  // Each member against the rivals of its correction stage, the other member kept.
-  const Trial pair = (*trials)[static_cast<size_t>(chosen)];
-  for (const auto& [member, other] : {std::pair{pair.effect, pair.partner}, std::pair{pair.partner, pair.effect}}) {
-    Trial as_single = pair;
-    as_single.effect = member;
-    as_single.partner = nullptr;
-    as_single.score.effect = std::string(member->Name());
-    std::vector<const Effect*> with_other = adopted;
-    with_other.push_back(other);
-    std::string rival;
-    const std::string why = RivalVerdict(as_single, with_other, current, captures, fit_options, ctx, options,
-                                         scale, round, &rival);
-    if (why.empty()) continue;
-    (*trials)[static_cast<size_t>(chosen)].score.rejected_reason = why;
-    round->candidates[static_cast<size_t>(chosen)].rejected_reason = why;
-    *ambiguous = {std::string(member->Name()), rival};
-    *tie = why;
-    return -1;
-  }
-  return chosen;
 }
 
 // Runs one round: scores every candidate and returns the index of the one to adopt (the best
@@ -423,10 +316,6 @@ int RunRound(const std::vector<const Effect*>& adopted, const FitSummary& curren
       chosen = -1;
     }
   }
-  const bool single_failed = chosen < 0 && tie.empty();
-  if (single_failed && tried >= 2 && static_cast<int>(adopted.size()) + 2 <= options.max_effects)
-    chosen = RunPairs(ranked, tried, adopted, current, captures, fit_options, ctx, options, scale, round, trials,
-                      ambiguous, &tie);
   if (tried == 0) {
     round->outcome = "no candidate effect can be identified from these captures";
   } else if (!tie.empty()) {
@@ -435,11 +324,6 @@ int RunRound(const std::vector<const Effect*>& adopted, const FitSummary& curren
     const CandidateScore& best = (*trials)[static_cast<size_t>(ranked.front())].score;
     round->outcome = fmt::format("no candidate passes: the best ranked, {}, is {}", best.effect,
                                  best.rejected_reason);
-  } else if ((*trials)[static_cast<size_t>(chosen)].partner != nullptr) {
-    const CandidateScore& s = (*trials)[static_cast<size_t>(chosen)].score;
-    round->adopted = s.effect;
-    round->outcome = fmt::format("adopted {} together (neither alone passes): chi2/dof {:.2f} -> {:.2f}, "
-                                 "p = {:.3g}", s.effect, current.Chi2PerDof(), s.after.Chi2PerDof(), s.lr_p_value);
   } else {
     const CandidateScore& s = (*trials)[static_cast<size_t>(chosen)].score;
     round->adopted = (*trials)[static_cast<size_t>(chosen)].score.effect;
@@ -663,19 +547,12 @@ DiagnosisReport Diagnose(const std::vector<FitCapture>& captures, const FitOptio
                               &trials, &report.ambiguous);
     report.rounds.push_back(round);
     if (best < 0) break;
-    const Trial& won = trials[static_cast<size_t>(best)];
-    const std::vector<const Effect*> added = Added(won);  // one effect, or a pair
-    const int first = static_cast<int>(adopted.size());
-    adopted.insert(adopted.end(), added.begin(), added.end());
+    adopted.push_back(trials[static_cast<size_t>(best)].effect);
     const ExtendedResidualModel model(adopted, ctx);
-    for (size_t k = 0; k < added.size(); ++k) {
-      Trial member = won;
-      member.effect = added[k];
-      report.adopted.push_back(Adopt(member, model, first + static_cast<int>(k), report.final_fit, captures));
-    }
+    report.adopted.push_back(Adopt(trials[static_cast<size_t>(best)], model,
+                                   static_cast<int>(adopted.size()) - 1, report.final_fit, captures));
     report.adopted.back().evidence += RunnersUp(report.rounds.back().candidates, best);
-    if (won.partner != nullptr) report.stages.push_back(won.effect_alone);  // a stage per effect
-    report.final_fit = won.fit;
+    report.final_fit = trials[static_cast<size_t>(best)].fit;
     report.stages.push_back(report.final_fit);
   }
   TakeParametersFromFinalFit(adopted, &report);

@@ -2,7 +2,8 @@
 // (session/procedure_plan.h), on the shipped full_calibration.toml: which steps are captures
 // (the step-kind table's), their forces, handling and mountings; the plan by the [target]
 // against the fixed one; a target the references alone exceed left out and named; no target:
-// the fixed lengths.
+// the fixed lengths. It reads the full procedure, whose repeat poses are a kind the wizard
+// defines, so it sits in the app group (its main registers the kinds, ARCHITECTURE.md).
 #include "accelcal/session/procedure_plan.h"
 
 #include <algorithm>
@@ -29,7 +30,9 @@ const Eigen::Vector3d kDefaultNoise{1.5, 1.5, 1.7};
 TEST(ProcedurePlan, CapturesAreTheStaticAndTurntableSteps) {
   const Procedure p = Full();
   const std::vector<PlannedCapture> c = PlannedCapturesOf(p, kG);
-  ASSERT_EQ(c.size(), 18u);
+  // 9 prism poses, 9 turntable runs, the first pose taken again 3 times (twice on the stopped
+  // turntable, once at the end).
+  ASSERT_EQ(c.size(), 21u);
   EXPECT_EQ(c[0].id, "pose_pz");
   EXPECT_EQ(c[0].kind, CaptureKind::kStatic);
   EXPECT_TRUE(c[0].specific_force_mps2.isApprox(Eigen::Vector3d(0, 0, kG)));
@@ -43,7 +46,15 @@ TEST(ProcedurePlan, CapturesAreTheStaticAndTurntableSteps) {
   EXPECT_NEAR(c[9].specific_force_mps2(0), -w * w * 0.05, 1e-9);
   EXPECT_NEAR(c[9].specific_force_mps2(2), kG, 1e-9);
   EXPECT_EQ(c[9].mounting, c[11].mounting);
-  EXPECT_NE(c[9].mounting, c[12].mounting);
+  EXPECT_NE(c[9].mounting, c[13].mounting);
+  // The repeats: the first pose's force, static captures that mount nothing.
+  for (const size_t i : {12u, 16u, 20u}) {
+    EXPECT_EQ(c[i].kind, CaptureKind::kStatic) << c[i].id;
+    EXPECT_TRUE(c[i].specific_force_mps2.isApprox(c[0].specific_force_mps2)) << c[i].id;
+    EXPECT_EQ(c[i].mounting, "") << c[i].id;
+  }
+  EXPECT_EQ(c[12].id, "repeat_pz_after_x");
+  EXPECT_EQ(c[20].id, "repeat_pz");
   EXPECT_DOUBLE_EQ(c[9].mounting_s, 60.0);
   EXPECT_NEAR(c[9].min_capture_s, kMinTurntableRevolutions * 0.5, 1e-12);  // whole revolutions at 120 rpm
   for (const PlannedCapture& x : c) EXPECT_FALSE(x.optional) << x.id;  // every step is required
@@ -52,10 +63,11 @@ TEST(ProcedurePlan, CapturesAreTheStaticAndTurntableSteps) {
 TEST(ProcedurePlan, FixedLengthsAreTheStepsOwnAndItsHandlingModel) {
   const Procedure p = Full();
   const SessionPlan s = PlanSession(p, kDefaultNoise, 100.0, kG, GoodLab(p), 0.0);
-  // 18 captures of 10 s; 18 x 20 s handling and 3 mountings of 60 s; the capture engine's settling.
-  EXPECT_DOUBLE_EQ(s.fixed.capture_s, 180.0);
-  EXPECT_DOUBLE_EQ(s.fixed.handling_s, 18 * 20.0 + 3 * 60.0);
-  EXPECT_DOUBLE_EQ(s.fixed.settle_s, 9 * kPlannedStaticSettleS + 9 * kPlannedTurntableSettleS);
+  // 21 captures of 10 s (the repeats take their pose's length); 21 x 20 s handling and 3
+  // mountings of 60 s; the capture engine's settling (12 static captures, 9 turntable runs).
+  EXPECT_DOUBLE_EQ(s.fixed.capture_s, 210.0);
+  EXPECT_DOUBLE_EQ(s.fixed.handling_s, 21 * 20.0 + 3 * 60.0);
+  EXPECT_DOUBLE_EQ(s.fixed.settle_s, 12 * kPlannedStaticSettleS + 9 * kPlannedTurntableSettleS);
   for (const PlannedLength& l : s.fixed.captures) EXPECT_EQ(l.samples, 1000) << l.id;
 }
 
@@ -81,7 +93,7 @@ TEST(ProcedurePlan, ThePlanReachesTheTargetInLessBenchTime) {
   // --fixed-duration: the fixed plan, not the target's.
   const SessionPlan fixed = PlanSession(p, kDefaultNoise, 100.0, kG, GoodLab(p), 4.0);
   EXPECT_FALSE(fixed.planned);
-  EXPECT_DOUBLE_EQ(fixed.plan.capture_s, 18 * 4.0);
+  EXPECT_DOUBLE_EQ(fixed.plan.capture_s, 21 * 4.0);
   ASSERT_NE(s.For("pose_pz"), nullptr);
   EXPECT_EQ(fixed.For("pose_pz"), nullptr);
 }
@@ -110,7 +122,7 @@ TEST(ProcedurePlan, NoTargetKeepsEachStepsDuration) {
   p.target = ProcedureTarget{};
   const SessionPlan s = PlanSession(p, kDefaultNoise, 100.0, kG, GoodLab(p), 0.0);
   EXPECT_FALSE(s.planned);
-  EXPECT_DOUBLE_EQ(s.plan.capture_s, 180.0);
+  EXPECT_DOUBLE_EQ(s.plan.capture_s, 210.0);
   EXPECT_EQ(s.For("pose_pz"), nullptr);
 }
 
