@@ -14,6 +14,7 @@
 #include <nlohmann/json.hpp>
 
 #include "accelcal/app/report_inputs.h"
+#include "accelcal/app/wizard/bench_plan.h"
 #include "accelcal/app/wizard/resume_summary.h"
 #include "accelcal/io/report_json.h"
 #include "accelcal/report/bench_time.h"
@@ -156,6 +157,35 @@ TEST(WizardBenchPlan, OptionalCapturesThePlanLeavesOutAreSkipped) {
                               [&](const JournalCapture& c) { return c.step_id == repeat; })) << repeat;
     }
   EXPECT_TRUE(j.Result().has_value());
+}
+
+// The give-up counts from the pose: the procedure's capture_timeout_s (60 s) for a capture the
+// plan makes longer than the step's own 10 s, since a capture begun in time runs to its end; only
+// a capture as long as that keeps the step's slack (50 s) after it.
+TEST(WizardBenchPlan, APlannedCaptureGivesUpAtTheProceduresTimeout) {
+  const Procedure p = FullProcedure();
+  const ProcedureStep& pose = p.steps[1];
+  ASSERT_EQ(pose.id, "pose_pz");
+  EXPECT_DOUBLE_EQ(BenchPlan::GiveUpS(pose, 15.0), 60.0);
+  EXPECT_DOUBLE_EQ(BenchPlan::GiveUpS(pose, 59.0), 60.0);
+  EXPECT_DOUBLE_EQ(BenchPlan::GiveUpS(pose, 60.0), 110.0);
+
+  WizardRig rig(p, sim::DefaultScenario());
+  AcceptUntil(rig.engine, [](const WizardView& v) { return v.step_title == "+z up" && v.screen == WizardScreen::kPlacePose; });
+  rig.engine.Handle({IntentKind::kAccept, ""});
+  double longest_left_s = 0.0, latest_give_up_s = 0.0;
+  for (int i = 0; i < 5000 && testing::Busy(rig.engine.View()); ++i) {
+    const WizardView v = rig.engine.View();
+    if (std::isfinite(v.capture_left_s)) longest_left_s = std::max(longest_left_s, v.capture_left_s);
+    if (std::isfinite(v.give_up_in_s)) latest_give_up_s = std::max(latest_give_up_s, v.give_up_in_s);
+    if (std::isfinite(v.give_up_in_s)) {
+      EXPECT_TRUE(v.time_text.find("gives up in ") != std::string::npos) << v.time_text;
+    }
+    rig.engine.Poll(0.0);
+  }
+  EXPECT_GT(longest_left_s, pose.duration_s);  // the plan's capture, longer than the step's
+  EXPECT_GT(latest_give_up_s, 50.0);
+  EXPECT_LE(latest_give_up_s, pose.timeout_s);  // the first pose: no settling wait
 }
 
 // The capture screen's "session: about N min left" is the plan's: each capture as long as the

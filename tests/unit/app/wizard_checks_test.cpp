@@ -220,7 +220,7 @@ TEST(WizardChecks, ACaptureRefusedAgainAndAgainEndsInsteadOfGoingRound) {
   EXPECT_NE(v.prompt.find("Saved."), std::string::npos) << v.prompt;
   ASSERT_EQ(hints.size(), 3u) << ::testing::PrintToString(hints);
   EXPECT_NE(hints[0].find("Enter tries again"), std::string::npos) << hints[0];
-  EXPECT_NE(hints[2].find("not accepted 3 times in a row: check the mounting, radius and speed"),
+  EXPECT_NE(hints[2].find("not accepted 3 times in a row: measure the radius with the ruler and check the speed"),
             std::string::npos) << hints[2];
   EXPECT_NE(hints[2].find("Enter saves and quits"), std::string::npos) << hints[2];
   EXPECT_TRUE(rig.journal->Captures().empty());

@@ -113,9 +113,16 @@ void BenchPlan::Apply(const ProcedureStep& step, CaptureRequest* request) const 
   }
   request->stop_samples = rule.needed_samples;
   request->duration_s = static_cast<double>(rule.needed_samples) / rate_hz;
-  // The give-up counts from the first sample: as long after the capture's end as the step's.
-  request->timeout_s = std::max(request->timeout_s, request->duration_s + (step.timeout_s - step.duration_s));
-  if (!(request->timeout_s > request->duration_s)) request->timeout_s = request->duration_s + 30.0;
+  request->timeout_s = GiveUpS(step, request->duration_s);
+}
+
+double BenchPlan::GiveUpS(const ProcedureStep& step, double capture_s) {
+  // The give-up counts from the pose's first sample, and the capture engine checks it only
+  // while no capture runs: a capture begun in time runs to its end, however long the plan made
+  // it. So the procedure's capture_timeout_s holds for any planned length that fits in it; a
+  // capture as long (a noisy sensor's, up to max_capture_s) keeps the step's slack after it.
+  if (capture_s < step.timeout_s) return step.timeout_s;
+  return capture_s + std::max(step.timeout_s - step.duration_s, 1.0);
 }
 
 std::string BenchPlan::WelcomeText() const {

@@ -41,6 +41,9 @@ class BenchPlan {
   // duration (no count) for a step the plan does not hold.
   double CaptureS(const ProcedureStep& step) const;
   void Apply(const ProcedureStep& step, CaptureRequest* request) const;
+  // The give-up of a capture of `step` planned `capture_s` long, counted from the pose's first
+  // sample: the procedure's (the step's timeout_s) whenever the capture fits in it.
+  static double GiveUpS(const ProcedureStep& step, double capture_s);
   // The session's time left for `step`, whose kind estimates `step_estimate_s` (time_estimate.h):
   // a capture step the plan holds takes the plan's time, as the welcome counted it (its capture
   // length, settling, the pose's handling, and its turntable mounting unless `mounted` says one

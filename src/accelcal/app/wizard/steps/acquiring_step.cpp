@@ -214,7 +214,11 @@ std::string AcquiringStep::ProblemToCheck() const {
   return check;
 }
 
-CaptureMessage AcquiringStep::RejectedMessage() const { return DescribeEnded(session_.acq.reason(), step_.timeout_s); }
+// The give-up the capture had (the procedure's, a settling wait's more: BenchPlan::GiveUpS).
+CaptureMessage AcquiringStep::RejectedMessage() const {
+  const double timeout_s = session_.acq.capture_timeout_s();
+  return DescribeEnded(session_.acq.reason(), std::isfinite(timeout_s) ? timeout_s : step_.timeout_s);
+}
 
 // A capture given up because the sensor was never still: what to do about the bench (placing the
 // prism again would not help); else how to place it.
@@ -267,9 +271,8 @@ void AcquiringStep::SetCaptureView(WizardView& v) const {
   // as the capture engine counts it), and the session's estimate.
   const double capture_s = CaptureS();
   v.capture_left_s = capturing ? capture_s * (1.0 - snap.progress) : kNaN;
-  // A planned capture longer than the step's gives up as long after its end (BenchPlan::Apply).
-  const double timeout_s = std::max(step_.timeout_s, step_.timeout_s + capture_s - step_.duration_s);
-  v.give_up_in_s = std::max(timeout_s - snap.elapsed_s, 0.0);
+  // The capture's own give-up (the procedure's, BenchPlan::GiveUpS; a settling wait's more).
+  v.give_up_in_s = std::max(session_.acq.capture_timeout_s() - snap.elapsed_s, 0.0);
   v.session_left_s = (capturing ? v.capture_left_s : capture_s) + session_.sequence.SessionLeftS(true);
   v.time_text = CaptureTimeText(capture_s, v.capture_left_s, v.give_up_in_s, v.session_left_s);
   // By the plan the bar fills toward "enough data" (the count the noise floor dictates).
