@@ -17,6 +17,7 @@
 #include "accelcal/app/wizard/bench_plan.h"
 #include "accelcal/app/wizard/resume_summary.h"
 #include "accelcal/io/report_json.h"
+#include "accelcal/io/scenario_file.h"
 #include "accelcal/report/bench_time.h"
 #include "wizard_test_support.h"
 
@@ -157,6 +158,19 @@ TEST(WizardBenchPlan, OptionalCapturesThePlanLeavesOutAreSkipped) {
                               [&](const JournalCapture& c) { return c.step_id == repeat; })) << repeat;
     }
   EXPECT_TRUE(j.Result().has_value());
+}
+
+// The welcome's bench time is the plan of the equipment its question offers (the virtual lab's:
+// the ruler to 0.03 mm), which Enter keeps: the plan is not made again once it is answered (it
+// was made with the procedure's example ruler, 0.5 mm: the demo's welcome said 14 min for 16).
+TEST(WizardBenchPlan, TheWelcomePlansWithTheEquipmentEnterKeeps) {
+  // The README's demo: the default scenario file, whose lab (gravity, equipment) the welcome offers.
+  WizardRig rig(FullProcedure(), sim::LoadScenario(std::string(ACCELCAL_SOURCE_DIR) + "/scenarios/bench_default.toml"));
+  (void)rig.engine.View();
+  const double at_welcome = InputNumber(*rig.journal, "bench_plan", "planned_capture_s");
+  // Past the first capture (its request is planned again with what the session holds then).
+  AcceptUntil(rig.engine, [](const WizardView& v) { return v.step_title == "-z up" && v.screen == WizardScreen::kPlacePose; });
+  EXPECT_DOUBLE_EQ(InputNumber(*rig.journal, "bench_plan", "planned_capture_s"), at_welcome);
 }
 
 // The give-up counts from the pose: the procedure's capture_timeout_s (60 s) for a capture the

@@ -35,7 +35,7 @@ double SampleRateHz(const std::vector<Sample>& samples) {
   return span_s > 0.0 ? static_cast<double>(samples.size() - 1) / span_s : kNaN;
 }
 
-void BenchPlan::Refresh(WizardSession& session) {
+void BenchPlan::Refresh(WizardSession& session, const std::vector<EquipmentItem>* equipment) {
   const std::optional<NoiseFloor>& floor = session.noise_floor.floor();
   const std::optional<Eigen::Vector3d> noise =
       floor ? std::optional<Eigen::Vector3d>(floor->std_counts) : std::nullopt;
@@ -48,8 +48,8 @@ void BenchPlan::Refresh(WizardSession& session) {
   const Eigen::Vector3d assumed = PlannedSensorOf(procedure_, noise, rate_hz).noise_counts;
   const bool noise_moved = !made_ || NoiseDiffers(assumed_noise_, assumed);
   const bool rate_moved = !made_ || std::abs(rate_hz - assumed_rate_hz_) > 0.02 * assumed_rate_hz_;
-  const ReferenceUncertainties references =
-      ToReferenceUncertainties(session.steps.equipment(), session.gravity.sigma_mps2);
+  const ReferenceUncertainties references = ToReferenceUncertainties(
+      equipment != nullptr ? *equipment : session.steps.equipment(), session.gravity.sigma_mps2);
   const bool references_moved =
       !SameOrBothNaN(references.gravity_mps2, assumed_refs_.gravity_mps2) ||
       !SameOrBothNaN(references.radius_m, assumed_refs_.radius_m) ||

@@ -15,10 +15,12 @@
 #include <optional>
 #include <set>
 #include <string>
+#include <vector>
 
 #include <Eigen/Core>
 
 #include "accelcal/acquire/capture_engine/capture_request.h"
+#include "accelcal/session/equipment.h"
 #include "accelcal/session/procedure_plan.h"
 
 namespace accelcal {
@@ -33,7 +35,9 @@ class BenchPlan {
 
   // Plans (again) when nothing is planned yet, or the session's noise floor, sample rate,
   // gravity or equipment differ from what the plan assumed; records the plan in the journal.
-  void Refresh(WizardSession& session);
+  // `equipment`: the items to plan with instead of the session's (the welcome's: those its
+  // question offers, which Enter keeps, before it is answered).
+  void Refresh(WizardSession& session, const std::vector<EquipmentItem>* equipment = nullptr);
   const SessionPlan& plan() const { return plan_; }
   bool by_target() const { return plan_.planned; }
 
