@@ -15,8 +15,9 @@ if [ -z "$program" ]; then
 fi
 
 # The defaults, each left out when the arguments give it (CLI11 takes an option once):
-# --speed 20 runs the simulated bench 20 times faster than real time, so a whole session of 18
-# ten-second captures takes a minute or two of pressing Enter.
+# --speed 20 runs the simulated bench 20 times faster than real time, so a whole session of 21
+# captures (as long as the procedure's capture plan makes them) takes a minute or two of
+# pressing Enter.
 declare -A defaults=([--source]=sim [--speed]=20)
 for arg in "$@"; do
   name=${arg%%=*}

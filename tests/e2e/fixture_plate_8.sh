@@ -16,10 +16,17 @@ data_dir=$3
 command -v jq > /dev/null || { echo "jq missing: skipped"; exit 77; }
 short_procedure
 db="$work/plate.db"
+# The steps' own 3 s captures (--fixed-duration), as this test was written for. Not yet with the
+# capture plan (issue 32): its longer captures (the lead's noise and target) leave the boards far
+# from the plate's reference point (B01, B07, B08: 60-80 mm) FAIL on residual RMS / noise RMS
+# (6.4-8.5 above 5): their turntable radius is only as good as the plate's placement (o theta,
+# 0.14 mm at 80 mm, docs/fixtures.md), an error per mounting that no capture length averages out
+# and that the fit's per-capture noise does not include. Open, issue 31/32.
+fixed=(--fixed-duration 3)
 run() {  # the wizard on the plate, answers all Enter
   { yes '' || true; } | "$accelcal" wizard --source sim --speed 0 \
     --scenario "$data_dir/fixture/plate_8_faults.toml" --procedure "$work/short.toml" \
-    --session "$db" --plain
+    --session "$db" --plain "${fixed[@]}"
 }
 
 # A first run given the answers up to the sixth pose only (the fifth, +y up, taken), so that it
@@ -29,7 +36,7 @@ run() {  # the wizard on the plate, answers all Enter
 # the table's swing taken out, so they cannot be matched with the source's by their readings).
 mkfifo "$work/answers"
 "$accelcal" wizard --source sim --speed 0 --scenario "$data_dir/fixture/plate_8_faults.toml" \
-  --procedure "$work/short.toml" --session "$db" --plain < "$work/answers" > "$work/out.1" 2>&1 &
+  --procedure "$work/short.toml" --session "$db" --plain "${fixed[@]}" < "$work/answers" > "$work/out.1" 2>&1 &
 pid=$!
 exec 3> "$work/answers"
 # Enter to each question (the fixture's about a board left out among them: how many depends

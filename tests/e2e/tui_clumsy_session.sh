@@ -73,7 +73,7 @@ while [ $SECONDS -lt $deadline ]; do
   case "$f" in *"s left of this capture; gives up in "*) seen_left=1; shot capturing ;; esac
   case "$f" in *"gives up in "*) seen_giveup=1 ;; esac
   case "$f" in *"(estimate)"*) seen_estimate=1 ;; esac
-  case "$f" in *"[DONE] "*" done: 3.0 s, |a| ~"*" m/s^2 by the datasheet, noise "*" counts"*) seen_done=1; shot confirmed ;; esac
+  case "$f" in *"[DONE] "*" done: "*" s, |a| ~"*" m/s^2 by the datasheet, noise "*" counts"*) seen_done=1; shot confirmed ;; esac
   # The detail rows start with "detail   " (the flat text squeezes the blanks: the raw screen).
   detail=0; printf '%s' "$last_screen" | grep -q '^detail   ' && detail=1
   [ $detail = 1 ] && [ $pressed_d = 0 ] && fail "figures on the screen before d was pressed"

@@ -28,6 +28,7 @@
 #include "cli/output.h"
 #include "cli/source_preflight.h"
 #include "cli/terminal_answers.h"
+#include "cli/usage_errors.h"
 #include "cli/gravity_options.h"
 #include "cli/wizard_fixture.h"
 #include "accelcal/app/fixture/fixture_driver.h"
@@ -125,6 +126,7 @@ int RunWizard(const WizardCommandOptions& options) {
   wizard.default_operator = DefaultOperator(sim);
   wizard.default_device = several ? "fixture" : sim ? "SIM-0001" : "";
   wizard.default_place = options.place;
+  wizard.fixed_duration_s = options.fixed_duration_s;
   wizard.device_lines = std::move(device_lines);
   wizard.vehicle = vehicle;
   wizard.gravity = options.gravity;
@@ -153,6 +155,9 @@ int RunWizard(const WizardCommandOptions& options) {
     // On a terminal, q is read while the wizard captures; a pipe's lines wait for questions.
     status = ui::RunLineModeOn(driver, STDIN_FILENO, ::isatty(STDIN_FILENO) == 1, std::cout);
   }
+  // A session left at a dead end (a fit refused, a capture refused again and again) is saved
+  // to resume like one left with q, but the job failed: a script must not take it for done.
+  if (status == 0 && engine.left_on_failure()) return kExitFailure;
   // Done only when the procedure ran to its end; a session left with q stays open to resume.
   if (status == 0 && engine.completed() && several)
     FinishFixtureWizard(fixture, *journal, procedure, procedure_path, session, std::cout);
@@ -193,6 +198,10 @@ void SetupWizardCommand(CLI::App& app) {
   sub->add_option("--session", options->session_path,
                   "Session file: created when new, resumed when it exists (default: a new one)");
   sub->add_flag("--plain", options->plain, "Plain line mode even on a terminal");
+  sub->add_option("--fixed-duration", options->fixed_duration_s,
+                  "Every capture this long, s, as before the plan (for comparison); default: the "
+                  "procedure's [target] plans each capture's length")
+      ->check(CLI::PositiveNumber);
   sub->add_flag("--no-lab", options->no_lab,
                 "On a bench pointed at a lab's register (docs/lab.md): neither check the equipment\n"
                 "at the welcome nor publish the finished session (`accelcal lab publish` does later)");

@@ -21,6 +21,7 @@ struct WizardCommandOptions {
   // session published at the end. --no-lab: neither.
   bool no_lab = false;
   std::string place;                // offered at the welcome (the lab, the bench)
+  double fixed_duration_s = 0.0;    // > 0: every capture this long (no plan by the target), s
   std::string bench_control;        // HOST:PORT of a remote virtual bench's controls (tests)
   std::string vehicle_calibration = "undo";  // mavlink: undo | as-is
   GravitySpec gravity;

@@ -21,6 +21,7 @@ ReportInputs ReportInputsFromJournal(const SessionJournal& journal, const std::s
   for (const DamagedCapture& d : journal.DamagedCaptures()) in.damaged_captures.push_back(d.Describe());
   const SessionInputs inputs = journal.Inputs();
   FillMetaFromInputs(inputs, &in.meta);
+  in.bench_time = BenchTimeFromInputs(inputs);
   if (std::optional<std::string> equipment = ReadWelcomeAnswers(inputs).equipment)
     in.equipment_answer = std::move(*equipment);
   ReadAnalysesFromResultText(*result, source_name, &in);

@@ -44,7 +44,8 @@ PoseRepeat ComparePoseRepeat(const Capture& first, const Capture& again, const S
   ReadingOf(first, m1, s1);
   ReadingOf(again, m2, s2);
   const Eigen::Vector3d scale = rough.scale_counts_per_mps2;
-  const Eigen::Vector3d up = rough.Calibrate(m1).normalized();
+  // Halfway between the two ups: a turn between the captures moves nothing (pose_repeat.h).
+  const Eigen::Vector3d up = (rough.Calibrate(m1).normalized() + rough.Calibrate(m2).normalized()).normalized();
   // Per axis, counts of the mean scale per count of the axis: u_j K_mean / K_j.
   const Eigen::Vector3d weight = up.cwiseProduct(scale.cwiseInverse()) * scale.mean();
   r.moved_counts = weight.dot(m2 - m1);

@@ -7,9 +7,13 @@
 // The prism is set down again, never exactly as before: a placement a fraction of a degree off
 // turns gravity between the axes (a first-order change of the horizontal axes' readings) but
 // leaves its magnitude alone. So the move is measured along gravity: the change of the reading's
-// magnitude through the rough model, sum_j u_j (x2_j - x1_j) / K_j, u the unit up the first
-// capture measured, expressed in counts of the mean scale; a re-placement does not move it to
-// first order, a bias or a scale that changed does.
+// magnitude through the rough model, sum_j u_j (x2_j - x1_j) / K_j, u the unit up halfway
+// between the two captures' (a1 + a2 normalized: then u . (a2 - a1) = (|a2|^2 - |a1|^2) / |a1 + a2|,
+// the magnitude's change itself), expressed in counts of the mean scale; a bias or a scale that
+// changed moves it, a re-placement only through the rough model's own bias error (a turn of d rad
+// by about d times that error). (The first capture's up alone also missed by g (1 - cos d): 0.2
+// counts for the 2 deg between the prism and the stopped turntable's seat, beyond the noise of
+// two 15 s captures.)
 #pragma once
 
 #include <string>

@@ -91,6 +91,21 @@ ProcedureLimits ReadLimits(TomlTableReader& r) {
   return l;
 }
 
+// [target]: the U(k=2) the plan aims for, the longest capture and the bench's handling times;
+// a target looser than [limits] is refused at its key (read after [limits] and [sensor]).
+ProcedureTarget ReadTarget(TomlTableReader& r, const Procedure& p) {
+  ProcedureTarget t;
+  t.bias_mg = r.Number("bias_mg", kNaN, NumberRange::kPositive);
+  t.scale_ppm = r.Number("scale_ppm", kNaN, NumberRange::kPositive);
+  t.misalignment_mrad = r.Number("misalignment_mrad", kNaN, NumberRange::kPositive);
+  t.max_capture_s = r.Number("max_capture_s", t.max_capture_s, NumberRange::kPositive);
+  t.pose_handling_s = r.Number("pose_handling_s", t.pose_handling_s, NumberRange::kNonNegative);
+  t.mounting_s = r.Number("mounting_s", t.mounting_s, NumberRange::kNonNegative);
+  if (const TargetConflict c = CheckTargetAgainstLimits(t, p.limits, p.nominal); !c.key.empty())
+    r.FailKey(c.key, c.message);
+  return t;
+}
+
 ProcedureRequirements ReadRequirements(TomlTableReader& r) {
   ProcedureRequirements q;
   q.device_serial = r.Bool("device_serial", false);
@@ -234,6 +249,7 @@ Procedure ParseProcedure(std::string_view toml_text, const std::string& source_n
   WithTable(root, "checks", source_name,
             [&](TomlTableReader& r) { defaults = ReadChecks(r, p); });
   WithTable(root, "limits", source_name, [&](TomlTableReader& r) { p.limits = ReadLimits(r); });
+  WithTable(root, "target", source_name, [&](TomlTableReader& r) { p.target = ReadTarget(r, p); });
   WithTable(root, "requirements", source_name,
             [&](TomlTableReader& r) { p.requirements = ReadRequirements(r); });
   WithTable(root, "equipment", source_name,

@@ -76,6 +76,30 @@ json Checks(const ReportModel& m) {
   return a;
 }
 
+json BenchSecondsJson(const BenchSeconds& b) {
+  return {{"capture_s", Num(b.capture_s)},
+          {"settle_s", Num(b.settle_s)},
+          {"handling_s", Num(b.handling_s)},
+          {"total_s", Num(b.TotalS())}};
+}
+
+// The session's bench time (spent: on the virtual bench its handling model, on a real bench
+// the session's clock), the plan's, and the planned and reached U(k=2) per parameter.
+json BenchTimeJson(const ReportBenchTime& b) {
+  json out = BenchSecondsJson(b.spent);
+  out["captures"] = b.captures;
+  out["planned_by"] = b.planned_by;
+  out["planned"] = BenchSecondsJson(b.planned);
+  json parameters = json::array();
+  for (const BenchParameterU& p : b.parameters)
+    parameters.push_back({{"name", p.name},
+                          {"target_U", Num(p.target)},
+                          {"planned_U", Num(p.planned)},
+                          {"reached_U", Num(p.reached)}});
+  out["uncertainty"] = parameters;
+  return out;
+}
+
 // The certificate's statements (its results are the budget's and the parameters').
 json CertificateJson(const Certificate& c) {
   json results = json::array();
@@ -138,7 +162,8 @@ json ReportToJson(const ReportModel& m) {
           {"incomplete", m.incomplete},
           {"verdict", std::string(VerdictToString(m.verdict))},
           {"uncertainty_budget", m.budget ? detail::BudgetToJson(*m.budget) : json(nullptr)},
-          {"certificate", CertificateJson(m.certificate)}};
+          {"certificate", CertificateJson(m.certificate)},
+          {"bench_time", m.bench_time ? BenchTimeJson(*m.bench_time) : json(nullptr)}};
 }
 
 std::string ReportJsonText(const ReportModel& model) { return detail::JsonText(ReportToJson(model)) + "\n"; }

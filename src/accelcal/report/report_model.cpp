@@ -210,6 +210,8 @@ ReportModel BuildReportModel(const ReportInputs& in) {
   m.incomplete = IncompleteReasons(in, m.checks);
   if (all_pass && !m.incomplete.empty()) m.verdict = Verdict::kIncomplete;
   m.budget = cal.budget;
+  m.bench_time = in.bench_time;
+  if (m.bench_time && m.budget) FillReachedU(*m.budget, &*m.bench_time);
   m.certificate = MakeCertificate(in, m);
   return m;
 }

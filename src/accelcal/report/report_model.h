@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "accelcal/report/bench_time.h"
 #include "accelcal/base/capture.h"
 #include "accelcal/calibration/calibration.h"
 #include "accelcal/report/certificate.h"
@@ -187,6 +188,9 @@ struct ReportModel {
   Verdict verdict = Verdict::kNoLimits;
   std::optional<UncertaintyBudget> budget;  // the calibration's
   Certificate certificate;
+  // A wizard session's bench time, planned and spent, with each parameter's planned and reached
+  // U (bench_time.h); absent for a calibration file alone or a session from before the plan.
+  std::optional<ReportBenchTime> bench_time;
 };
 
 // What the report takes from one of the session's captures: the statistics of its samples
@@ -221,6 +225,8 @@ struct ReportInputs {
   // A wizard session's welcome answer to the equipment question, as typed (empty: none); the
   // caller that knows the procedure applies it to `equipment` (app/wizard/equipment_input.h).
   std::string equipment_answer;
+  // The session's bench time (BenchTimeFromInputs); its reached U is filled from the budget.
+  std::optional<ReportBenchTime> bench_time;
   // The procedure's nominal scale, counts/(m/s^2): the tolerance on the scales is around it.
   std::optional<Eigen::Vector3d> nominal_scale_counts_per_mps2;
 };

@@ -272,9 +272,15 @@ std::string Render(const ReportModel& m) {
   out += NoiseAndDrift(m);
   out += Heading(6, "Limits of the procedure");
   out += Limits(m);
+  int next = 7;
   if (m.gaps || !m.incomplete.empty()) {
-    out += Heading(7, "Steps skipped or missing");
+    out += Heading(next++, "Steps skipped or missing");
     out += Completeness(m);
+  }
+  if (m.bench_time) {
+    out += Heading(next, "Bench time");
+    const std::vector<std::string> lines = BenchTimeLines(*m.bench_time);
+    for (size_t i = 0; i < lines.size(); ++i) out += i == 0 ? Wrap("  ", lines[i], 4) : "  " + lines[i] + "\n";
   }
   out += "\n" + std::string(kWidth, '-') + "\n";
   out += Wrap("  ", "Report made by " + m.tool + ".", 2);

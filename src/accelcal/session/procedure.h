@@ -17,6 +17,7 @@
 #include "accelcal/base/capture_set.h"
 #include "accelcal/base/sensor_model.h"
 #include "accelcal/session/equipment.h"
+#include "accelcal/session/procedure_target.h"
 #include "accelcal/session/step_kind.h"
 
 namespace accelcal {
@@ -135,6 +136,7 @@ struct Procedure {
   double noise_floor_max_ratio = 2.0;
   ProcedureRequirements requirements;  // [requirements]; nothing required when absent
   ProcedureLimits limits;             // [limits]; all absent when the table is
+  ProcedureTarget target;             // [target]; no uncertainty stated when the table is absent
   // [equipment]: the bench's items with their identification, uncertainty and traceability
   // (the uncertainty budget's type B inputs); empty when the table is absent.
   std::vector<EquipmentItem> equipment;

@@ -72,6 +72,28 @@ inline constexpr const char* kTableTiltDeg = "table_tilt_deg";
 inline constexpr const char* kSwingRemovedCounts = "swing_removed_counts";
 }  // namespace turntable_key
 
+// ---- bench time ---------------------------------------------------------------------------
+
+// The capture plan's pseudo step (app/wizard/bench_plan.h): the plan the session ran by, its
+// times (s) and the expanded uncertainty U (k = 2) it predicted for the nine parameters
+// ("p1 ... p9" in ParameterIndex order, the parameters' units; "nan" where none), and whether
+// it was planned by the procedure's [target] ("target") or fixed lengths ("fixed").
+inline constexpr const char* kBenchPlanStepId = "bench_plan";
+namespace bench_key {
+inline constexpr const char* kPlannedBy = "planned_by";
+inline constexpr const char* kPlannedCaptureS = "planned_capture_s";
+inline constexpr const char* kPlannedSettleS = "planned_settle_s";
+inline constexpr const char* kPlannedHandlingS = "planned_handling_s";
+inline constexpr const char* kPlannedU = "planned_u";
+inline constexpr const char* kTargetU = "target_u";
+// Recorded at a capture's step id when it is accepted: the bench time it took, s (capture,
+// settling and retries before it, handling: the bench's model on the virtual bench, else the
+// time from the previous capture's end to this one's start).
+inline constexpr const char* kCaptureS = "capture_s";
+inline constexpr const char* kSettleS = "settle_s";
+inline constexpr const char* kHandlingS = "handling_s";
+}  // namespace bench_key
+
 // ---- a write-back into the vehicle ----------------------------------------------------------
 
 // Recorded at the write-back step's id: the PARAM_SETs it offered (one per line) and, when the

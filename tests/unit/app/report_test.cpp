@@ -469,7 +469,7 @@ TEST(ReportModel, StagesAreTheDiagnosisResidualsNotARefit) {
   }
   // The same from the file: the stages travel with the calibration.
   const ReportModel from_file = BuildReportModel(
-      {CalibrationFromJsonText(CalibrationToJsonText(in.calibration), "c.json"), {}, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}});
+      {CalibrationFromJsonText(CalibrationToJsonText(in.calibration), "c.json"), {}, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}});
   ASSERT_EQ(from_file.stages.size(), 2u);
   EXPECT_EQ(from_file.stages[1].residual_mps2, m.stages[1].residual_mps2);
 }

@@ -200,6 +200,33 @@ TEST(WizardChecks, TheWrongMountingsRefusalSaysWhatTheSamplesShow) {
       << ::testing::PrintToString(problems);
 }
 
+// A run refused again and again (the sensor sits 50 mm further out than the ruler says: every
+// run reads half as much centripetal load again as stated) ends in words the technician can act
+// on: after 3 refusals in a row Enter saves and quits instead of trying the same again for ever.
+TEST(WizardChecks, ACaptureRefusedAgainAndAgainEndsInsteadOfGoingRound) {
+  const Procedure p = StepsOf(FullProcedure(), [](const ProcedureStep& s) { return Is(s, {"tt_x_100"}); });
+  sim::Scenario scenario = sim::DefaultScenario();
+  scenario.effects.radius_offset_m = 0.05;
+  WizardRig rig(p, scenario);
+  AnswerWelcome(rig.engine);
+  std::vector<std::string> hints;
+  AcceptUntil(rig.engine, [&](const WizardView& v) {
+    if (v.screen == WizardScreen::kError) hints.push_back(v.hint);
+    return false;
+  }, 300);
+  const WizardView v = rig.engine.View();
+  EXPECT_TRUE(v.finished);
+  EXPECT_FALSE(rig.engine.completed());
+  EXPECT_NE(v.prompt.find("Saved."), std::string::npos) << v.prompt;
+  ASSERT_EQ(hints.size(), 3u) << ::testing::PrintToString(hints);
+  EXPECT_NE(hints[0].find("Enter tries again"), std::string::npos) << hints[0];
+  EXPECT_NE(hints[2].find("not accepted 3 times in a row: measure the radius with the ruler and check the speed"),
+            std::string::npos) << hints[2];
+  EXPECT_NE(hints[2].find("Enter saves and quits"), std::string::npos) << hints[2];
+  EXPECT_TRUE(rig.journal->Captures().empty());
+  EXPECT_EQ(rig.journal->DoneSteps().count("tt_x_100"), 0u);
+}
+
 // Issue 13, item 3: a tilted turntable is refused with leveling advice, leveled, and its
 // remaining tilt's swing taken out of the samples.
 TEST(WizardChecks, ATiltedTurntableIsRefusedLeveledAndItsSwingRemoved) {

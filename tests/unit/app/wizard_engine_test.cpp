@@ -368,14 +368,73 @@ TEST(WizardEngineTest, AnUnusableFitBlocksTheWizard) {
   WizardView v = rig.engine.View();
   EXPECT_EQ(v.screen, WizardScreen::kFit);
   EXPECT_NE(v.problem.find("not usable"), std::string::npos) << v.problem;
-  rig.engine.Handle({IntentKind::kAccept, ""});
   rig.engine.Handle({IntentKind::kSkip, ""});
   rig.engine.Handle({IntentKind::kRetry, ""});
   v = rig.engine.View();
   EXPECT_EQ(v.step_title, "Fit the nine-parameter model");
   EXPECT_FALSE(v.problem.empty());
+  EXPECT_FALSE(v.finished);
   EXPECT_FALSE(rig.journal->Result().has_value());
   EXPECT_EQ(rig.journal->DoneSteps().count("fit"), 0u);
+}
+
+// The reproduction of e2e wizard_way_back's 300 s timeout: Enter at a refused fit did nothing,
+// so answering Enter (a script's `yes ''`, a person by reflex) went round for ever. Enter there
+// now saves and quits, the problem on the last screen; nothing accepted is lost.
+TEST(WizardEngineTest, EnterAtARefusedFitSavesAndQuitsInsteadOfGoingRound) {
+  Rig rig(ShortStaticProcedure(3));
+  AcceptUntil(rig.engine, Never, 200);
+  const WizardView v = rig.engine.View();
+  EXPECT_TRUE(v.finished);
+  EXPECT_FALSE(rig.engine.completed());
+  EXPECT_NE(v.prompt.find("Saved."), std::string::npos) << v.prompt;
+  EXPECT_NE(v.problem.find("not usable"), std::string::npos) << v.problem;
+  EXPECT_EQ(rig.journal->Captures().size(), 3u);
+  EXPECT_EQ(rig.journal->DoneSteps().count("fit"), 0u);
+  EXPECT_FALSE(rig.journal->Result().has_value());
+  // Saved, but nothing calibrated: the command's exit status says failure (ui/cli/wizard.cpp).
+  EXPECT_TRUE(rig.engine.left_on_failure());
+}
+
+// q is the technician's choice, not a failure (exit status 0).
+TEST(WizardEngineTest, QuitIsNotAFailure) {
+  Rig rig(ShortStaticProcedure(3));
+  AcceptUntil(rig.engine, TitleIs("+z up"));
+  rig.engine.Handle({IntentKind::kQuit, ""});
+  EXPECT_TRUE(rig.engine.View().finished);
+  EXPECT_FALSE(rig.engine.left_on_failure());
+}
+
+// A sensor four times noisier than the procedure expects: the noise floor is refused at every
+// measurement. Enter measured the same bench again for ever (a script's `yes ''` hung); once it
+// has been refused for 2 minutes of the bench's clock Enter saves and quits with the problem
+// said, r still measures again.
+TEST(WizardEngineTest, ANoiseFloorRefusedAgainAndAgainEndsSavedNotInALoop) {
+  sim::Scenario noisy = sim::DefaultScenario();
+  noisy.sensor.noise_counts = Eigen::Vector3d::Constant(8.0);
+  Rig rig(ShortStaticProcedure(3), Fast(), noisy);
+  AcceptUntil(rig.engine, Never, 400);
+  const WizardView v = rig.engine.View();
+  ASSERT_TRUE(v.finished) << v.prompt;
+  EXPECT_TRUE(rig.engine.left_on_failure());
+  EXPECT_NE(v.prompt.find("Saved."), std::string::npos) << v.prompt;
+  EXPECT_TRUE(rig.journal->Captures().empty());
+}
+
+TEST(WizardEngineTest, RMeasuresTheNoiseFloorAgainOnceEnterGivesUp) {
+  sim::Scenario noisy = sim::DefaultScenario();
+  noisy.sensor.noise_counts = Eigen::Vector3d::Constant(8.0);
+  Rig rig(ShortStaticProcedure(3), Fast(), noisy);
+  AcceptUntil(rig.engine, [](const WizardView& v) { return v.prompt.find("The noise floor was not accepted") != std::string::npos; }, 400);
+  WizardView v = rig.engine.View();
+  ASSERT_NE(v.prompt.find("times in a row."), std::string::npos) << v.prompt;
+  EXPECT_NE(v.hint.find("r measures again, Enter saves and quits"), std::string::npos) << v.hint;
+  const std::string before = v.prompt;
+  rig.engine.Handle({IntentKind::kRetry, ""});
+  PollUntilQuestion(rig.engine);
+  v = rig.engine.View();
+  EXPECT_FALSE(v.finished);
+  EXPECT_NE(v.prompt, before) << "r measured again: one refusal more";
 }
 
 sim::Scenario QuadraticScenario() {

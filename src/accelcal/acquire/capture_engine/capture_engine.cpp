@@ -254,6 +254,7 @@ void CaptureEngine::BeginCapture() {
 
 bool CaptureEngine::CaptureComplete() const {
   if (capture_.samples.size() < 2) return false;
+  if (request_.stop_samples > 0) return static_cast<long>(capture_.samples.size()) >= request_.stop_samples;
   return CoveredS(capture_.samples.front().t_s, capture_.samples.back().t_s,
                   capture_.samples.size()) >= request_.duration_s * (1.0 - 1e-9);
 }
@@ -324,7 +325,10 @@ CaptureSnapshot CaptureEngine::Snapshot() const {
   if (state_ == CaptureState::kCapturing && !capture_.samples.empty()) {
     const double covered_s = CoveredS(capture_.samples.front().t_s, capture_.samples.back().t_s,
                                       capture_.samples.size());
-    snap.progress = std::clamp(covered_s / request_.duration_s, 0.0, 1.0);
+    snap.progress = request_.stop_samples > 0
+                        ? std::clamp(static_cast<double>(capture_.samples.size()) /
+                                         static_cast<double>(request_.stop_samples), 0.0, 1.0)
+                        : std::clamp(covered_s / request_.duration_s, 0.0, 1.0);
   } else if (state_ == CaptureState::kAccepted) {
     snap.progress = 1.0;
   }

@@ -13,6 +13,7 @@ std::string CaptureRequest::Validate() const {
   if (!(std::isfinite(timeout_s) && timeout_s > duration_s))
     return fmt::format("timeout_s is {} s, must be longer than the capture ({} s)", timeout_s,
                        duration_s);
+  if (stop_samples < 0) return fmt::format("stop_samples is {}, must be >= 0 (0: by duration_s)", stop_samples);
   if (!(std::isfinite(settle_wait_s) && settle_wait_s >= 0.0))
     return fmt::format("settle_wait_s is {}, must be >= 0 s", settle_wait_s);
   if (kind == CaptureKind::kTurntable) return turntable.Validate();

@@ -24,6 +24,10 @@ struct CaptureRequest {
   double duration_s = 10.0;  // length of the capture, s; > 0
   double timeout_s = 60.0;   // give up when no capture is accepted this long after the first
                              // sample, s; > duration_s
+  // > 0: the capture ends on this many samples, a count fixed before it starts (the capture
+  // plan's stop rule, calibration/capture_stop_rule.h), not on duration_s; duration_s is then
+  // the time it is expected to take (for the give-up and the time shown).
+  long stop_samples = 0;
   // Static: capturing starts no earlier than this long after the first sample, however still
   // the sensor is, s (>= 0; 0: no wait): a sensor seen still settling after the session's
   // earlier changes of pose is given the time it needs (app/wizard/settling_wait.h). The

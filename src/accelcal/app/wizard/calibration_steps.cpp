@@ -190,6 +190,7 @@ ReportInputs CalibrationSteps::Inputs(const Calibration& cal, const ReportMeta& 
   in.calibration = cal;
   in.meta = meta;
   FillMetaFromInputs(model_.inputs(), &in.meta);  // what was typed wins over the defaults
+  in.bench_time = BenchTimeFromInputs(model_.inputs());
   for (const JournalCapture& c : model_.captures())  // their statistics: no copy of the samples
     if (!c.superseded()) in.captures.push_back(ReportStatsOf(c.capture));
   in.limits = procedure_.limits;

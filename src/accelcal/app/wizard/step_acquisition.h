@@ -76,6 +76,8 @@ class StepAcquisition {
   double quiet_progress() const;
   // The running capture's snapshot (capturing() must be true).
   CaptureSnapshot capture_snapshot() const { return capture_->Snapshot(); }
+  // The running capture's give-up, its request's timeout_s (the settling wait included), s.
+  double capture_timeout_s() const { return timeout_s_; }
   // Why the last capture was rejected or is retrying.
   const std::string& reason() const { return reason_; }
   // The last capture ended on the wall clock with no samples coming (Watch): a link problem.

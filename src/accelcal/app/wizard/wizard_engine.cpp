@@ -4,9 +4,11 @@
 #include "accelcal/app/wizard/wizard_engine.h"
 
 #include <algorithm>
+#include <set>
 #include <utility>
 
 #include <fmt/core.h>
+#include <fmt/ranges.h>
 
 #include "accelcal/app/wizard/quantity_input.h"
 #include "accelcal/app/wizard/refit_answer.h"
@@ -100,7 +102,29 @@ void WizardEngine::EnterStep(int index) {
     return;
   }
   flow_ = Flow::kStep;
+  if (LeftOutByPlan()) {
+    // Said after what the screen already said (the capture just accepted), every step of a run
+    // of skips named.
+    if (plan_skipped_.empty()) notice_before_skips_ = session_.screen.notice;
+    plan_skipped_.push_back(fmt::format("'{}'", StepDisplayTitle(step())));
+    const bool one = plan_skipped_.size() == 1;
+    session_.screen.notice = fmt::format(
+        "{}{}{} skipped: the capture plan leaves {} out, {} nothing for this sensor (b takes {} anyway)",
+        notice_before_skips_, notice_before_skips_.empty() ? "" : "; ", fmt::join(plan_skipped_, ", "),
+        one ? "it" : "them", one ? "it buys" : "they buy", one ? "it" : "them");
+    return FinishStep("skipped");
+  }
+  plan_skipped_.clear();
   controllers_[static_cast<size_t>(current_)]->Enter();
+}
+
+// An optional step not yet taken that the capture plan leaves out (bench_plan.h: it buys nothing
+// for this sensor) is skipped on the way forward; b goes back to it, and it is then taken.
+bool WizardEngine::LeftOutByPlan() {
+  const ProcedureStep& s = step();
+  if (s.required || Redoing() || model_.StepRecorded(s.id)) return false;
+  session_.bench_plan.Refresh(session_);
+  return session_.bench_plan.LeavesOut(s);
 }
 
 // After a retake asked by a step (the report), back to that step even when it was recorded in an
@@ -235,7 +259,17 @@ void WizardEngine::Handle(const Intent& intent) {
 // The steps not yet recorded from the current one (or the next, once the current one runs).
 double WizardEngine::SessionLeftS(bool current_started) const {
   const int first = current_started ? current_ + 1 : current_;
-  return RemainingEstimateS(procedure_, first, [this](const ProcedureStep& s) { return model_.StepRecorded(s.id); });
+  // Each capture as the plan counts it (bench_plan.h), the steps it leaves out not at all; the
+  // mounting of the run on the table is not paid again.
+  std::set<std::string> mounted;
+  if (InSteps(current_) && current_ < first && InfoOf(step().kind).acquires == StepAcquires::kTurntableCapture)
+    (void)session_.bench_plan.StepLeftS(step(), 0.0, &mounted);
+  double total_s = 0.0;
+  for (int i = std::max(first, 0); InSteps(i); ++i) {
+    const ProcedureStep& s = procedure_.steps[static_cast<size_t>(i)];
+    if (!model_.StepRecorded(s.id)) total_s += session_.bench_plan.StepLeftS(s, StepEstimateS(s), &mounted);
+  }
+  return total_s;
 }
 
 }  // namespace accelcal

@@ -67,6 +67,9 @@ class WizardEngine final : public WizardDriver, private StepSequence {
   WizardView View() const override;
   // True once every step of the procedure is done (not merely left with q).
   bool completed() const { return flow_ == Flow::kDone && !quit_; }
+  // True when the session was left at a dead end (a fit refused, a capture refused again and
+  // again: SaveAndLeave), not by the technician's q: saved, but the job failed (exit status 1).
+  bool left_on_failure() const { return flow_ == Flow::kDone && left_on_failure_; }
 
  private:
   enum class Flow {
@@ -84,6 +87,7 @@ class WizardEngine final : public WizardDriver, private StepSequence {
   const StepController* Current() const;
   void ReadJournal();
   void EnterStep(int index);
+  bool LeftOutByPlan();
   void AdvanceFrom(int index);
   void Quit();
   void HandleConfirmSkip(const Intent& intent);
@@ -96,6 +100,10 @@ class WizardEngine final : public WizardDriver, private StepSequence {
   void RestartStep() override { EnterStep(current_); }
   void AskSkip() override;
   void GoBack() override;
+  void SaveAndLeave() override {
+    Quit();
+    left_on_failure_ = true;
+  }
   void RetakeStep(const std::string& step_id) override;
   void RecordCapture(const Capture& capture) override;
   int ReplacedCaptureId() const override { return Redoing() ? redo_capture_id_ : 0; }
@@ -136,6 +144,9 @@ class WizardEngine final : public WizardDriver, private StepSequence {
   bool clock_noted_ = false;
   bool opened_again_ = false;  // a finished session's step entered again (OpensAgainAtEnd)
   bool quit_ = false;
+  bool left_on_failure_ = false;  // quit at a dead end (SaveAndLeave), not by q
+  std::vector<std::string> plan_skipped_;  // the steps of the run of plan skips being said
+  std::string notice_before_skips_;        // what the screen said before them
   std::string refit_error_;             // kOfferRefit: why the last answer was refused
   std::optional<RefitOutcome> refit_;   // the refit made at the end of this run, if any
 

@@ -38,6 +38,10 @@ struct WizardOptions {
   std::string report_beside = {};
   // The lab or bench offered at the welcome (may be empty): the report's "place".
   std::string default_place = {};
+  // > 0: every capture this long, s (--fixed-duration: the fixed plan, for comparison); 0: the
+  // procedure's [target] plans each capture's length (bench_plan.h), or, without a target, each
+  // step's own duration.
+  double fixed_duration_s = 0.0;
   // The lab's check of the bench's equipment (app/lab_equipment_check.h: WelcomeEquipmentCheck):
   // its warnings (expired, running out, unknown to the lab) are shown at the welcome, for the
   // procedure's items and again for the items the equipment answer names; a lab out of reach
@@ -62,6 +66,7 @@ struct WizardOptions {
   // Empty when the options are usable; else why not.
   std::string Validate() const {
     if (!(quiet_period_s > 0.0)) return "quiet_period_s must be positive";
+    if (!(fixed_duration_s >= 0.0)) return "fixed_duration_s must not be negative";
     if (std::string why = gravity.Validate(); !why.empty()) return "gravity: " + why;
     return "";
   }

@@ -13,6 +13,7 @@
 
 #include "accelcal/acquire/capture_engine/orientation_check.h"
 #include "accelcal/acquire/source/sample_source.h"
+#include "accelcal/app/wizard/bench_plan.h"
 #include "accelcal/app/wizard/calibration_steps.h"
 #include "accelcal/app/wizard/session_clock.h"
 #include "accelcal/app/wizard/session_model.h"
@@ -38,6 +39,9 @@ class StepSequence {
   virtual void RestartStep() = 0;
   virtual void AskSkip() = 0;  // s: asks before the step is skipped
   virtual void GoBack() = 0;   // b: to an earlier capture step, when the step goes no further back
+  // What q does, asked by a step at a dead end: everything accepted is saved, the wizard ends
+  // and the session resumes at this step.
+  virtual void SaveAndLeave() = 0;
   // The accepted capture of step `step_id` taken again at once, as b would offer it (the new
   // capture replaces it once accepted; b or s keeps it); the wizard then goes on from the first
   // step not recorded.
@@ -79,6 +83,7 @@ struct WizardSession {
   SessionClock clock;       // every sample on one clock across resumes
   StepAcquisition acq;      // the noise floor, the capture or the record being acquired
   NoiseFloorStep noise_floor;
+  BenchPlan bench_plan;     // each capture's length for the procedure's target (bench_plan.h)
   std::vector<CapturedPose> captured;  // the static poses of the session still used
   int next_capture_id = 1;
   bool adopt_effects = true;  // the diagnosis's choice (Enter adopts, n keeps the base model)

@@ -23,6 +23,9 @@ void AcquiringStep::Handle(const Intent& intent) {
   const bool again = accept || intent.kind == IntentKind::kRetry;
   switch (phase_) {
     case Phase::kNoiseFloor:
+      // Refused again and again: Enter no longer measures the same bench (r still does).
+      if (accept && !session_.noise_floor.measuring() && session_.noise_floor.gives_up())
+        return session_.sequence.SaveAndLeave();
       if (again && !session_.noise_floor.measuring()) {
         DiscardBacklog(session_.source);  // the floor of the bench at rest now, not while asked
         session_.noise_floor.Measure(step_.timeout_s);
@@ -30,6 +33,8 @@ void AcquiringStep::Handle(const Intent& intent) {
       return;
     case Phase::kProblem:
       if (!again) return;
+      // Refused again and again: Enter no longer repeats what failed (r still does).
+      if (accept && refusals_in_row_ >= kRefusalsBeforeLeaving) return session_.sequence.SaveAndLeave();
       BeforeRetry();
       Begin();
       return;
@@ -72,6 +77,7 @@ bool AcquiringStep::Acquiring() const {
 
 void AcquiringStep::EnterPlace() {
   session_.acq.Stop();
+  refusals_in_row_ = 0;
   if (!session_.noise_floor.floor()) {
     session_.noise_floor.Ask();
     phase_ = Phase::kNoiseFloor;
@@ -146,7 +152,11 @@ void AcquiringStep::OnAcquisition(AcquisitionEvent event) {
     case AcquisitionEvent::kNoiseFloorMeasured:
       if (session_.noise_floor.OnMeasured()) phase_ = Phase::kPlace;
       break;
-    case AcquisitionEvent::kCaptureAccepted: OnCaptureAccepted(session_.acq.TakeCapture()); break;
+    case AcquisitionEvent::kCaptureAccepted:
+      refusals_in_row_ = 0;
+      accepted_elapsed_s_ = session_.acq.capturing() ? session_.acq.capture_snapshot().elapsed_s : kNaN;
+      OnCaptureAccepted(session_.acq.TakeCapture());
+      break;
     case AcquisitionEvent::kCaptureRejected: OnCaptureRejected(); break;
     case AcquisitionEvent::kCaptureRetrying:
       // Said in words on the capture screen (capture_messages.h): not a failure to stop on.
@@ -173,6 +183,13 @@ void AcquiringStep::KeepCapture(const Capture& capture) {
   session_.screen.notice = fmt::format("{} done: {:.1f} s, |a| ~{:.2f} m/s^2 by the datasheet, noise {:.1f} counts",
                                        capture.label, covered_s, a_mps2, noise_counts);
   session_.clock.MarkCapture(capture.stats().t_last_s, session_.model);
+  session_.bench_plan.RecordSpent(session_, step_, capture, accepted_elapsed_s_);
+}
+
+CaptureRequest AcquiringStep::Planned(CaptureRequest request) const {
+  session_.bench_plan.Refresh(session_);
+  session_.bench_plan.Apply(step_, &request);
+  return request;
 }
 
 void AcquiringStep::OnCaptureRejected() {
@@ -183,9 +200,25 @@ void AcquiringStep::OnCaptureRejected() {
   session_.screen.hint = session_.acq.ended_silent()
                              ? "check the cable or the sample server; Enter tries again, q leaves"
                              : RejectedHint();
+  if (++refusals_in_row_ >= kRefusalsBeforeLeaving)
+    session_.screen.hint = fmt::format(
+        "not accepted {} times in a row: {} (the same again will not do); r tries again, s skips it, "
+        "Enter saves and quits (the session resumes at this step)",
+        refusals_in_row_, ProblemToCheck());
 }
 
-CaptureMessage AcquiringStep::RejectedMessage() const { return DescribeEnded(session_.acq.reason(), step_.timeout_s); }
+// What the technician checks before trying again: the hint without its "Enter tries again".
+std::string AcquiringStep::ProblemToCheck() const {
+  std::string check = session_.acq.ended_silent() ? "check the cable or the sample server" : RejectedHint();
+  if (const size_t cut = check.find("; Enter tries again"); cut != std::string::npos) check.resize(cut);
+  return check;
+}
+
+// The give-up the capture had (the procedure's, a settling wait's more: BenchPlan::GiveUpS).
+CaptureMessage AcquiringStep::RejectedMessage() const {
+  const double timeout_s = session_.acq.capture_timeout_s();
+  return DescribeEnded(session_.acq.reason(), std::isfinite(timeout_s) ? timeout_s : step_.timeout_s);
+}
 
 // A capture given up because the sensor was never still: what to do about the bench (placing the
 // prism again would not help); else how to place it.
@@ -216,16 +249,18 @@ void AcquiringStep::SetView(WizardView& v) const {
 
 // While the noise floor is measured no capture is waited for.
 double AcquiringStep::WaitingCaptureS(bool on_screen) const {
-  return on_screen && phase_ == Phase::kNoiseFloor ? kNaN : step_.duration_s;
+  return on_screen && phase_ == Phase::kNoiseFloor ? kNaN : CaptureS();
 }
 
 void AcquiringStep::SetCaptureView(WizardView& v) const {
   v.screen = phase_ == Phase::kProblem ? WizardScreen::kError : WizardScreen::kCapturing;
   v.keys = {{"r", "retry"}, {"s", "skip"}, {"b", "back"}, {"q", "save and quit"}};
   if (phase_ == Phase::kProblem) {
-    v.prompt = "The capture was not accepted.";
+    const bool leaves = refusals_in_row_ >= kRefusalsBeforeLeaving;
+    v.prompt = leaves ? fmt::format("The capture was not accepted {} times in a row.", refusals_in_row_)
+                      : "The capture was not accepted.";
     v.detail = session_.screen.detail;
-    v.keys.insert(v.keys.begin(), KeyHint{"Enter", "try again"});
+    v.keys.insert(v.keys.begin(), KeyHint{"Enter", leaves ? "save and quit" : "try again"});
     return;
   }
   const CaptureSnapshot snap = session_.acq.capture_snapshot();
@@ -234,13 +269,18 @@ void AcquiringStep::SetCaptureView(WizardView& v) const {
   const bool capturing = snap.state == CaptureState::kCapturing;
   // Time: the capture's seconds left once it captures, the give-up's countdown (sample time,
   // as the capture engine counts it), and the session's estimate.
-  v.capture_left_s = capturing ? step_.duration_s * (1.0 - snap.progress) : kNaN;
-  v.give_up_in_s = std::max(step_.timeout_s - snap.elapsed_s, 0.0);
-  v.session_left_s = (capturing ? v.capture_left_s : step_.duration_s) + session_.sequence.SessionLeftS(true);
-  v.time_text = CaptureTimeText(step_.duration_s, v.capture_left_s, v.give_up_in_s, v.session_left_s);
+  const double capture_s = CaptureS();
+  v.capture_left_s = capturing ? capture_s * (1.0 - snap.progress) : kNaN;
+  // The capture's own give-up (the procedure's, BenchPlan::GiveUpS; a settling wait's more).
+  v.give_up_in_s = std::max(session_.acq.capture_timeout_s() - snap.elapsed_s, 0.0);
+  v.session_left_s = (capturing ? v.capture_left_s : capture_s) + session_.sequence.SessionLeftS(true);
+  v.time_text = CaptureTimeText(capture_s, v.capture_left_s, v.give_up_in_s, v.session_left_s);
+  // By the plan the bar fills toward "enough data" (the count the noise floor dictates).
+  const std::string enough = session_.bench_plan.ProgressWords(snap.progress);
+  const std::string filled = enough.empty() ? fmt::format("{:.0f} %", snap.progress * 100.0) : enough;
   v.prompt = fmt::format("{} {} (attempt {}): {}", CaptureStateToString(snap.state), step_.pose_name,
                          std::max(1, snap.attempts),
-                         capturing ? fmt::format("{:.0f} %, {:.0f} s left; {}", snap.progress * 100.0,
+                         capturing ? fmt::format("{}, {:.0f} s left; {}", filled,
                                                  std::round(v.capture_left_s), said.text)
                                    : said.text);
   v.progress = snap.progress;

@@ -25,7 +25,10 @@ class AcquiringStep : public StepController {
   void Handle(const Intent& intent) override;
   bool Acquiring() const override;
   void OnAcquisition(AcquisitionEvent event) override;
-  void OnSourceEnded() override { phase_ = Phase::kProblem; }
+  void OnSourceEnded() override {
+    phase_ = Phase::kProblem;
+    ++refusals_in_row_;  // nothing more will come: trying again and again ends too
+  }
   void Halt() override { session_.acq.Stop(); }
   bool BackWithin() override;
   bool AtStart() const override;
@@ -74,6 +77,10 @@ class AcquiringStep : public StepController {
   virtual void BackFromCapture() { EnterPlace(); }
   // The turntable's capture screen speaks of turning, not stillness.
   virtual bool Turning() const { return false; }
+  // The capture's length, s: the step's own; a capture the plan sizes, the plan's (bench_plan.h).
+  virtual double CaptureS() const { return step_.duration_s; }
+  // The capture's request with the plan's stop rule (a kept capture's kinds call it).
+  CaptureRequest Planned(CaptureRequest request) const;
   // The phases of the kind's own (phase_ == kOwn): keys, view.
   virtual void HandleOwn(const Intent& intent);
   virtual void SetOwnView(WizardView& /*v*/) const {}
@@ -82,10 +89,18 @@ class AcquiringStep : public StepController {
   const ProcedureStep& step_;
   WizardSession& session_;
   Phase phase_ = Phase::kPlace;
+  double accepted_elapsed_s_ = kNaN;  // the capture engine's sample time at the last acceptance
 
  private:
+  // Captures of the step refused in a row before Enter saves and quits instead of trying the
+  // same again (a script or a person answering Enter would otherwise go round for ever).
+  static constexpr int kRefusalsBeforeLeaving = 3;
+
   void OnCaptureRejected();
+  std::string ProblemToCheck() const;
   void SetCaptureView(WizardView& v) const;
+
+  int refusals_in_row_ = 0;  // since the placement was asked or a capture accepted
 };
 
 // A step whose sensor is placed on the prism by hand (a static pose, a record): placing it and

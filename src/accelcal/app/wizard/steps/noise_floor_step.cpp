@@ -1,6 +1,7 @@
 #include "accelcal/app/wizard/steps/noise_floor_step.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include <fmt/core.h>
 #include <fmt/format.h>
@@ -46,8 +47,13 @@ bool NoiseFloorStep::OnMeasured() {
   if (!j.ok) {
     screen_.problem = j.reason;
     screen_.hint = "keep hands off the bench and stop what shakes it, then Enter measures again";
+    Refused("keep hands off the bench and stop what shakes it (or check that the procedure's "
+            "expected noise is this sensor's)", false);
     return false;
   }
+  refusals_in_row_ = silent_in_row_ = 0;
+  first_refused_t_s_ = kNaN;
+  gives_up_ = false;
   // A lower floor of an earlier run (proved by its captures) wins over a new measurement above it.
   if (lowered_) {
     NoiseFloor f = *guard_.floor();
@@ -83,9 +89,35 @@ void NoiseFloorStep::OnSilent() {
   measuring_ = false;
   screen_.problem = acq_.reason();
   screen_.hint = "check the cable or the sample server; Enter measures again, q leaves";
+  Refused("check the cable or the sample server", true);
+}
+
+// A measurement refused: once the floor has been refused for kRefusedLongestS of the bench's
+// clock (or silent kSilentBeforeLeaving times) in a row, the same bench measured again will not
+// do, and Enter saves and quits instead (a loop of Enter would never end).
+void NoiseFloorStep::Refused(const std::string& check, bool silent) {
+  ++refusals_in_row_;
+  silent_in_row_ = silent ? silent_in_row_ + 1 : 0;
+  const std::vector<Sample>& quiet = acq_.quiet_samples();
+  double refused_for_s = 0.0;
+  if (!quiet.empty()) {
+    if (!std::isfinite(first_refused_t_s_)) first_refused_t_s_ = quiet.front().t_s;
+    refused_for_s = quiet.back().t_s - first_refused_t_s_;
+  }
+  gives_up_ = silent_in_row_ >= kSilentBeforeLeaving || refused_for_s >= kRefusedLongestS;
+  if (!gives_up_) return;
+  screen_.hint = fmt::format("not accepted {} times in a row ({:.0f} s): {} (the same again will not do); r "
+                             "measures again, Enter saves and quits (the session resumes here)",
+                             refusals_in_row_, refused_for_s, check);
 }
 
 void NoiseFloorStep::SetView(WizardView& v) const {
+  if (!measuring_ && gives_up_) {
+    v.screen = WizardScreen::kPlacePose;
+    v.prompt = fmt::format("The noise floor was not accepted {} times in a row.", refusals_in_row_);
+    v.keys = WithNavigation({{"r", "measure again"}, {"Enter", "save and quit"}});
+    return;
+  }
   if (!measuring_) {
     v.screen = WizardScreen::kPlacePose;
     v.prompt = fmt::format(

@@ -48,6 +48,15 @@ class NoiseFloorStep {
   void Ask() { measuring_ = false; }
   void Measure(double timeout_s);
   bool measuring() const { return measuring_; }
+  // Measurements refused (or silent) in a row in this run.
+  int refusals_in_row() const { return refusals_in_row_; }
+  // The same bench measured again will not do: the floor refused for kRefusedLongestS of the
+  // bench's clock (a bench that shakes settles sooner; a sensor noisier than the procedure
+  // expects never does), or silent kSilentBeforeLeaving times in a row. Enter then saves and
+  // quits (r still measures).
+  bool gives_up() const { return gives_up_; }
+  static constexpr double kRefusedLongestS = 120.0;
+  static constexpr int kSilentBeforeLeaving = 3;
   bool OnMeasured();
   void OnSilent();
   void SetView(WizardView& v) const;
@@ -61,6 +70,8 @@ class NoiseFloorStep {
   void Recheck(const Capture& latest, std::vector<CapturedPose>& captured);
 
  private:
+  void Refused(const std::string& check, bool silent);
+
   const Procedure& procedure_;
   SessionModel& model_;
   StepAcquisition& acq_;
@@ -71,6 +82,10 @@ class NoiseFloorStep {
   std::optional<NoiseFloor> lowered_;  // a floor lowered by the captures (this run or before)
   std::vector<std::string> lines_;
   bool measuring_ = false;
+  int refusals_in_row_ = 0;
+  int silent_in_row_ = 0;
+  double first_refused_t_s_ = kNaN;  // the bench's clock at the first refusal in a row
+  bool gives_up_ = false;
 };
 
 }  // namespace accelcal

@@ -13,6 +13,7 @@
 // The whole kind is this file and its line in step_registry.cpp's list (ARCHITECTURE.md, "How to
 // add a step kind").
 #include <algorithm>
+#include <iterator>
 #include <memory>
 
 #include <fmt/core.h>
@@ -83,12 +84,14 @@ class RepeatStep final : public AcquiringStep {
   // The pose was captured before: taking it again is the point.
   bool ChecksDuplicates() const override { return false; }
 
-  // Before the capture starts: as long as the session's captures say the sensor needs to settle.
+  // The plan's length, ended by its stop rule (bench_plan.h: a capture like any pose); before
+  // the capture starts, as long as the session's captures say the sensor needs to settle.
   CaptureRequest MakeRequest() const override {
-    CaptureRequest r = AcquiringStep::MakeRequest();
+    CaptureRequest r = Planned(AcquiringStep::MakeRequest());
     AddSettlingWait(session_, r);
     return r;
   }
+  double CaptureS() const override { return session_.bench_plan.CaptureS(step_); }
 
   void OnCaptureAccepted(Capture capture) override {
     KeepCapture(capture);
@@ -101,15 +104,25 @@ class RepeatStep final : public AcquiringStep {
     session_.sequence.ContinueFromFirstOpenStep();
   }
 
+  // On the stopped turntable when the run right before it has its capture: the sensor is still
+  // mounted with the pose's up axis up. A run skipped (by s, or left out by the capture plan)
+  // mounted nothing, so the pose is set on the prism as the first time.
+  bool OnStoppedTurntable() const {
+    if (!RepeatOf(step_).on_turntable) return false;
+    const std::vector<ProcedureStep>& steps = session_.procedure.steps;
+    const auto at = std::find_if(steps.begin(), steps.end(), [&](const ProcedureStep& s) { return s.id == step_.id; });
+    return at != steps.begin() && at != steps.end() && session_.model.CaptureOf(std::prev(at)->id) != nullptr;
+  }
+
   // On the turntable: the table stops with the sensor as mounted (the virtual bench's too).
   void PlaceOnBench() override {
-    if (!RepeatOf(step_).on_turntable) return AcquiringStep::PlaceOnBench();
+    if (!OnStoppedTurntable()) return AcquiringStep::PlaceOnBench();
     if (BenchControl* bench = session_.source.bench()) bench->StopTurntable();
   }
 
   void SetPlaceView(WizardView& v) const override {
     v.screen = WizardScreen::kPlacePose;
-    if (RepeatOf(step_).on_turntable) {
+    if (OnStoppedTurntable()) {
       v.prompt = fmt::format("The first pose again ({}), on the turntable: stop the table and leave the sensor "
                              "as it is mounted; what moved since the first time is measured. Press Enter to capture.",
                              step_.pose_name);
@@ -118,8 +131,9 @@ class RepeatStep final : public AcquiringStep {
     }
     const std::string how = IsTiltedPose(step_.up) ? "Set the prism " + PrismSetting(step_.up, step_.pose_name)
                                                    : "Put the prism on the table with " + step_.pose_name;
-    v.prompt = fmt::format("{} again, as for the first pose, and let go: what moved since is measured. "
-                           "Press Enter to capture.", how);
+    const std::string why = RepeatOf(step_).on_turntable ? " (the turntable run before it was not taken: nothing is mounted)" : "";
+    v.prompt = fmt::format("{} again, as for the first pose{}, and let go: what moved since is measured. "
+                           "Press Enter to capture.", how, why);
     v.keys = WithNavigation({{"Enter", "capture"}});
   }
 };

@@ -10,6 +10,7 @@ void ResultStep::Enter() {
   lines_ = std::move(outcome.lines);
   details_ = std::move(outcome.details);
   show_details_ = false;
+  dead_end_ = !outcome.problem.empty();
   session_.screen.problem = std::move(outcome.problem);
   session_.screen.hint = std::move(outcome.hint);
 }
@@ -27,7 +28,11 @@ void ResultStep::Handle(const Intent& intent) {
     show_details_ = !show_details_ && !details_.empty();
     return;
   }
-  Answer(intent, intent.kind == IntentKind::kAccept || intent.kind == IntentKind::kSubmitText);
+  const bool accept = intent.kind == IntentKind::kAccept || intent.kind == IntentKind::kSubmitText;
+  // A dead end (a refused fit): Enter saves and leaves, with the problem on the last screen. It
+  // did nothing before, and a person (or a script) answering Enter there went round forever.
+  if (accept && dead_end_) return session_.sequence.SaveAndLeave();
+  Answer(intent, accept);
 }
 
 void ResultStep::SetHeader(WizardView& v) const {
@@ -42,9 +47,9 @@ void ResultStep::AddText(std::vector<std::string>& lines) const {
 
 void ResultStep::SetView(WizardView& v) const {
   v.screen = ResultScreen();
-  if (!session_.screen.problem.empty()) {
-    v.prompt = "The session cannot go on from here as it is.";
-    v.keys = WithNavigation({{"r", "retry"}});
+  if (dead_end_) {
+    v.prompt = "The session cannot go on from here as it is: Enter saves and quits (it resumes here).";
+    v.keys = WithNavigation({{"Enter", "save and quit"}, {"r", "retry"}});
     return;
   }
   SetAnswerView(v);

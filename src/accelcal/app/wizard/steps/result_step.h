@@ -1,7 +1,7 @@
 // What the steps that compute rather than capture (fit, diagnosis, report, analysis) share: each
 // runs when it is entered (calibration_steps.h: the one pipeline over the session), shows what it
 // has to say (the statistics behind it on d), and goes on with Enter; r runs it again. A step
-// that cannot go on says so and offers r.
+// that cannot go on says so and offers r; Enter there saves and quits (never a dead loop).
 #pragma once
 
 #include <string>
@@ -47,6 +47,7 @@ class ResultStep : public StepController {
   std::vector<std::string> lines_;
   std::vector<std::string> details_;  // the statistics behind lines_ (d shows them)
   bool show_details_ = false;
+  bool dead_end_ = false;  // the outcome is a problem: the step cannot go on (Enter saves and quits)
 };
 
 // The handling allowance of a step that shows a result, s.

@@ -25,12 +25,14 @@ class StaticStep final : public AcquiringStep {
     session_.sequence.ContinueFromFirstOpenStep();
   }
 
-  // Before the capture starts: as long as the session's captures say the sensor needs to settle.
+  // The plan's length, ended by its stop rule (bench_plan.h); before the capture starts, as long
+  // as the session's captures say the sensor needs to settle.
   CaptureRequest MakeRequest() const override {
-    CaptureRequest r = AcquiringStep::MakeRequest();
+    CaptureRequest r = Planned(AcquiringStep::MakeRequest());
     AddSettlingWait(session_, r);
     return r;
   }
+  double CaptureS() const override { return session_.bench_plan.CaptureS(step_); }
 
   void SetPlaceView(WizardView& v) const override {
     v.screen = WizardScreen::kPlacePose;

@@ -79,8 +79,9 @@ class TurntableStep final : public AcquiringStep {
     r.turntable.rpm = rpm_;
     r.turntable.radial_axis = SensorAxisVector(step_.radial_axis);
     r.turntable.up_axis = SensorAxisVector(step_.up_axis);
-    return r;
+    return Planned(r);  // the plan's length in whole revolutions, ended by its stop rule
   }
+  double CaptureS() const override { return session_.bench_plan.CaptureS(step_); }
 
   bool Turning() const override { return true; }
 

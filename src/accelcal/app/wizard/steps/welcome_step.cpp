@@ -57,8 +57,7 @@ void WelcomeStep::ReadEquipment(const WelcomeAnswers& answers) {
 
 // The items as the session holds them (the procedure's, or as the equipment answer edited them);
 // before that answer, the items its default offers (a virtual bench's lab's), which Enter keeps.
-void WelcomeStep::CheckEquipmentWithLab() {
-  if (!session_.options.check_equipment) return;
+std::vector<EquipmentItem> WelcomeStep::OfferedEquipment() const {
   std::vector<EquipmentItem> items = session_.steps.equipment();
   const WelcomeAnswers answers = ReadWelcomeAnswers(session_.model.inputs());
   const std::optional<std::string>* answered = answers.Find(welcome_key::kEquipment);
@@ -66,6 +65,12 @@ void WelcomeStep::CheckEquipmentWithLab() {
     EquipmentAnswer offered = ApplyEquipmentAnswer(session_.options.default_equipment, items);
     if (offered.ok()) items = std::move(offered.items);
   }
+  return items;
+}
+
+void WelcomeStep::CheckEquipmentWithLab() {
+  if (!session_.options.check_equipment) return;
+  const std::vector<EquipmentItem> items = OfferedEquipment();
   WelcomeLabCheck check = session_.options.check_equipment(items);
   equipment_warnings_ = std::move(check.warnings);
   lab_unreachable_ = std::move(check.unreachable);
@@ -168,6 +173,10 @@ void WelcomeStep::SetView(WizardView& v) const {
   const Question question = QuestionAt(question_);
   v.screen = WizardScreen::kWelcome;
   v.prompt = fmt::format("Welcome to {}.", session_.procedure.title);
+  // The bench time the plan takes (bench_plan.h), with the equipment Enter keeps.
+  const std::vector<EquipmentItem> offered = OfferedEquipment();
+  session_.bench_plan.Refresh(session_, &offered);
+  if (const std::string plan = session_.bench_plan.WelcomeText(); !plan.empty()) v.prompt += " " + plan;
   if (!input_note_.empty()) v.prompt += " " + input_note_;
   v.input = InputRequest{question.key, question.label, DefaultAnswer(question), input_error_};
   v.keys = {{"Enter", "accept"}, {"b", "back"}, {"q", "save and quit"}};

@@ -53,6 +53,9 @@ class WelcomeStep final : public StepController {
   void ReadEquipment(const WelcomeAnswers& answers);
   // The session's equipment through the options' check_equipment (the lab's register).
   void CheckEquipmentWithLab();
+  // The items as the session holds them; before the equipment is answered, those its question
+  // offers (a virtual bench's lab's), which Enter keeps.
+  std::vector<EquipmentItem> OfferedEquipment() const;
   void AddLabUnreachable(WizardView& v) const;
   // Records the device's lines with the answers (when there are some).
   void RecordDeviceLines();
