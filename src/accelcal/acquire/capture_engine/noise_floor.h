@@ -20,6 +20,12 @@
 namespace accelcal {
 
 struct NoiseFloor {
+  // The fewest samples a quiet period gives a floor from: a std of n samples is known within
+  // about 1 / sqrt(2 (n - 1)) of itself, 7 % at 100. A floor from a handful (8 samples of a
+  // vehicle still at its 4 Hz default, before the rate asked took effect) came out at half the
+  // sensor's noise, and every still pose after it was then called shaking (1.5 x that floor).
+  static constexpr long kMinQuietSamples = 100;
+
   Eigen::Vector3d std_counts = Eigen::Vector3d::Constant(kNaN);  // per axis, counts
   std::string source;  // where it came from, for reports ("quiet period of 2.0 s", "given", ...)
 

@@ -55,7 +55,9 @@ void StepAcquisition::Stop() {
 
 double StepAcquisition::quiet_progress() const {
   if (!quiet_ || quiet_->n < 2) return 0.0;
-  return std::min(1.0, (quiet_->t_last_s - quiet_->t_first_s) / quiet_period_s_);
+  const double by_time = (quiet_->t_last_s - quiet_->t_first_s) / quiet_period_s_;
+  const double by_count = static_cast<double>(quiet_->n) / static_cast<double>(NoiseFloor::kMinQuietSamples);
+  return std::min({1.0, by_time, by_count});
 }
 
 Capture StepAcquisition::TakeCapture() {
@@ -111,14 +113,20 @@ AcquisitionEvent StepAcquisition::StopSilentRecord(double silent_s) {
   return AcquisitionEvent::kRecordSilent;
 }
 
+// The quiet period lasts quiet_period_s of the samples' clock and at least
+// NoiseFloor::kMinQuietSamples samples: a slow stream (a vehicle before its rate request took,
+// a link losing most frames) rests longer rather than giving a floor from a handful.
+bool StepAcquisition::QuietDone() const {
+  return quiet_->n >= NoiseFloor::kMinQuietSamples && quiet_->t_last_s - quiet_->t_first_s >= quiet_period_s_;
+}
+
 AcquisitionEvent StepAcquisition::FeedQuiet(const std::vector<Sample>& chunk) {
   for (const Sample& s : chunk) {
     quiet_->Add(s);
     quiet_samples_.push_back(s);
-    if (quiet_->n >= 3 && quiet_->t_last_s - quiet_->t_first_s >= quiet_period_s_) break;
+    if (QuietDone()) break;
   }
-  if (quiet_->n < 3 || !(quiet_->t_last_s - quiet_->t_first_s >= quiet_period_s_))
-    return AcquisitionEvent::kNone;
+  if (!QuietDone()) return AcquisitionEvent::kNone;
   quiet_.reset();
   return AcquisitionEvent::kNoiseFloorMeasured;
 }

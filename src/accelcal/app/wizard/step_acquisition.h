@@ -34,7 +34,8 @@ double SteadyNowS();
 
 class StepAcquisition {
  public:
-  // `quiet_period_s`: how long the sensor rests for the noise floor, s (> 0).
+  // `quiet_period_s`: how long the sensor rests for the noise floor, s (> 0) of the samples'
+  // clock, and at least NoiseFloor::kMinQuietSamples samples (a slow stream rests longer).
   explicit StepAcquisition(double quiet_period_s);
 
   // Starts a quiet period for the noise floor (its samples: quiet_samples(), judged by the
@@ -95,6 +96,7 @@ class StepAcquisition {
 
  private:
   AcquisitionEvent FeedQuiet(const std::vector<Sample>& chunk);
+  bool QuietDone() const;
   AcquisitionEvent FeedCapture(const std::vector<Sample>& chunk);
   AcquisitionEvent FeedRecord(const std::vector<Sample>& chunk);
   AcquisitionEvent StopSilentRecord(double silent_s);
