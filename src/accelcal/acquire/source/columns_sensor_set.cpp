@@ -82,7 +82,10 @@ void ColumnsSensorSet::Counted(std::size_t i, std::size_t first, double now_s) {
     lane.tracker.OnSamples(dest.data() + first, static_cast<long>(dest.size() - first), now_s, &lane.result);
 }
 
-void ColumnsSensorSet::OnBytes(std::string_view bytes) {
+// Each lane's lines by `parse` (what it fed, its malformed ones), into that sensor's samples,
+// counted at one wall time.
+void ColumnsSensorSet::ParseLanes(
+    const std::function<void(Lane&, std::vector<Sample>*, LineStream::FeedResult*)>& parse) {
   if (out_ == nullptr) out_ = &scratch_;
   out_->Resize(lanes_.size());
   const double now_s = WallNowS();
@@ -90,10 +93,16 @@ void ColumnsSensorSet::OnBytes(std::string_view bytes) {
     Lane& lane = *lanes_[i];
     const std::size_t first = out_->per_sensor[i].size();
     LineStream::FeedResult fed;
-    lane.lines.Feed(bytes, &out_->per_sensor[i], &fed);
+    parse(lane, &out_->per_sensor[i], &fed);
     lane.tracker.OnMalformed(fed.malformed, fed.last_malformed, &lane.result);
     Counted(i, first, now_s);
   }
+}
+
+void ColumnsSensorSet::OnBytes(std::string_view bytes) {
+  ParseLanes([bytes](Lane& lane, std::vector<Sample>* out, LineStream::FeedResult* fed) {
+    lane.lines.Feed(bytes, out, fed);
+  });
 }
 
 // A link that reopens loses every sensor's unterminated last line; a finished one's still count.
@@ -105,18 +114,11 @@ void ColumnsSensorSet::OnLinkEnd(const std::string& described, bool failed, bool
     }
     return;
   }
-  if (out_ == nullptr) out_ = &scratch_;
-  out_->Resize(lanes_.size());
-  const double now_s = WallNowS();
-  for (std::size_t i = 0; i < lanes_.size(); ++i) {
-    Lane& lane = *lanes_[i];
-    const std::size_t first = out_->per_sensor[i].size();
-    LineStream::FeedResult fed;
-    lane.lines.Finish(&out_->per_sensor[i], &fed);
-    lane.tracker.OnMalformed(fed.malformed, fed.last_malformed, &lane.result);
-    Counted(i, first, now_s);
-    if (failed) lane.tracker.OnOpenFailed(described);
-  }
+  ParseLanes([](Lane& lane, std::vector<Sample>* out, LineStream::FeedResult* fed) {
+    lane.lines.Finish(out, fed);
+  });
+  if (failed)
+    for (auto& lane : lanes_) lane->tracker.OnOpenFailed(described);
 }
 
 }  // namespace accelcal

@@ -11,6 +11,7 @@
 // sensor's.
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -55,6 +56,7 @@ class ColumnsSensorSet final : public SensorSetSource, private LinkEvents {
   void OnLinkEnd(const std::string& described, bool failed, bool reopens) override;
   // Sensor i's samples appended to out_ since `first`, counted in its status.
   void Counted(std::size_t i, std::size_t first, double now_s);
+  void ParseLanes(const std::function<void(Lane&, std::vector<Sample>*, LineStream::FeedResult*)>& parse);
 
   LinkReader reader_;
   Fixture fixture_;
