@@ -95,12 +95,6 @@ int RunWizard(const WizardCommandOptions& options) {
   if (!options.scenario_path.empty()) source_options.scenario = sim::LoadScenario(options.scenario_path);
   // Several sensors at once (cli/wizard_fixture.h): asked for, or the scenario's plate.
   const bool several = WantsFixture(options) || (source_options.scenario && source_options.scenario->fixture);
-  // Several sensors: each capture keeps the procedure's own length (no capture plan). A plan
-  // sizes the lead's captures from its noise toward the target; a board away from the plate's
-  // reference point has a turntable radius only as good as each mounting (o theta,
-  // docs/fixtures.md), an error no capture length averages out and the fit's per-capture noise
-  // does not hold: longer captures only make it stand out (residual RMS over noise: FAIL).
-  if (several) procedure.target.bias_mg = procedure.target.scale_ppm = procedure.target.misalignment_mrad = kNaN;
   std::unique_ptr<SampleSource> source;
   if (!several) source = OpenSource(options.source, source_options);
   // The vehicle's calibration is said at the welcome (and recorded there); a refusal, here.

@@ -90,6 +90,12 @@ struct Capture {
   std::string label;
   double radius_m = kNaN;  // turntable only: distance from the spin axis to the sensor, m
   double rpm = kNaN;       // turntable only: table speed, revolutions per minute
+  // Turntable only: the standard uncertainty of radius_m that is this run's own, independent of
+  // every other run's, m; 0: none (the ruler's reading error, common to every run, is the
+  // budget's). A board away from a fixture plate's reference point has one: the plate is set
+  // down anew for each run, turned by its placement error (base/fixture.h,
+  // SensorRadiusPerTurnM). Not stored with the capture: worked out from the session's fixture.
+  double radius_own_u_m = 0.0;
   // Turntable only, when known: the sensor axis that pointed up (the others lie in the table's
   // plane). Needed only by effects that depend on the mounting (the size effect).
   std::optional<SensorAxis> up_axis;

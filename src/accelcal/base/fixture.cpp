@@ -54,6 +54,8 @@ std::string Fixture::Validate() const {
     }
     if (!s.offset_m.allFinite()) return which + ": its offset is not a finite number";
   }
+  if (!std::isnan(placement_u_rad) && !(std::isfinite(placement_u_rad) && placement_u_rad >= 0.0))
+    return "its placement uncertainty must be a finite angle >= 0";
   return {};
 }
 
@@ -88,6 +90,26 @@ double SensorRadiusM(const FixtureSensor& sensor, double plate_radius_m, SensorA
   const Eigen::Vector2d horizontal(plate_radius_m + radial.dot(sensor.offset_m),
                                    tangential.dot(sensor.offset_m));
   return horizontal.norm();
+}
+
+double SensorRadiusPerTurnM(const FixtureSensor& sensor, double plate_radius_m,
+                            SensorAxis plate_radial, SensorAxis plate_up) {
+  // In the table's frame: the radial x, the tangential y, the up z (as SensorRadiusM).
+  const Eigen::Vector3d radial = SensorAxisVector(plate_radial);
+  const Eigen::Vector3d up = SensorAxisVector(plate_up);
+  const Eigen::Vector3d tangential = up.cross(radial);
+  const Eigen::Vector3d offset_table(radial.dot(sensor.offset_m), tangential.dot(sensor.offset_m),
+                                     up.dot(sensor.offset_m));
+  const Eigen::Vector3d position(plate_radius_m + offset_table.x(), offset_table.y(), 0.0);
+  const double radius_m = position.norm();
+  // On the spin axis the radius has no first-order change (any direction is outward): its
+  // change is |dtheta x o|'s horizontal part, at most |o| per radian.
+  if (!(radius_m > 1e-9)) return offset_table.norm();
+  return offset_table.cross(position / radius_m).norm();
+}
+
+double Fixture::PlacementURad() const {
+  return std::isfinite(placement_u_rad) ? placement_u_rad : kUnstatedPlacementURad;
 }
 
 Fixture SingleSensorFixture(const std::string& serial) {

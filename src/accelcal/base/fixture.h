@@ -34,6 +34,15 @@ struct FixtureSensor {
 struct Fixture {
   std::string name;  // what the lab calls the plate; may be empty
   std::vector<FixtureSensor> sensors;
+  // How square the plate is set down on the turntable at each mounting: the standard
+  // uncertainty (1-sigma) of each component of the small rotation about its reference point that
+  // it is set down with, rad (a clamped jig ~0.1 deg, a plate placed by hand ~0.5 deg). NaN: not
+  // stated (PlacementURad then takes a plate placed by hand). It moves every board off the
+  // reference point, and so its turntable radius (SensorRadiusPerTurnM).
+  double placement_u_rad = kNaN;
+
+  // placement_u_rad, or kUnstatedPlacementURad when it is not stated.
+  double PlacementURad() const;
 
   // Empty when usable; otherwise the first problem found (no sensor, an empty or repeated
   // serial, a rotation that is not a proper signed permutation, an offset not finite).
@@ -55,6 +64,20 @@ Eigen::Vector3d SensorDirection(const FixtureSensor& sensor, const Eigen::Vector
 // turned into the table. An offset along the spin axis changes nothing.
 double SensorRadiusM(const FixtureSensor& sensor, double plate_radius_m, SensorAxis plate_radial,
                      SensorAxis plate_up);
+
+// The plate's placement uncertainty taken when the fixture does not state it: a plate set down
+// by hand, 0.5 deg per rotation component (the virtual bench's hand-held placement).
+inline constexpr double kUnstatedPlacementURad = 0.5 * M_PI / 180.0;
+
+// How much the sensor's turntable radius (SensorRadiusM, same arguments) moves per radian of
+// the plate's placement error, m/rad: a small rotation dtheta of the plate about its reference
+// point moves the sensing point by dtheta x o (o the offset, on the table), and its radius by
+// n . (dtheta x o) = dtheta . (o x n), n the horizontal unit vector from the spin axis to it.
+// With each component of dtheta of standard uncertainty u, the radius's is u |o x n|: this
+// returns |o x n|. 0 for a sensor at the reference point. An offset along the spin axis counts
+// here (the plate tilted moves it sideways) though it does not change the radius itself.
+double SensorRadiusPerTurnM(const FixtureSensor& sensor, double plate_radius_m,
+                            SensorAxis plate_radial, SensorAxis plate_up);
 
 // The fixture of a one-sensor session: that sensor, square to the plate, at its reference point.
 Fixture SingleSensorFixture(const std::string& serial);

@@ -1,5 +1,6 @@
 #include "accelcal/calibration/uncertainty_budget.h"
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <limits>
@@ -120,6 +121,34 @@ std::vector<ReferenceInput> Inputs(const ReferenceUncertainties& u, double g, bo
   return in;
 }
 
+// The runs' own radius uncertainties (FitCapture::radius_own_u_m), each run's its own input:
+// the variance each leaves in every parameter, summed (independent runs), and their RMS, m.
+// `variance` is empty when no run has one.
+struct OwnRadiusPart {
+  Eigen::VectorXd variance;
+  double rms_u_m = 0.0;
+};
+
+OwnRadiusPart OwnRadiusVariance(const ResidualModel& model, const std::vector<FitCapture>& captures,
+                                const FitSummary& fit, double gravity_mps2,
+                                const LinearResponse& response) {
+  OwnRadiusPart part;
+  double sum_u2 = 0.0;
+  int runs = 0;
+  for (size_t i = 0; i < captures.size(); ++i) {
+    const double sigma_mps2 = OwnRadiusSigma(model, captures[i], fit.parameters, gravity_mps2);
+    if (!(sigma_mps2 > 0.0)) continue;
+    if (part.variance.size() == 0) part.variance = Eigen::VectorXd::Zero(fit.parameters.size());
+    Eigen::VectorXd dr = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(captures.size()));
+    dr(static_cast<Eigen::Index>(i)) = sigma_mps2;
+    part.variance += response.Solve(dr).cwiseAbs2();
+    sum_u2 += captures[i].radius_own_u_m * captures[i].radius_own_u_m;
+    ++runs;
+  }
+  if (runs > 0) part.rms_u_m = std::sqrt(sum_u2 / runs);
+  return part;
+}
+
 double WelchSatterthwaite(const std::vector<BudgetContribution>& parts, double combined) {
   double denominator = 0.0;
   for (const BudgetContribution& b : parts)
@@ -173,6 +202,13 @@ UncertaintyBudget MakeUncertaintyBudget(const ResidualModel& model,
     if (!Stated(in.u)) budget.not_stated.push_back(in.name);
   }
 
+  // The fit weighed each run by its own radius uncertainty as well as by its noise, so its
+  // covariance (J^T W J)^-1 holds both: the noise's part (type A) and the radii's, which is
+  // exactly what propagating each run's radius error as an input gives (GUM 5.1, each run
+  // independent). Listed apart; the type A keeps the fit's scale for excess scatter. A fit
+  // whose uncertainty comes from the captures' scatter (fit.scatter) has the radii in it.
+  const OwnRadiusPart own_radius =
+      fit.scatter ? OwnRadiusPart{} : OwnRadiusVariance(model, captures, fit, gravity_mps2, response);
   const double dof_a = fit.uncertainty_scale > 1.0 && fit.dof > 0 ? fit.dof : kInfinity;
   for (int j = 0; j < kNumBaseParameters && j < fit.parameters.size(); ++j) {
     if (fit.IsHeld(j)) continue;
@@ -181,11 +217,22 @@ UncertaintyBudget MakeUncertaintyBudget(const ResidualModel& model,
     pb.name = std::string(ParameterName(j));
     pb.unit = std::string(ParameterUnit(j));
     pb.value = fit.parameters(j);
-    const double u_a = std::sqrt(fit.covariance(j, j));
+    const double own_radius_var = own_radius.variance.size() > 0 ? own_radius.variance(j) : 0.0;
+    const double scale2 = fit.uncertainty_scale * fit.uncertainty_scale;
+    const double u_a = std::sqrt(std::max(0.0, fit.covariance(j, j) - scale2 * own_radius_var));
     pb.contributions.push_back({"fit (type A)", 'A', u_a, pb.unit, 1.0, u_a, dof_a,
                                 dof_a == kInfinity ? "the captures' own noise"
                                                    : "scaled by the residuals' scatter"});
     double u2 = u_a * u_a;
+    if (own_radius.variance.size() > 0) {
+      const double part = std::sqrt(own_radius_var);
+      pb.contributions.push_back(
+          {kOwnRadiusQuantity, 'B', own_radius.rms_u_m, "m",
+           own_radius.rms_u_m > 0.0 ? part / own_radius.rms_u_m : 0.0, part, kInfinity,
+           "each run's own (a board off the plate's reference: the plate set down anew); u the "
+           "runs' RMS, c their root sum of squares"});
+      u2 += part * part;
+    }
     for (size_t q = 0; q < inputs.size(); ++q) {
       const ReferenceInput& in = inputs[q];
       BudgetContribution b{in.name, 'B', in.u, in.unit, sensitivity[q](j), 0.0, kInfinity, in.note};

@@ -22,6 +22,10 @@
 //    run on a table tilted by t is sqrt((g cos t)^2 + (w^2 r)^2) (gravity's in-plane part
 //    averages out over whole turns); with a zero first derivative the GUM's higher-order term
 //    (5.1.2, note) gives u = |d2p/dt2| u(t)^2 / sqrt(2);
+//  - a run's own radius (a fixture's board off the plate's reference point, its radius moved by
+//    the plate's placement at each run: FitCapture::radius_own_u_m): one input per run,
+//    independent; the fit weighed each run by it too, so its covariance holds it: the type A is
+//    that covariance less this part, which is listed as "run's own radius";
 //  - prism squareness: none: the magnitude method never uses the direction of a pose (a face
 //    that is not square changes which way "up" is, not |f|), so the sensitivity is 0, listed.
 // Degrees of freedom: type B inputs are taken as known to their stated uncertainty (infinite);
@@ -55,6 +59,9 @@ struct ReferenceUncertainties {
 
   std::string Validate() const;  // empty when every stated value is finite and >= 0
 };
+
+// The quantity of the budget's line for the runs' own radii.
+inline constexpr const char* kOwnRadiusQuantity = "run's own radius";
 
 // One line of a parameter's budget.
 struct BudgetContribution {

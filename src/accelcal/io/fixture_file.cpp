@@ -1,6 +1,7 @@
 // ParseFixture / LoadFixture: TOML -> Fixture. Every table refuses keys it does not know.
 #include "accelcal/io/fixture_file.h"
 
+#include <cmath>
 #include <set>
 
 #include <fmt/core.h>
@@ -28,6 +29,7 @@ Fixture ParseFixture(std::string_view toml_text, const std::string& source_name)
   Fixture f;
   TomlTableReader root(doc, "", source_name);
   f.name = root.String("name", std::string());
+  f.placement_u_rad = root.Number("placement_u_deg", kNaN, detail::NumberRange::kNonNegative) * M_PI / 180.0;
   const toml::array* sensors = root.ArrayOfTables("sensor");
   if (sensors == nullptr || sensors->empty()) {
     throw InputError(source_name, 0, 0, "the fixture has no [[sensor]]");

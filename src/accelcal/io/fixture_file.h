@@ -3,6 +3,8 @@
 // a vehicle's IMU instances). tests/data/fixture/plate_8.toml is an example:
 //
 //   name = "plate 8"            # optional
+//   placement_u_deg = 0.1       # optional: how square the plate is set on the turntable, 1-sigma
+//                               # per rotation component (a jig ~0.1; absent: by hand, 0.5)
 //   [[sensor]]
 //   serial = "A0001"            # required, unique
 //   x = "+y"                    # where the sensor's +x points on the plate (default "+x")

@@ -250,9 +250,9 @@ std::string Residuals(const ReportModel& m) {
   out += fmt::format("<tr><td>RMS of the residuals</td><td class=\"n\">{} m/s&sup2;</td>"
                      "<td>Largest |residual|</td><td class=\"n\">{} m/s&sup2;</td></tr>\n",
                      Num(m.residual_rms_mps2, "{:.6f}"), Num(m.residual_max_abs_mps2, "{:.6f}"));
-  out += fmt::format("<tr><td>RMS of the captures&rsquo; own noise</td><td class=\"n\">{} m/s&sup2;</td>"
+  out += fmt::format("<tr><td>RMS of the captures&rsquo; {}</td><td class=\"n\">{} m/s&sup2;</td>"
                      "<td>&chi;&sup2;/dof (dof)</td><td class=\"n\">{} ({})</td></tr>\n",
-                     Num(m.noise_rms_mps2, "{:.6f}"), Num(m.chi2_per_dof, "{:.3f}"), m.dof);
+                     m.sigma_has_own_radius ? "noise and own radii" : "own noise", Num(m.noise_rms_mps2, "{:.6f}"), Num(m.chi2_per_dof, "{:.3f}"), m.dof);
   out += fmt::format("<tr><td>Captures used / left out</td><td class=\"n\">{} / {}</td>"
                      "<td>Condition number</td><td class=\"n\">{}</td></tr>\n",
                      m.captures_used, m.captures_left_out, Num(m.condition_number, "{:.4g}"));
@@ -274,8 +274,10 @@ std::string Diagnosis(const ReportModel& m) {
   if (!m.diagnosis_conclusion.empty()) out += "<p>" + E(m.diagnosis_conclusion) + "</p>\n";
   if (m.effects.empty())
     return out + fmt::format("<p>No effect adopted: the calibration is the nine-parameter base model "
-                             "(residual RMS {} m/s&sup2;; the captures&rsquo; noise explains {} m/s&sup2;).</p></section>\n",
-                             Num(m.residual_rms_mps2, "{:.6f}"), Num(m.noise_rms_mps2, "{:.6f}"));
+                             "(residual RMS {} m/s&sup2;; the captures&rsquo; {} {} m/s&sup2;).</p></section>\n",
+                             Num(m.residual_rms_mps2, "{:.6f}"),
+                             m.sigma_has_own_radius ? "noise and own radii explain" : "noise explains",
+                             Num(m.noise_rms_mps2, "{:.6f}"));
   out += "<table><tr><th>Adopted effect</th><th class=\"n\">RMS before</th><th class=\"n\">RMS after</th>"
          "<th class=\"n\">&chi;&sup2;/dof before</th><th class=\"n\">after</th><th>Corrects readings</th></tr>\n";
   for (const ReportEffect& e : m.effects)

@@ -187,6 +187,10 @@ ReportModel BuildReportModel(const ReportInputs& in) {
   }
   if (m.captures_used == 0) m.captures_used = static_cast<int>(sigmas.size());
   m.noise_rms_mps2 = Rms(sigmas);
+  if (cal.budget)
+    for (const ParameterBudget& p : cal.budget->parameters)
+      for (const BudgetContribution& b : p.contributions)
+        m.sigma_has_own_radius = m.sigma_has_own_radius || b.quantity == kOwnRadiusQuantity;
   for (const ReportCapture& r : m.captures) {
     if (std::isfinite(r.temp_min_c)) m.temp_min_c = std::isfinite(m.temp_min_c) ? std::min(m.temp_min_c, r.temp_min_c) : r.temp_min_c;
     if (std::isfinite(r.temp_max_c)) m.temp_max_c = std::isfinite(m.temp_max_c) ? std::max(m.temp_max_c, r.temp_max_c) : r.temp_max_c;

@@ -167,6 +167,10 @@ struct ReportModel {
   double residual_rms_mps2 = kNaN;
   double residual_max_abs_mps2 = kNaN;
   double noise_rms_mps2 = kNaN;      // RMS of the used captures' sigma: what noise explains
+  // Some runs' sigma holds their own radius too (a fixture's board off the plate's reference:
+  // its budget has the "run's own radius" line), so noise_rms_mps2 is what noise and those
+  // radii explain; the reports say so.
+  bool sigma_has_own_radius = false;
   std::vector<ReportCapture> captures;
   int captures_left_out = 0;
   std::vector<ResidualStage> stages; // base first; only the final one from a file alone

@@ -130,7 +130,9 @@ std::string Residuals(const ReportModel& m) {
   std::string out;
   out += fmt::format("  {:<36}{} m/s^2\n", "RMS of the residuals:", Num(m.residual_rms_mps2, "{:.6f}"));
   out += fmt::format("  {:<36}{} m/s^2\n", "Largest |residual|:", Num(m.residual_max_abs_mps2, "{:.6f}"));
-  out += fmt::format("  {:<36}{} m/s^2\n", "RMS of the captures' own noise:", Num(m.noise_rms_mps2, "{:.6f}"));
+  out += fmt::format("  {:<36}{} m/s^2\n",
+                     m.sigma_has_own_radius ? "RMS of their noise and own radii:" : "RMS of the captures' own noise:",
+                     Num(m.noise_rms_mps2, "{:.6f}"));
   out += fmt::format("  {:<36}{}\n", "chi2/dof:", Num(m.chi2_per_dof, "{:.3f}"));
   out += fmt::format("  {:<36}{}\n", "Degrees of freedom:", m.dof);
   out += fmt::format("  {:<36}{}\n", "Condition number:", Num(m.condition_number, "{:.4g}"));
@@ -161,7 +163,9 @@ std::string Diagnosis(const ReportModel& m) {
   if (m.effects.empty()) {
     std::string before = m.stages.empty() ? "-" : Num(m.stages.front().rms_mps2, "{:.6f}");
     return "  No effect adopted: the calibration is the nine-parameter base model.\n" +
-           fmt::format("  Residual RMS {} m/s^2 (noise explains {} m/s^2).\n", before, Num(m.noise_rms_mps2, "{:.6f}")) +
+           fmt::format("  Residual RMS {} m/s^2 ({} explain{} {} m/s^2).\n", before,
+                       m.sigma_has_own_radius ? "noise and the runs' own radii" : "noise",
+                       m.sigma_has_own_radius ? "" : "s", Num(m.noise_rms_mps2, "{:.6f}")) +
            conclusion;
   }
   std::string out = conclusion + fmt::format("  Before (base model): RMS {} m/s^2.  After: RMS {} m/s^2.\n",

@@ -26,6 +26,9 @@ namespace accelcal {
 // sensor was left out of a pose.
 inline constexpr const char* kSensorSetStep = "fixture";
 inline constexpr const char* kSensorSetLeadKey = "lead";
+// The plate's placement uncertainty as the fixture states it (Fixture::placement_u_rad), deg;
+// kept with the sensors (the store writes and reads it with them), absent when not stated.
+inline constexpr const char* kSensorSetPlacementKey = "placement_u_deg";
 
 // Where a record step's samples of a sensor other than the lead are kept: "noise" of "B03" is
 // the record "noise@B03" (the lead's is "noise", what the wizard reads back on a resume).

@@ -3,6 +3,9 @@
 #include "accelcal/base/fixture.h"
 
 #include <cmath>
+#include <random>
+
+#include <Eigen/Geometry>
 
 #include <gtest/gtest.h>
 
@@ -93,6 +96,50 @@ TEST(Fixture, ValidateNamesTheSensor) {
   EXPECT_TRUE(Contains(f.Validate(), "sensor 2: its offset")) << f.Validate();
   f.sensors[1].offset_m.x() = 0.01;
   EXPECT_EQ(f.Validate(), "");
+  f.placement_u_rad = -0.001;
+  EXPECT_TRUE(Contains(f.Validate(), "placement uncertainty")) << f.Validate();
+  f.placement_u_rad = std::nan("");  // not stated: a plate placed by hand
+  EXPECT_EQ(f.Validate(), "");
+  EXPECT_NEAR(f.PlacementURad(), 0.5 * M_PI / 180.0, 1e-15);
+}
+
+// The spread of a board's turntable radius over many placements of the plate, each a small
+// random rotation (each component N(0, u)) about its reference point, worked out from the board's
+// position on the table directly; SensorRadiusPerTurnM times u must give it.
+double SimulatedRadiusStd(const Eigen::Vector3d& offset_table_m, double plate_radius_m, double u_rad) {
+  std::mt19937_64 rng(17);
+  std::normal_distribution<double> angle(0.0, u_rad);
+  double sum = 0.0, sum2 = 0.0;
+  constexpr int kDraws = 40000;
+  for (int i = 0; i < kDraws; ++i) {
+    const Eigen::Vector3d v(angle(rng), angle(rng), angle(rng));
+    const Eigen::Vector3d moved = Eigen::AngleAxisd(v.norm(), v.normalized()) * offset_table_m;
+    const double r = std::hypot(plate_radius_m + moved.x(), moved.y());
+    sum += r;
+    sum2 += r * r;
+  }
+  const double mean = sum / kDraws;
+  return std::sqrt(sum2 / kDraws - mean * mean);
+}
+
+TEST(Fixture, RadiusPerTurnIsTheSpreadOfThePlatesPlacements) {
+  const double u_rad = 0.1 * M_PI / 180.0;
+  // Radial +x, up +z: the plate's axes are the table's.
+  const FixtureSensor flat = Turned(SensorAxis::kPlusX, SensorAxis::kPlusY, {0.05, 0.08, 0.03});
+  EXPECT_NEAR(u_rad * SensorRadiusPerTurnM(flat, 0.10, SensorAxis::kPlusX, SensorAxis::kPlusZ),
+              SimulatedRadiusStd({0.05, 0.08, 0.03}, 0.10, u_rad), 0.03 * SimulatedRadiusStd({0.05, 0.08, 0.03}, 0.10, u_rad));
+  // The plate on its side: its +z outward, its +x up. On the table: radial = plate z,
+  // tangential = up x radial = x cross z = -y, up = plate x.
+  const Eigen::Vector3d on_table(0.03, -0.08, 0.05);
+  EXPECT_NEAR(u_rad * SensorRadiusPerTurnM(flat, 0.15, SensorAxis::kPlusZ, SensorAxis::kPlusX),
+              SimulatedRadiusStd(on_table, 0.15, u_rad), 0.03 * SimulatedRadiusStd(on_table, 0.15, u_rad));
+  // A board on the radial line through the reference, level with it: a turn moves it along the
+  // circle, its radius only at second order.
+  const FixtureSensor radial = Turned(SensorAxis::kPlusX, SensorAxis::kPlusY, {0.06, 0.0, 0.0});
+  EXPECT_NEAR(SensorRadiusPerTurnM(radial, 0.10, SensorAxis::kPlusX, SensorAxis::kPlusZ), 0.0, 1e-12);
+  // At the reference point: nothing.
+  EXPECT_EQ(SensorRadiusPerTurnM(Turned(SensorAxis::kPlusX, SensorAxis::kPlusY), 0.10,
+                                 SensorAxis::kPlusX, SensorAxis::kPlusZ), 0.0);
 }
 
 }  // namespace

@@ -68,6 +68,16 @@ TEST(FixtureFile, RefusesWhatIsWrongWhereItIs) {
   EXPECT_TRUE(Contains(ParseFails("plate = 1\n[[sensor]]\nserial = \"S\"\n").what(), "plate"));
 }
 
+TEST(FixtureFile, ThePlatesPlacementUncertaintyInDegrees) {
+  const Fixture stated = ParseFixture("placement_u_deg = 0.1\n[[sensor]]\nserial = \"S1\"\n", "f");
+  EXPECT_NEAR(stated.placement_u_rad, 0.1 * M_PI / 180.0, 1e-15);
+  const Fixture unstated = ParseFixture("[[sensor]]\nserial = \"S1\"\n", "f");
+  EXPECT_TRUE(std::isnan(unstated.placement_u_rad));
+  const InputError negative = ParseFails("placement_u_deg = -0.1\n[[sensor]]\nserial = \"S\"\n");
+  EXPECT_EQ(negative.line(), 1);
+  EXPECT_TRUE(Contains(negative.what(), "placement_u_deg")) << negative.what();
+}
+
 TEST(FixtureFile, AMissingFileIsAnError) {
   EXPECT_THROW(LoadFixture("/nonexistent/fixture.toml"), Error);
 }

@@ -4,6 +4,7 @@
 // (their captures sensor 0's, their checksums holding, a damaged row still damaged).
 #include <unistd.h>
 
+#include <cmath>
 #include <filesystem>
 #include <string>
 
@@ -88,6 +89,28 @@ TEST_F(SessionSensorsTest, EachSensorsCapturesAndTheSensorsRoundTrip) {
   EXPECT_EQ(store->Captures()[1].capture.samples[0].raw_counts.x(), 110.0);
   EXPECT_EQ(store->Info().num_captures, 2);  // poses
   EXPECT_EQ(SessionSensors(*store).sensors[2].serial, "B3");
+}
+
+TEST_F(SessionSensorsTest, ThePlatesPlacementUncertaintyIsKeptWithTheSensors) {
+  Fixture stated = ThreeBoards();
+  stated.placement_u_rad = 0.1 * M_PI / 180.0;
+  {
+    auto store = SessionStore::Open(path_, Writer());
+    store->RecordSensors(stated);
+    store->RecordSensors(stated);  // a resume
+    // The same boards with another figure are other sensors: a session's never change.
+    EXPECT_THROW(store->RecordSensors(ThreeBoards()), Error);
+  }
+  auto store = SessionStore::Open(path_, Reader());
+  EXPECT_DOUBLE_EQ(store->Sensors()->placement_u_rad, stated.placement_u_rad);
+  // Not stated: not stated when read back (no figure invented).
+  const std::string other = path_ + ".other.db";
+  {
+    auto unstated = SessionStore::Open(other, Writer());
+    unstated->RecordSensors(ThreeBoards());
+  }
+  EXPECT_TRUE(std::isnan(SessionStore::Open(other, Reader())->Sensors()->placement_u_rad));
+  fs::remove(other);
 }
 
 TEST_F(SessionSensorsTest, AStepOncePerSensorAndAPoseIsAllOrNothing) {

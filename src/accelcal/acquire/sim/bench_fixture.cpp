@@ -37,6 +37,7 @@ SensorModel DrawAround(const SensorModel& base, const BenchFixture& f, std::mt19
 Fixture BenchFixture::Declared() const {
   Fixture f;
   f.name = name;
+  f.placement_u_rad = placement_u_rad;
   for (const FixtureBoard& b : boards) f.sensors.push_back(b.declared);
   return f;
 }

@@ -43,6 +43,10 @@ struct FixtureBoard {
 struct BenchFixture {
   std::string name;  // the plate's, as a fixture file's
   std::vector<FixtureBoard> boards;
+  // The plate's placement uncertainty as a fixture file states it (Fixture::placement_u_rad),
+  // rad; NaN: not stated (the fixture source then states its bench's placement_error_deg: the
+  // lab knows how square its jig sets the plate).
+  double placement_u_rad = kNaN;
   // A truth drawn for a board without its own: [sensor]'s, each bias moved by up to
   // +-bias_spread_counts, each scale by up to +-scale_spread (relative), each misalignment
   // angle by up to +-misalignment_spread_rad (uniform).

@@ -67,6 +67,8 @@ FixtureSimSource::FixtureSimSource(sim::Scenario scenario, const SimOptions& opt
   if (std::string why = scenario.Validate(); !why.empty()) throw Error(why);
   bench_fixture_ = *scenario.fixture;
   declared_ = bench_fixture_.Declared();
+  if (std::isnan(declared_.placement_u_rad))
+    declared_.placement_u_rad = scenario.bench.placement_error_deg * M_PI / 180.0;
   const std::vector<SensorModel> truths =
       sim::FixtureTruths(bench_fixture_, scenario.sensor.model, scenario.bench.seed);
   plate_ = std::make_unique<SimSource>(PlateScenario(scenario), options, dead_after_s, gap_factor);

@@ -41,6 +41,7 @@ Fixture NumberedFixture(std::size_t n) {
 sim::BenchFixture BoardsOf(const Fixture& fixture) {
   sim::BenchFixture bench;
   bench.name = fixture.name;
+  bench.placement_u_rad = fixture.placement_u_rad;
   for (const FixtureSensor& s : fixture.sensors) {
     sim::FixtureBoard b;
     b.declared = s;

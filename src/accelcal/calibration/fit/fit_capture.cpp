@@ -51,6 +51,7 @@ FitCapture MakeFitCapture(const Capture& capture) {
   c.kind = capture.kind;
   c.radius_m = capture.radius_m;
   c.rpm = capture.rpm;
+  c.radius_own_u_m = capture.radius_own_u_m;
   c.up_axis = capture.up_axis;
   c.n_samples = stats.n;
   c.mean_counts = stats.mean_counts;

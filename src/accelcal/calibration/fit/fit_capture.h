@@ -21,6 +21,9 @@ struct FitCapture {
   long n_samples = 0;
   double radius_m = kNaN;  // turntable only, as stated by the operator
   double rpm = kNaN;       // turntable only, as stated by the operator
+  // Turntable only: radius_m's standard uncertainty that is this run's own (Capture's), m. The
+  // fit weighs the run by it too (ResidualSigmas), the budget lists what it leaves uncertain.
+  double radius_own_u_m = 0.0;
   std::optional<SensorAxis> up_axis;  // turntable only, when known: the axis that pointed up
   double mean_t_s = kNaN;
   double mean_temp_c = kNaN;

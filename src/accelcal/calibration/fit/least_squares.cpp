@@ -254,9 +254,24 @@ Eigen::VectorXd ResidualSigmas(const ResidualModel& model, const std::vector<Fit
   Eigen::Vector3d g;
   for (size_t i = 0; i < captures.size(); ++i) {
     model.Residual(p, captures[i], gravity_mps2, nullptr, &g);
-    sigmas(i) = std::sqrt(g.dot(captures[i].mean_cov_counts2 * g));
+    const double own_radius_mps2 = OwnRadiusSigma(model, captures[i], p, gravity_mps2);
+    sigmas(i) = std::sqrt(g.dot(captures[i].mean_cov_counts2 * g) + own_radius_mps2 * own_radius_mps2);
   }
   return sigmas;
+}
+
+double OwnRadiusSigma(const ResidualModel& model, const FitCapture& capture,
+                      const Eigen::VectorXd& p, double gravity_mps2) {
+  if (capture.kind != CaptureKind::kTurntable || !(capture.radius_own_u_m > 0.0)) return 0.0;
+  // Through the model's own residual (an adopted radius or speed effect changes how the radius
+  // enters); a step far below any radius, far above the residual's rounding.
+  constexpr double kStepM = 1e-5;
+  FitCapture moved = capture;
+  moved.radius_m = capture.radius_m + kStepM;
+  const double plus = model.Residual(p, moved, gravity_mps2, nullptr, nullptr);
+  moved.radius_m = capture.radius_m - kStepM;
+  const double minus = model.Residual(p, moved, gravity_mps2, nullptr, nullptr);
+  return std::fabs((plus - minus) / (2.0 * kStepM)) * capture.radius_own_u_m;
 }
 
 FitSummary SolveWeightedLeastSquares(const ResidualModel& model,

@@ -3,7 +3,10 @@
 // convergence and yields the covariance.
 //
 // Weights: sigma_i is the 1-sigma of capture i's residual from the uncertainty of its mean
-// (sigma_i^2 = g^T Cov(mean) g, g = dr/d(mean raw)). It is evaluated at the initial guess for
+// (sigma_i^2 = g^T Cov(mean) g, g = dr/d(mean raw)), plus, for a turntable run whose radius has
+// an uncertainty of its own (a fixture's board off the plate's reference point), that radius's
+// part (OwnRadiusSigma): an error that differs run to run scatters the residuals as noise does.
+// It is evaluated at the initial guess for
 // the NLopt stage and at NLopt's answer for the polish, then held fixed (it depends on the
 // parameters only through the scales, weakly).
 //
@@ -75,8 +78,14 @@ FitSummary SolveWeightedLeastSquares(const ResidualModel& model,
 bool IsGaussNewtonConverged(double step_size, double cost, double new_cost, double predicted,
                             const LeastSquaresOptions& options);
 
-// sigma_i (m/s^2) of every capture's residual at p.
+// sigma_i (m/s^2) of every capture's residual at p: its mean's uncertainty and, for a turntable
+// run with one, its own radius uncertainty (OwnRadiusSigma), in quadrature.
 Eigen::VectorXd ResidualSigmas(const ResidualModel& model, const std::vector<FitCapture>& captures,
                                const Eigen::VectorXd& p, double gravity_mps2);
+
+// The part of a capture's residual sigma (m/s^2) that its own radius uncertainty gives
+// (FitCapture::radius_own_u_m times |dr/d radius|); 0 for a static capture or a run without one.
+double OwnRadiusSigma(const ResidualModel& model, const FitCapture& capture,
+                      const Eigen::VectorXd& p, double gravity_mps2);
 
 }  // namespace accelcal

@@ -1,11 +1,13 @@
 #include "accelcal/session/detail/sensor_rows.h"
 
+#include <cmath>
 #include <sstream>
 
 #include <fmt/core.h>
 
 #include "accelcal/base/error.h"
 #include "accelcal/session/detail/session_schema.h"
+#include "accelcal/session/sensor_journal_view.h"
 
 namespace accelcal::detail {
 namespace {
@@ -37,7 +39,8 @@ bool SameSensors(const Fixture& a, const Fixture& b) {
         x.offset_m != y.offset_m || x.source != y.source)
       return false;
   }
-  return true;
+  return a.placement_u_rad == b.placement_u_rad ||
+         (std::isnan(a.placement_u_rad) && std::isnan(b.placement_u_rad));
 }
 
 }  // namespace
@@ -63,6 +66,13 @@ void InsertSensorRows(SqliteDb& db, const Fixture& sensors, const std::string& r
         .Bind(3, Numbers(s.sensor_to_plate)).Bind(4, Numbers(s.offset_m.transpose()))
         .Bind(5, s.source).Bind(6, sensors.name).Bind(7, recorded_utc).Run();
   }
+  // The plate's placement uncertainty is one figure of the whole set: an input of its pseudo
+  // step, so that version 7's sensors table holds as it is.
+  if (std::isfinite(sensors.placement_u_rad))
+    SqliteStatement(db, "INSERT OR REPLACE INTO inputs (step_id, key, value, recorded_utc) "
+                        "VALUES (?, ?, ?, ?)")
+        .Bind(1, kSensorSetStep).Bind(2, kSensorSetPlacementKey)
+        .Bind(3, fmt::format("{}", sensors.placement_u_rad * 180.0 / M_PI)).Bind(4, recorded_utc).Run();
 }
 
 std::optional<Fixture> ReadSensorRows(SqliteDb& db) {
@@ -86,6 +96,16 @@ std::optional<Fixture> ReadSensorRows(SqliteDb& db) {
     fixture.sensors.push_back(std::move(s));
   }
   if (fixture.sensors.empty()) return std::nullopt;
+  SqliteStatement placement(db, "SELECT value FROM inputs WHERE step_id = ? AND key = ?");
+  placement.Bind(1, kSensorSetStep).Bind(2, kSensorSetPlacementKey);
+  if (placement.Step()) {
+    double deg = kNaN;
+    std::istringstream in(placement.ColumnText(0));
+    if (!(in >> deg) || !std::isfinite(deg) || deg < 0.0)
+      throw Error(fmt::format("session {} is damaged: its fixture's placement uncertainty '{}' "
+                              "is not an angle", db.path(), placement.ColumnText(0)));
+    fixture.placement_u_rad = deg * M_PI / 180.0;
+  }
   return fixture;
 }
 
