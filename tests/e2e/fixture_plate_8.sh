@@ -60,24 +60,11 @@ run > "$work/out" 2> "$work/err" || { tail -30 "$work/out" >&2; cat "$work/err" 
 said "Resuming session"
 
 # Every sensor but the dead one: its captures kept across the kill, its calibration near its truth.
-truth() {  # SERIAL -> the board's truth as a calibration-shaped JSON (jq reads it)
-  awk -v s="\"$1\"" '
-    $1 == "serial" && $3 == s { on = 1; next }
-    on && /^\[\[fixture.board\]\]/ { exit }
-    on && /^bias_counts/ { sub(/^[^=]*= */, ""); b = $0 }
-    on && /^scale_counts_per_mps2/ { sub(/^[^=]*= */, ""); k = $0 }
-    on && /^misalignment_rad/ { sub(/^[^=]*= */, ""); m = $0 }
-    END { gsub(/=/, ":", m); gsub(/yz/, "\"yz\"", m); gsub(/zy/, "\"zy\"", m); gsub(/zx/, "\"zx\"", m);
-          printf "{\"bias_counts\": %s, \"scale_counts_per_mps2\": %s, \"misalignment_rad\": %s}\n", b, k, m }
-  ' "$data_dir/fixture/plate_8_faults.toml"
-}
 for n in 1 2 3 4 6 7 8; do
   serial=$(printf 'B%02d' "$n")
-  truth "$serial" > "$work/truth_$n.json"
+  board_truth "$data_dir/fixture/plate_8_faults.toml" "$serial" > "$work/truth_$n.json"
   sensor_within_truth "$n" "sensor $n ($serial)" 4
-  [ -s "$work/plate.$serial.report.txt" ] || fail "no report of $serial"
-  grep -q "$serial" "$work/plate.$serial.report.txt" || fail "$serial's report does not name it"
-  sed -n 's/.*Certificate No.: *\(ACC-[^ ]*\).*/\1/p' "$work/plate.$serial.report.txt" >> "$work/numbers"
+  sensor_report_checked plate "$serial"
 done
 [ "$(sort -u "$work/numbers" | wc -l)" -eq 7 ] || { cat "$work/numbers" >&2; fail "7 certificates, each its own number"; }
 

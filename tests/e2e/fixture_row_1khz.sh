@@ -28,21 +28,10 @@ set -e
 batch="$work/row.batch.csv"
 [ -s "$batch" ] || fail "no batch summary beside the session"
 
-truth() {  # SERIAL -> the board's truth as a calibration-shaped JSON (jq reads it)
-  awk -v s="\"$1\"" '
-    $1 == "serial" && $3 == s { on = 1; next }
-    on && /^\[\[fixture.board\]\]/ { exit }
-    on && /^bias_counts/ { sub(/^[^=]*= */, ""); b = $0 }
-    on && /^scale_counts_per_mps2/ { sub(/^[^=]*= */, ""); k = $0 }
-    on && /^misalignment_rad/ { sub(/^[^=]*= */, ""); m = $0 }
-    END { gsub(/=/, ":", m); gsub(/yz/, "\"yz\"", m); gsub(/zy/, "\"zy\"", m); gsub(/zx/, "\"zx\"", m);
-          printf "{\"bias_counts\": %s, \"scale_counts_per_mps2\": %s, \"misalignment_rad\": %s}\n", b, k, m }
-  ' "$scenario"
-}
 for n in 1 2 3 4 5 6 7 8; do
   serial=$(printf 'R%02d' "$n")
   grep -q "^$n,\"$serial\",PASS," "$batch" || { cat "$batch" >&2; fail "$serial does not conform"; }
-  truth "$serial" > "$work/truth_$n.json"
+  board_truth "$scenario" "$serial" > "$work/truth_$n.json"
   sensor_within_truth "$n" "$serial" 4
 done
 

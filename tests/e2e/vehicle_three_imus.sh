@@ -93,9 +93,7 @@ for n in 1 2 3; do
   IFS=',' read -r yz zy zx <<< "$m"
   echo "{\"bias_counts\": [$b], \"scale_counts_per_mps2\": [$k], \"misalignment_rad\": {\"yz\": $yz, \"zy\": $zy, \"zx\": $zx}}" > "$work/truth_$n.json"
   sensor_within_truth "$n" "IMU $((n - 1))" 4
-  [ -s "$work/fc.$serial.report.txt" ] || fail "no report of $serial"
-  grep -q "$serial" "$work/fc.$serial.report.txt" || fail "$serial's report does not name it"
-  sed -n 's/.*Certificate No.: *\(ACC-[^ ]*\).*/\1/p' "$work/fc.$serial.report.txt" >> "$work/numbers"
+  sensor_report_checked fc "$serial"
 done
 [ "$(sort -u "$work/numbers" | wc -l)" -eq 3 ] || { cat "$work/numbers" >&2; fail "3 certificates, each its own number"; }
 

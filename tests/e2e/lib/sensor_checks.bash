@@ -6,6 +6,13 @@
 #                                   within K sigma of $work/truth_N.json (a calibration-shaped
 #                                   JSON: bias_counts, scale_counts_per_mps2, misalignment_rad);
 #                                   else prints both and fails, naming LABEL
+#   board_truth SCENARIO SERIAL     the virtual bench's board SERIAL of SCENARIO's [fixture], its
+#                                   stated truth as a calibration-shaped JSON (for
+#                                   sensor_within_truth's $work/truth_N.json)
+#   sensor_report_checked STEM SERIAL  the report the wizard wrote beside the session
+#                                   ($work/STEM.SERIAL.report.txt) is there and names SERIAL;
+#                                   its certificate number is added to $work/numbers (check
+#                                   afterwards that they differ)
 #   [REPORT_ARGS=(...)]             more arguments for `accelcal report` (a --procedure)
 #   kill_at_step PID OUT STEP       waits (up to 2 min) until the wizard PID's output OUT shows
 #                                   step STEP (`[STEP/`), where it waits for an answer it was not
@@ -34,6 +41,25 @@ sensor_within_truth() {  # N LABEL K
     cat "$work/truth_$n.json" >&2
     fail "$label: more than $k sigma from its truth"
   }
+}
+
+board_truth() {  # SCENARIO SERIAL
+  awk -v s="\"$2\"" '
+    $1 == "serial" && $3 == s { on = 1; next }
+    on && /^\[\[fixture.board\]\]/ { exit }
+    on && /^bias_counts/ { sub(/^[^=]*= */, ""); b = $0 }
+    on && /^scale_counts_per_mps2/ { sub(/^[^=]*= */, ""); k = $0 }
+    on && /^misalignment_rad/ { sub(/^[^=]*= */, ""); m = $0 }
+    END { gsub(/=/, ":", m); gsub(/yz/, "\"yz\"", m); gsub(/zy/, "\"zy\"", m); gsub(/zx/, "\"zx\"", m);
+          printf "{\"bias_counts\": %s, \"scale_counts_per_mps2\": %s, \"misalignment_rad\": %s}\n", b, k, m }
+  ' "$1"
+}
+
+sensor_report_checked() {  # STEM SERIAL
+  local report="$work/$1.$2.report.txt"
+  [ -s "$report" ] || fail "no report of $2"
+  grep -q "$2" "$report" || fail "$2's report does not name it"
+  sed -n 's/.*Certificate No.: *\(ACC-[^ ]*\).*/\1/p' "$report" >> "$work/numbers"
 }
 
 kill_at_step() {  # PID OUT STEP
