@@ -92,6 +92,11 @@ said "sensor 3 (B03): taken, still"
 said "sensor 7 (B07): taken, still"
 said "sensor 5 (B05): left out of"
 said "Keep the plate as it is. Enter: leave out sensor 5 (B05)"
+# The dead board is asked about once a run: left out then, it is left out of every later pose
+# without a question while its link stays down, each time said.
+[ "$(grep -c 'Enter: leave out sensor 5 (B05)' "$work/out")" -eq 1 ] || fail "the dead board asked about more than once"
+grep -q "sensor 5 (B05) left out of '[^']*' as before: its link is still down" "$work/out" ||
+  fail "the dead board's later poses are not said"
 [ "$(grep -c '^  sensor [0-9] (B0[0-9]): ' "$work/out")" -ge $((8 * 9)) ] || fail "not a line per board for every turntable run"
 # Each board is a device of its own: its calibration in this session is its history's.
 "$accelcal" history B03 --sessions-dir "$work" --format json > "$work/history.json" ||

@@ -56,7 +56,7 @@ struct Bench {
   }
   // The plate on +x, settled, and the lead's capture of 3 s accepted (the loose board still
   // rocks then; the dead one says nothing).
-  void CapturePose() {
+  void CapturePose(const std::string& step_id = "pose_px") {
     lead.bench()->PlaceStatic(Eigen::Vector3d::UnitX(), 0.0);
     std::vector<Sample> samples;
     const double settled_s = lead.bench()->now_s() + 0.6;
@@ -68,7 +68,7 @@ struct Bench {
     c.id = 1;
     c.label = "x up";
     c.samples = samples;
-    journal.RecordCapture("pose_px", c);
+    journal.RecordCapture(step_id, c);
     driver.Poll(0.0);
   }
 };
@@ -134,6 +134,33 @@ TEST(FixtureDriver, ALooseBoardRetriedAloneADeadOneLeftOutTheOthersKept) {
   b.driver.Handle({IntentKind::kAccept, ""});
   ASSERT_EQ(b.engine.intents.size(), 1u);
   EXPECT_EQ(b.engine.intents[0], IntentKind::kAccept);
+}
+
+TEST(FixtureDriver, ADeadBoardLeftOutOnceIsNotAskedAboutAgainWhileItStaysDead) {
+  Bench b;
+  b.CapturePose();
+  ASSERT_TRUE(b.driver.Asking());
+  b.driver.Handle({IntentKind::kSkip, ""});  // the loose board: left out
+  ASSERT_TRUE(b.driver.Asking());
+  EXPECT_NE(b.driver.View().problem.find("SIM04"), std::string::npos);
+  b.driver.Handle({IntentKind::kAccept, ""});  // the dead one: left out (recommended)
+  ASSERT_FALSE(b.driver.Asking());
+  // The pose again (a redo's step): the loose board, alive, is asked about if it is left out
+  // again (it may have settled by now); the dead one is left out without a question, and the
+  // screen says so.
+  b.CapturePose("pose_px#2");
+  if (b.driver.Asking()) {
+    EXPECT_NE(b.driver.View().problem.find("SIM01"), std::string::npos) << b.driver.View().problem;
+    b.driver.Handle({IntentKind::kSkip, ""});
+  }
+  EXPECT_FALSE(b.driver.Asking()) << b.driver.View().problem;
+  EXPECT_NE(b.driver.View().notice.find("sensor 4 (SIM04) left out of 'x up' as before: its link is still down"),
+            std::string::npos) << b.driver.View().notice;
+  // Its reason is recorded as at the first pose.
+  EXPECT_NE(b.session->Inputs().at(kFixtureStepId).at(SensorLeftOutKey("SIM04", "pose_px")).find("no samples"),
+            std::string::npos);
+  EXPECT_TRUE(b.session->SensorCaptures(3).empty());
+  EXPECT_TRUE(b.engine.intents.empty());
 }
 
 TEST(FixtureDriver, APlateMovedSinceIsNoPlaceForARetry) {
