@@ -5,9 +5,15 @@
 # one MAVLink link (`--source mavlink:... --fixture vehicle_3imu.toml`: sensor i is IMU instance
 # i), the virtual bench behind the vehicle placing the whole board (lib/remote_bench.bash).
 #   - killed (kill -9) while it waits at the sixth pose, resumed: every IMU keeps its captures;
+#   - each IMU with its own stored calibration on the vehicle (INS_ACCOFFS, INS_ACC2OFFS ...),
+#     which the vehicle applies to SCALED_IMU2/3: each read and said at the welcome, and taken
+#     back out of that IMU's samples;
 #   - at the end: 3 verdicts, each IMU's calibration within 4 sigma of its own truth, a report
 #     with its own certificate per IMU, the batch summary beside the session and from `report
-#     --format batch-csv`.
+#     --format batch-csv`;
+#   - IMU 2's temperature calibration on: the undo refused before any session, naming IMU 2; left
+#     in (as-is) with IMU 2 silent: IMU 1's calibration is its truth after the vehicle's
+#     correction, far from its own (the undo is what makes the first run right).
 # Usage: bash vehicle_three_imus.sh ACCELCAL SOURCE_DIR DATA_DIR
 set -euo pipefail
 accelcal=$1
@@ -43,9 +49,22 @@ grep -q '^misalignment_rad = { yz = 0.0042, zy = -0.0031, zx = 0.0057 }' "$work/
 truths=('35,-22,48;1002.5,997.1,1005.3;0.0031,-0.0024,0.0047'
         '-61,17,-30;995.4,1003.8,998.2;-0.0052,0.0013,-0.0021'
         '12,84,-57;1007.9,992.6,1001.1;0.0018,0.0061,-0.0035')
+# Each IMU's own stored calibration on the vehicle (ArduPilot's INS_ACCOFFS m/s^2, INS_ACCSCAL;
+# INS_ACC2*, INS_ACC3*), which it applies to what it sends in SCALED_IMU2/3 (RAW_IMU, IMU 0's, is
+# before it): the wizard takes each back out, so each IMU is held to its sensor's own truth.
+offsets=('0.05,-0.03,0.11' '0.12,-0.08,0.2' '-0.15,0.09,-0.06')
+scales=('1.004,0.997,1.002' '1.003,0.996,1.005' '0.995,1.006,1.001')
+stored=()
+for i in 0 1 2; do
+  prefix=INS_ACC$([ "$i" -eq 0 ] || echo $((i + 1)))
+  IFS=',' read -r ox oy oz <<< "${offsets[$i]}"
+  IFS=',' read -r sx sy sz <<< "${scales[$i]}"
+  stored+=(--param "${prefix}OFFS_X=$ox" --param "${prefix}OFFS_Y=$oy" --param "${prefix}OFFS_Z=$oz"
+           --param "${prefix}SCAL_X=$sx" --param "${prefix}SCAL_Y=$sy" --param "${prefix}SCAL_Z=$sz")
+done
 start_bench 20 node "$source_dir/tests/peers/mavlink_vehicle.cjs" --tcp 0 --msg ardupilot \
   --bench-truth "$bench_truth" --imu-truth "${truths[0]}" --imu-truth "${truths[1]}" \
-  --imu-truth "${truths[2]}" --summary "$work/vehicle.json"
+  --imu-truth "${truths[2]}" "${stored[@]}" --summary "$work/vehicle.json"
 mav="mavlink:tcp:127.0.0.1:$peer_port"
 fixture=$data_dir/fixture/vehicle_3imu.toml
 db=$work/fc.db
@@ -67,6 +86,14 @@ printf '\n%.0s' $(seq 9) >&3
 kill_at_step "$pid" "$work/out.1" 8  # step 8: five poses taken
 exec 3>&-
 grep -q '^\[8/.*-y up' "$work/out.1" || fail "the first run was not at the sixth pose (-y up)"
+# At the welcome, each IMU's own calibration as read from the vehicle, and taken out.
+for i in 0 1 2; do
+  prefix=INS_ACC$([ "$i" -eq 0 ] || echo $((i + 1)))
+  IFS=',' read -r ox oy oz <<< "${offsets[$i]}"
+  flat "$work/out.1" "IMU $i: its own accelerometer calibration ${prefix}OFFS: x $ox, y $oy, z $oz m/s^2" ||
+    { cat "$work/out.1" >&2; fail "IMU $i's stored calibration not said at the welcome"; }
+done
+[ "$(grep -c 'taken out of every sample' "$work/out.1")" -eq 3 ] || fail "not every IMU's calibration taken out"
 for n in 1 2 3; do
   before=$(captures_of "$n")
   [ "$before" -eq 5 ] || fail "the first run, killed at the sixth pose, holds $before captures of IMU $((n - 1)), not 5"
@@ -110,25 +137,57 @@ for n in 1 2 3; do
 done
 stop_bench
 
-# The same vehicle with IMU 2 silent from the start: the session goes on with the other two, and
-# the silent one is named with why, never calibrated.
+# The same vehicle with IMU 2 silent from the start and its temperature calibration on
+# (INS_TCAL3_ENABLE 1, which accelcal cannot undo).
 start_bench 20 node "$source_dir/tests/peers/mavlink_vehicle.cjs" --tcp 0 --msg ardupilot \
   --bench-truth "$bench_truth" --imu-truth "${truths[0]}" --imu-truth "${truths[1]}" \
-  --imu-truth "${truths[2]}" --silent-imu 2
+  --imu-truth "${truths[2]}" "${stored[@]}" --param INS_TCAL3_ENABLE=1 --silent-imu 2
 mav="mavlink:tcp:127.0.0.1:$peer_port"
 db=$work/silent.db
+# Undo asked: IMU 2 would be calibrated relative to what it holds, so no session starts, and
+# the refusal names the IMU, why and what to do.
+set +e
+printf "$welcome" | timeout 60 "$accelcal" wizard --source "$mav" --fixture "$fixture" \
+  --procedure "$work/short.toml" --session "$db" --plain > "$work/out" 2> "$work/err"
+code=$?
+set -e
+[ "$code" -ne 0 ] || fail "a session started with IMU 2's temperature calibration not undoable"
+grep -q "tcp:127.0.0.1:$peer_port, IMU 2: the vehicle's own calibration cannot be taken out of its readings: INS_TCAL3_ENABLE is on" "$work/err" ||
+  { cat "$work/err" >&2; fail "the refusal does not name IMU 2 and why"; }
+grep -q -- "--source mavlink:tcp:127.0.0.1:$peer_port,imu=2 --reset --apply" "$work/err" ||
+  { cat "$work/err" >&2; fail "the refusal does not say how to reset IMU 2"; }
+[ ! -e "$db" ] || fail "the refused session left a file"
+# Left in (--vehicle-calibration as-is): the session goes on with the two IMUs that send, the
+# silent one named with why, never calibrated; IMU 1's calibration then describes the sensor
+# after the vehicle's correction: raw' = SCAL .* (raw - 1000 OFFS), its own truth off by that.
 set +e
 { printf "$welcome"; yes ''; } | timeout 600 "$accelcal" wizard --source "$mav" --fixture "$fixture" \
   --bench-control "127.0.0.1:$bench_port" --procedure "$work/short.toml" --session "$db" --plain \
-  > "$work/out" 2> "$work/err"
+  --vehicle-calibration as-is > "$work/out" 2> "$work/err"
 code=${PIPESTATUS[1]}
 set -e
 stop_bench
 [ "$code" -eq 0 ] || { tail -40 "$work/out" >&2; cat "$work/err" >&2; fail "the wizard (IMU 2 silent) exited $code"; }
+[ "$(grep -c 'left in the readings (as asked)' "$work/out")" -eq 3 ] || fail "as-is not said for every IMU"
+said "INS_TCAL3_ENABLE 1 (a temperature calibration corrects the readings)"
 "$accelcal" report "$db" --procedure "$work/short.toml" --format batch-csv -o "$work/batch.csv" > /dev/null
 grep -q '^3,"FC1-ACC2",NO CALIBRATION,,,,,,,,,,"no capture' "$work/batch.csv" ||
   { cat "$work/batch.csv" >&2; fail "the silent IMU 2, named"; }
 for n in 1 2; do
   grep -q "^$n,\"FC1-ACC$((n - 1))\",PASS," "$work/batch.csv" || { cat "$work/batch.csv" >&2; fail "IMU $((n - 1)) passes beside a silent one"; }
 done
+# IMU 0 (RAW_IMU, before the vehicle's correction) still its own truth; IMU 1 the corrected one's,
+# which lies far (beyond 10 sigma in its bias) from its own.
+sensor_within_truth 1 "IMU 0 as-is (RAW_IMU)" 4
+IFS=';' read -r b k m <<< "${truths[1]}"
+python3 - "$b" "$k" "$m" "${offsets[1]}" "${scales[1]}" > "$work/truth_2.json" <<'PY'
+import json, sys
+b, k, m, off, scl = ([float(x) for x in a.split(',')] for a in sys.argv[1:])
+print(json.dumps({"bias_counts": [s * (bi - 1000 * o) for bi, o, s in zip(b, off, scl)],
+                  "scale_counts_per_mps2": [s * ki for ki, s in zip(k, scl)],
+                  "misalignment_rad": dict(zip(("yz", "zy", "zx"), m))}))
+PY
+sensor_within_truth 2 "IMU 1 as-is (its truth after the vehicle's correction)" 4
+jq -e --argjson b "[${b}]" '[range(3) as $i | ((.bias_counts[$i] - $b[$i]) / .uncertainty.bias_counts[$i]) | fabs] | max > 10' \
+  "$work/cal_2.json" > /dev/null || fail "IMU 1 as-is lies near its own truth: the stored calibration made no difference"
 echo "vehicle_three_imus: ok"

@@ -18,8 +18,9 @@
 // [sensor]), and each --imu-truth B;K;M one IMU instance (0, 1, 2 in order). Every sample line
 // is taken back to the specific force on the bench's platform, a_p = T0 (raw - B0) / K0, then
 // each IMU reads raw_i = K_i T_i^-1 a_p + B_i (the model of docs/model.md, written out here on
-// its own), its counts sent as they are in RAW_IMU or as raw_i / 1000 m/s^2 in HIGHRES_IMU and
-// SCALED_IMU2/3 (the vehicle's own calibration not applied). --msg ardupilot sends what
+// its own), its counts sent as they are in RAW_IMU, or as raw_i / 1000 m/s^2 corrected by that
+// IMU's stored calibration (INS_ACC2OFFS_X ..., --param) in HIGHRES_IMU and SCALED_IMU2/3: the
+// truth is the sensor's own, which the vehicle's correction hides. --msg ardupilot sends what
 // ArduPilot sends for three IMUs: RAW_IMU (id 0), SCALED_IMU2 and SCALED_IMU3. --silent-imu I:
 // instance I never sends.
 //
@@ -161,7 +162,11 @@ function rotate(v, rpy) {
   return [Math.cos(y) * x2 - Math.sin(y) * y2, Math.sin(y) * x2 + Math.cos(y) * y2, z2];
 }
 function corrected(counts, instance) {
-  const driver = counts.map(c => (c - opt.bias) / opt.scale);
+  return storedCorrection(counts.map(c => (c - opt.bias) / opt.scale), instance);
+}
+// The IMU instance's stored calibration and the board's orientation applied to what its driver
+// read (m/s^2): a_sent = R_board ((a_sensor - offset) .* scale).
+function storedCorrection(driver, instance) {
   const get = name => params.get(name).value;
   let off, scl, rot;
   if (ardupilot) {
@@ -307,7 +312,9 @@ function streamImus(t, vt, raw, temp) {
   opt.imuTruths.forEach((truth, instance) => {
     if (instance === opt.silentImu) return;
     const counts = imuCounts(p, truth);
-    const a = counts.map(c => c / 1000);  // m/s^2, for HIGHRES_IMU and SCALED_IMU*
+    // The driver's m/s^2 (the counts as 0.001 m/s^2) with the IMU's stored calibration, for
+    // HIGHRES_IMU and SCALED_IMU*; RAW_IMU's counts go as they are.
+    const a = storedCorrection(counts.map(c => c / 1000), instance);
     if (opt.msg === 'highres' && due(HIGHRES * 10 + instance, HIGHRES, t)) sendHighres(instance, vt, a, temp);
     if (opt.msg === 'scaled' && due(SCALED[instance], SCALED[instance], t)) sendScaled(instance, vt, a, temp);
     if (opt.msg === 'raw' && due(RAW * 10 + instance, RAW, t)) sendRaw(instance, vt, counts, temp);

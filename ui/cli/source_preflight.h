@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "accelcal/acquire/source/sample_source.h"
+#include "accelcal/acquire/source/sensor_set_source.h"
 
 namespace accelcal::cli {
 
@@ -23,6 +24,12 @@ void RefuseAbsentSerialPort(const std::string& spec);
 // accelcal::Error (before anything is created) when it cannot be undone or no vehicle answers,
 // having said the calibration on `say_when_refused` (nullable). Other sources: nothing.
 std::vector<std::string> PrepareVehicle(SampleSource& source, const std::string& choice, std::FILE* say,
+                                        std::FILE* say_when_refused);
+
+// The same for a set of sensors: a vehicle's IMU instances over one MAVLink link
+// (mavlink_sensor_set.h), each IMU's calibration read, said (a block per IMU) and undone on its
+// own; refused when one IMU's cannot be undone. Other sets: nothing.
+std::vector<std::string> PrepareVehicle(SensorSetSource& set, const std::string& choice, std::FILE* say,
                                         std::FILE* say_when_refused);
 
 }  // namespace accelcal::cli

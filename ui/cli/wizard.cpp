@@ -96,10 +96,14 @@ int RunWizard(const WizardCommandOptions& options) {
   // Several sensors at once (cli/wizard_fixture.h): asked for, or the scenario's plate.
   const bool several = WantsFixture(options) || (source_options.scenario && source_options.scenario->fixture);
   std::unique_ptr<SampleSource> source;
-  if (!several) source = OpenSource(options.source, source_options);
-  // The vehicle's calibration is said at the welcome (and recorded there); a refusal, here.
+  std::unique_ptr<SensorSetSource> set;
+  if (several) set = OpenWizardSensorSet(options, source_options);
+  else source = OpenSource(options.source, source_options);
+  // The vehicle's calibration (each of its IMUs') is said at the welcome (and recorded there); a
+  // refusal, here.
   std::vector<std::string> device_lines;
   if (source) device_lines = PrepareVehicle(*source, options.vehicle_calibration, nullptr, stdout);
+  if (set) device_lines = PrepareVehicle(*set, options.vehicle_calibration, nullptr, stdout);
   // The vehicle, for the write-back step, before the source is wrapped.
   MavlinkSource* vehicle = dynamic_cast<MavlinkSource*>(source.get());
   if (source && !options.bench_control.empty())
@@ -113,7 +117,7 @@ int RunWizard(const WizardCommandOptions& options) {
     // Line mode says each sensor after each pose, a line each (taken: still, in its pose; or
     // left out: why); the TUI shows them live (WizardView::sensors).
     const bool line_mode = tty || options.plain || ::isatty(STDOUT_FILENO) != 1;
-    fixture = OpenFixtureWizard(options, source_options, procedure, *journal,
+    fixture = OpenFixtureWizard(std::move(set), options, procedure, *journal,
                                 [line_mode](const std::string& note) {
                                   if (line_mode) std::cout << "  " << note << "\n";
                                 });

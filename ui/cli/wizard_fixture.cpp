@@ -36,14 +36,18 @@ bool WantsFixture(const WizardCommandOptions& options) {
   return SplitSensorColumns(options.columns, &error).size() > 1;
 }
 
-FixtureWizard OpenFixtureWizard(const WizardCommandOptions& options, const SourceOptions& source_options,
-                                const Procedure& procedure, SessionJournal& session,
-                                std::function<void(const std::string&)> notice) {
+std::unique_ptr<SensorSetSource> OpenWizardSensorSet(const WizardCommandOptions& options,
+                                                     const SourceOptions& source_options) {
   SensorSetRequest request;
   request.sensors = options.sensors;
   request.columns = options.columns;
   if (!options.fixture_path.empty()) request.fixture = LoadFixture(options.fixture_path);
-  std::unique_ptr<SensorSetSource> set = OpenSensorSet(options.source, source_options, request);
+  return OpenSensorSet(options.source, source_options, request);
+}
+
+FixtureWizard OpenFixtureWizard(std::unique_ptr<SensorSetSource> set, const WizardCommandOptions& options,
+                                const Procedure& procedure, SessionJournal& session,
+                                std::function<void(const std::string&)> notice) {
   // The virtual bench behind a real link (a test vehicle's IMUs): its controls move them all.
   if (!options.bench_control.empty())
     set = WithRemoteBench(std::move(set), ParseHostPort(options.bench_control, options.bench_control,

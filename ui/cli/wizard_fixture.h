@@ -24,9 +24,14 @@ struct FixtureWizard {
   std::unique_ptr<FixtureJournal> journal;
 };
 
-// Opens the sensors (a resumed session keeps its lead) and wraps `session`. Throws
+// The sensors the options ask for (before any session is opened: a vehicle's IMUs have their
+// calibration read first). Throws accelcal::Error for a set that cannot be opened.
+std::unique_ptr<SensorSetSource> OpenWizardSensorSet(const WizardCommandOptions& options,
+                                                     const SourceOptions& source_options);
+
+// Takes the sensors (a resumed session keeps its lead) and wraps `session`. Throws
 // accelcal::Error for a fixture that cannot run (no sensor can lead, counts that disagree).
-FixtureWizard OpenFixtureWizard(const WizardCommandOptions& options, const SourceOptions& source_options,
+FixtureWizard OpenFixtureWizard(std::unique_ptr<SensorSetSource> set, const WizardCommandOptions& options,
                                 const Procedure& procedure, SessionJournal& session,
                                 std::function<void(const std::string&)> notice);
 

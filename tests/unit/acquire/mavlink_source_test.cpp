@@ -199,7 +199,7 @@ TEST(MavlinkSourceTest, TheVehiclesCalibrationTakenBackOut) {
   undo.scale = Eigen::Vector3d(2.0, 1.0, 1.0);
   undo.body_from_sensor = Eigen::Vector3d(1.0, 1.0, -1.0).asDiagonal();  // ROLL_180: y, z flip
   undo.body_from_sensor(1, 1) = -1.0;
-  source.SetUndo(undo);
+  source.SetUndo(0, undo);
   std::vector<Sample> samples;
   ASSERT_TRUE(ReadUntil(source, &samples, [](const SourceStatus& s) { return s.samples_total >= 5; }));
   EXPECT_NEAR(samples.back().raw_counts.x(), (2.0 / 2.0 + 0.1) * 1000.0, 1e-3);
@@ -276,6 +276,47 @@ TEST(MavlinkSensorSetTest, EachImuInstanceItsOwnSensorAndADeadOneNamed) {
       << set->status(2).link_error;
   for (std::size_t i = 1; i < got.per_sensor[0].size(); ++i)
     ASSERT_GT(got.per_sensor[0][i].t_s, got.per_sensor[0][i - 1].t_s);
+}
+
+// Each IMU of the set its own undo (its own INS_ACCnOFFS/SCAL): the vehicle sends the same
+// corrected reading for IMUs 0, 1, 2; lane 0 is left as sent, lanes 1 and 2 each take back their
+// own offset and scale, a_sensor = a_sent ./ scale + offset.
+TEST(MavlinkSensorSetTest, EachImuTakesBackItsOwnCalibration) {
+  FakeVehicle vehicle([](FrameWriter& w, int tick) {
+    std::vector<std::vector<std::uint8_t>> out;
+    for (std::uint8_t id = 0; id < 3; ++id) out.push_back(Highres(w, 0.01 * tick, {2.0, 1.0, -9.0}, id));
+    return out;
+  });
+  SensorSetRequest request;
+  request.fixture = ThreeImus();
+  std::unique_ptr<SensorSetSource> set =
+      OpenSensorSet(fmt::format("mavlink:tcp:127.0.0.1:{}", vehicle.port()), LinkOptions(), request);
+  auto* imus = dynamic_cast<MavlinkSensorSet*>(set.get());
+  ASSERT_NE(imus, nullptr);
+  AccelUndo second;
+  second.offset_mps2 = Eigen::Vector3d(0.1, -0.2, 0.3);
+  second.scale = Eigen::Vector3d(2.0, 1.0, 0.5);
+  AccelUndo third;
+  third.offset_mps2 = Eigen::Vector3d(-0.5, 0.0, 0.0);
+  imus->instances().SetUndo(1, second);
+  imus->instances().SetUndo(2, third);
+  EXPECT_FALSE(imus->instances().undo(0));
+  SensorSetSamples got;
+  for (int i = 0; i < 400 && (set->status(0).samples_total < 5 || set->status(1).samples_total < 5 ||
+                              set->status(2).samples_total < 5);
+       ++i)
+    set->Read(0.05, &got);
+  ASSERT_FALSE(got.per_sensor[0].empty());
+  ASSERT_FALSE(got.per_sensor[1].empty());
+  ASSERT_FALSE(got.per_sensor[2].empty());
+  const Eigen::Vector3d sent(2000.0, 1000.0, -9000.0);  // counts of 0.001 m/s^2
+  EXPECT_LT((got.per_sensor[0].back().raw_counts - sent).norm(), 1e-3);
+  EXPECT_LT((got.per_sensor[1].back().raw_counts - Eigen::Vector3d(1100.0, 800.0, -17700.0)).norm(), 1e-3)
+      << got.per_sensor[1].back().raw_counts.transpose();
+  EXPECT_LT((got.per_sensor[2].back().raw_counts - Eigen::Vector3d(1500.0, 1000.0, -9000.0)).norm(), 1e-3)
+      << got.per_sensor[2].back().raw_counts.transpose();
+  EXPECT_TRUE(Contains(imus->DescribeReading(0), "own calibration: left in the readings"));
+  EXPECT_TRUE(Contains(imus->DescribeReading(1), "own calibration undone"));
 }
 
 TEST(MavlinkSensorSetTest, OneVehicleHasAtMostThreeImusAndNoImuOfItsOwn) {

@@ -11,8 +11,11 @@
 // ("heartbeats from ... arrive, but no ... of IMU 2") while the others stay up; the link's own
 // events (lost, bad frames, the rate request's fallback) are every instance's.
 //
-// The vehicle's own calibration is left in the readings (the set does not read the vehicle's
-// parameters, nor write back: one IMU at a time does, mavlink:...,imu=N).
+// The vehicle's own calibration: each IMU instance's readings arrive corrected by that IMU's
+// stored calibration (ArduPilot's INS_ACCOFFS, INS_ACC2OFFS, INS_ACC3OFFS ...; PX4's CAL_ACCn_*).
+// The app reads each instance's parameters over the set's one link and undoes each on its own
+// lane (instances(): app/device/vehicle_session.h, PrepareVehicleSource), as for one IMU. The
+// write-back is one IMU at a time (mavlink:...,imu=N).
 #pragma once
 
 #include <memory>
@@ -35,6 +38,9 @@ class MavlinkSensorSet final : public SensorSetSource {
   const SourceStatus& status(std::size_t sensor) const override { return source_->status(sensor); }
   // What the IMU instance of `sensor` reads ("HIGHRES_IMU of IMU 1 from ...").
   std::string DescribeReading(std::size_t sensor) const { return source_->DescribeReading(sensor); }
+  // The one link and its IMU lanes (lane i: sensor i), for the vehicle's parameters and each
+  // instance's undo (MavlinkSource::SetUndo).
+  MavlinkSource& instances() { return *source_; }
 
  private:
   Fixture fixture_;

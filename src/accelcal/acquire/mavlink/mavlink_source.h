@@ -24,8 +24,9 @@
 // (status().lost_frames); a gap in t is a gap as for every source.
 //
 // The vehicle's own calibration: its readings arrive already corrected (offsets, scales, board
-// rotation). SetUndo takes that correction back from every sample (accel_undo.h); the app reads
-// the vehicle's parameters to build it (app/device/vehicle_calibration.h).
+// rotation). SetUndo takes that correction back from every sample of an IMU instance
+// (accel_undo.h); the app reads the vehicle's parameters to build it, per instance
+// (app/device/vehicle_session.h).
 #pragma once
 
 #include <map>
@@ -85,11 +86,11 @@ class MavlinkSource final : public SampleSource, private mavlink::ConnectionObse
   const MavlinkSourceSpec& spec() const { return spec_; }
   // The link, for a parameter exchange in the middle of the stream (samples keep coming in).
   mavlink::Connection& connection() { return connection_; }
-  // Takes the vehicle's correction back from every later sample of the first instance (nullopt:
-  // as sent). Applies to HIGHRES_IMU and SCALED_IMU streams; RAW_IMU is the sensor's units
-  // already.
-  void SetUndo(std::optional<mavlink::AccelUndo> undo) { lanes_.front().undo = std::move(undo); }
-  const std::optional<mavlink::AccelUndo>& undo() const { return lanes_.front().undo; }
+  // Takes the vehicle's correction of IMU instance imu(lane) back from every later sample of that
+  // instance (nullopt: as sent); each instance has its own (its own INS_ACCnOFFS ...). Applies
+  // to HIGHRES_IMU and SCALED_IMU streams; RAW_IMU is the sensor's units already.
+  void SetUndo(std::size_t lane, std::optional<mavlink::AccelUndo> undo) { lanes_.at(lane).undo = std::move(undo); }
+  const std::optional<mavlink::AccelUndo>& undo(std::size_t lane = 0) const { return lanes_.at(lane).undo; }
   // The first instance's chosen message (nullopt until chosen).
   std::optional<std::uint32_t> message() const { return lanes_.front().chosen; }
   // Every (message, IMU instance) seen from the vehicle with its frame count.

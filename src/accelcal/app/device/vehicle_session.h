@@ -1,5 +1,5 @@
-// Before samples of a MAVLink vehicle are used: its own calibration read, said, and taken back
-// out of its readings (or, on request, left in). What `accelcal wizard` and `accelcal record` do
+// Before samples of a MAVLink vehicle are used: each IMU's own calibration read, said, and taken
+// back out of its readings (or, on request, left in). What `accelcal wizard` and `accelcal record` do
 // before they start on a mavlink: source; the wizard's device step (to come) calls the same.
 #pragma once
 
@@ -17,15 +17,21 @@ enum class VehicleCalibrationChoice {
 };
 
 struct VehiclePreparation {
-  std::vector<std::string> lines;  // what the vehicle's calibration is and what was done
-  bool undone = false;
-  // Non-empty when the undo was asked but cannot be done: why, and what to do instead.
+  // What each IMU's calibration is and what was done with it: one block per IMU instance of the
+  // source, each opened by the line naming its vehicle, link and IMU.
+  std::vector<std::string> lines;
+  bool undone = false;  // every IMU's taken out
+  // Non-empty when the undo was asked but cannot be done for an IMU: which, why, and what to do
+  // instead (one sentence per IMU that cannot).
   std::string refused;
 };
 
-// Reads the vehicle's calibration of the source's IMU through the source's own link (samples
-// that arrive meanwhile are kept) and applies the choice to the source. Throws accelcal::Error
-// when no vehicle answers the link at all.
+// Reads the vehicle's calibration of each IMU instance the source reads (one for mavlink:...,imu=N;
+// the instances of a vehicle's IMUs at once, mavlink_sensor_set.h) through the source's own link
+// (samples that arrive meanwhile are kept) and applies the choice to each instance's lane. Undo
+// refused for one IMU: no IMU's undo is set (the session is not to start: that IMU would be
+// calibrated relative to its old calibration). Throws accelcal::Error when no vehicle answers the
+// link at all, or it is neither ArduPilot nor PX4.
 VehiclePreparation PrepareVehicleSource(MavlinkSource& source, VehicleCalibrationChoice choice,
                                         const mavlink::ParamExchange& exchange = {});
 
