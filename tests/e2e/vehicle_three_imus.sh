@@ -10,7 +10,8 @@
 #     back out of that IMU's samples;
 #   - at the end: 3 verdicts, each IMU's calibration within 4 sigma of its own truth, a report
 #     with its own certificate per IMU, the batch summary beside the session and from `report
-#     --format batch-csv`;
+#     --format batch-csv`; the command that writes each IMU back named, and run for IMUs 1 and 2
+#     (the vehicle's parameters then its sensors' own);
 #   - IMU 2's temperature calibration on: the undo refused before any session, naming IMU 2; left
 #     in (as-is) with IMU 2 silent: IMU 1's calibration is its truth after the vehicle's
 #     correction, far from its own (the undo is what makes the first run right).
@@ -27,16 +28,11 @@ data_dir=$3
 trap 'stop_bench; rm -rf "$work"' EXIT
 command -v jq > /dev/null || { echo "jq missing: skipped"; exit 77; }
 need_node_peers
-# The autopilot procedure (counts of 0.001 m/s^2), 3 s captures, without its write-back (one IMU
-# at a time is written back: mavlink:...,imu=N).
-python3 - "$source_dir/procedures/autopilot_imu.toml" "$work/short.toml" <<'PY'
-import sys
-text = open(sys.argv[1]).read().replace("capture_duration_s = 10 ", "capture_duration_s = 3 ")
-head, *steps = text.split("\n[[step]]")
-open(sys.argv[2], "w").write(head + "".join("\n[[step]]" + s for s in steps if 'kind = "write_back"' not in s))
-PY
+# The autopilot procedure (counts of 0.001 m/s^2), 3 s captures, with its write-back step (which,
+# for several IMUs, leaves the writing to the session's end: one command per IMU).
+sed 's/^capture_duration_s = 10 /capture_duration_s = 3 /' "$source_dir/procedures/autopilot_imu.toml" > "$work/short.toml"
 grep -q '^capture_duration_s = 3 ' "$work/short.toml" || fail "short procedure: no capture_duration_s"
-grep -q 'kind = "write_back"' "$work/short.toml" && fail "short procedure: the write-back left"
+grep -q 'kind = "write_back"' "$work/short.toml" || fail "short procedure: no write-back step"
 
 # The bench's sensor (the quiet scenario's [sensor]), which the vehicle takes back to the
 # platform's specific force, and each IMU's truth: bias counts; scale counts/(m/s^2);
@@ -135,7 +131,45 @@ head -1 "$work/batch.csv" | grep -qx 'sensor,serial,verdict,bias_x,bias_y,bias_z
 for n in 1 2 3; do
   grep -q "^$n,\"FC1-ACC$((n - 1))\",PASS," "$work/batch.csv" || { cat "$work/batch.csv" >&2; fail "IMU $((n - 1)) passes"; }
 done
+# The write-back step says where the writing is; the closing lines name each IMU's command: IMU
+# 0's (RAW_IMU, counts) with the procedure's driver scaling. IMUs 1 and 2 written by them into
+# the vehicle, each echoed and read back (node-mavlink's PARAM_SET echo; the values checked below).
+said "each is written into the vehicle on its own once all are calibrated"
+for i in 0 1 2; do
+  grep -q "^  IMU $i (FC1-ACC$i, PASS): accelcal export-cal $db --sensor $((i + 1)) --to $mav,imu=$i .*--apply\$" "$work/out" ||
+    { tail -20 "$work/out" >&2; fail "IMU $i's write-back command not named"; }
+done
+grep -q "^  IMU 0 (FC1-ACC0, PASS): .* --procedure $work/short.toml --apply\$" "$work/out" ||
+  fail "IMU 0 (RAW_IMU counts): the command lacks the procedure's scaling"
+for i in 1 2; do
+  command=$(sed -n "s/^  IMU $i (FC1-ACC$i, PASS): accelcal //p" "$work/out")
+  read -r -a words <<< "$command"
+  "$accelcal" "${words[@]}" > "$work/write_$i.out" 2>&1 || { cat "$work/write_$i.out" >&2; fail "IMU $i's write-back"; }
+  grep -q "^read back: all 6 as written" "$work/write_$i.out" || { cat "$work/write_$i.out" >&2; fail "IMU $i not read back"; }
+  grep -q "^PARAM_SET INS_ACC$((i + 1))OFFS_X = " "$work/write_$i.out" || { cat "$work/write_$i.out" >&2; fail "IMU $i: not its own parameters"; }
+done
+# `record --sensors 3` on the same link takes each IMU's calibration out as the wizard does.
+"$accelcal" record --source "$mav" --sensors 3 --duration 1 -o "$work/imus.txt" > /dev/null 2> "$work/record.err" ||
+  { cat "$work/record.err" >&2; fail "record --sensors 3 on the vehicle"; }
+for i in 0 1 2; do
+  grep -q "IMU $i: its own accelerometer calibration" "$work/record.err" || { cat "$work/record.err" >&2; fail "record: IMU $i's calibration not said"; }
+done
+[ "$(grep -c 'taken out of every sample' "$work/record.err")" -eq 3 ] || fail "record: not every IMU's calibration taken out"
 stop_bench
+# What the vehicle holds now (its summary): IMU 1's and 2's offsets and scales, their sensors' own
+# (ArduPilot's model: offset = bias / 1000 counts per m/s^2, scale = 1000 / K), IMU 0's untouched.
+python3 - "$work/vehicle.json" "${truths[1]}" "${truths[2]}" "${offsets[0]}" <<'PY' || fail "the vehicle's parameters after the write-back"
+import json, sys
+held = json.load(open(sys.argv[1]))["params"]
+for imu, truth in ((1, sys.argv[2]), (2, sys.argv[3])):
+    b, k, _ = ([float(x) for x in part.split(",")] for part in truth.split(";"))
+    for j, axis in enumerate("XYZ"):
+        off, scl = held[f"INS_ACC{imu + 1}OFFS_{axis}"], held[f"INS_ACC{imu + 1}SCAL_{axis}"]
+        assert abs(off - b[j] / 1000) < 0.01, (imu, axis, off, b[j] / 1000)
+        assert abs(scl - 1000 / k[j]) < 0.003, (imu, axis, scl, 1000 / k[j])
+for j, axis in enumerate("XYZ"):
+    assert abs(held[f"INS_ACCOFFS_{axis}"] - float(sys.argv[4].split(",")[j])) < 1e-6, "IMU 0 written"
+PY
 
 # The same vehicle with IMU 2 silent from the start and its temperature calibration on
 # (INS_TCAL3_ENABLE 1, which accelcal cannot undo).
@@ -169,6 +203,9 @@ set -e
 stop_bench
 [ "$code" -eq 0 ] || { tail -40 "$work/out" >&2; cat "$work/err" >&2; fail "the wizard (IMU 2 silent) exited $code"; }
 [ "$(grep -c 'left in the readings (as asked)' "$work/out")" -eq 3 ] || fail "as-is not said for every IMU"
+grep -q "^  IMU 1 (FC1-ACC1): nothing to write: the vehicle's own calibration was left in its readings" "$work/out" ||
+  { tail -20 "$work/out" >&2; fail "as-is: IMU 1's write-back not refused"; }
+grep -q "^  IMU 2 (FC1-ACC2): nothing to write: no capture" "$work/out" || { tail -20 "$work/out" >&2; fail "the silent IMU 2: nothing to write"; }
 said "INS_TCAL3_ENABLE 1 (a temperature calibration corrects the readings)"
 "$accelcal" report "$db" --procedure "$work/short.toml" --format batch-csv -o "$work/batch.csv" > /dev/null
 grep -q '^3,"FC1-ACC2",NO CALIBRATION,,,,,,,,,,"no capture' "$work/batch.csv" ||

@@ -144,6 +144,7 @@ void RunRecord(const RecordCommandOptions& o) {
     request.sensors = o.sensors;
     request.columns = o.format.columns;
     std::unique_ptr<SensorSetSource> set = OpenSensorSet(o.source_spec, source_options, request);
+    PrepareVehicle(*set, o.vehicle_calibration, o.quiet ? nullptr : stderr, o.quiet ? nullptr : stderr);
     SigintGuard sigint;
     return RecordSensorSet(*set, o.output_path, o.duration_s, o.quiet, &g_interrupted);
   }

@@ -133,6 +133,10 @@ int RunWizard(const WizardCommandOptions& options) {
   wizard.fixed_duration_s = options.fixed_duration_s;
   wizard.device_lines = std::move(device_lines);
   wizard.vehicle = vehicle;
+  if (fixture.vehicle != nullptr)
+    wizard.write_back_elsewhere =
+        "This session calibrates each of the vehicle's IMUs: each is written into the vehicle on its own "
+        "once all are calibrated; the session's last lines name the command for each IMU.";
   wizard.gravity = options.gravity;
   // The virtual bench's lab: its gravity and its identified, verified equipment (virtual_lab.h).
   if (sim)

@@ -5,6 +5,7 @@
 #include <fmt/core.h>
 
 #include "accelcal/acquire/source/remote_bench.h"
+#include "accelcal/app/device/vehicle_imus_writeback.h"
 #include "accelcal/acquire/source/sensor_set_spec.h"
 #include "accelcal/app/fixture/fixture_finish.h"
 #include "accelcal/app/fixture/sensor_batch.h"
@@ -48,12 +49,14 @@ std::unique_ptr<SensorSetSource> OpenWizardSensorSet(const WizardCommandOptions&
 FixtureWizard OpenFixtureWizard(std::unique_ptr<SensorSetSource> set, const WizardCommandOptions& options,
                                 const Procedure& procedure, SessionJournal& session,
                                 std::function<void(const std::string&)> notice) {
+  MavlinkSensorSet* vehicle = dynamic_cast<MavlinkSensorSet*>(set.get());
   // The virtual bench behind a real link (a test vehicle's IMUs): its controls move them all.
   if (!options.bench_control.empty())
     set = WithRemoteBench(std::move(set), ParseHostPort(options.bench_control, options.bench_control,
                                                         "--bench-control HOST:PORT"));
   const int lead = RecordedLead(session, set->fixture());
   FixtureWizard fixture;
+  fixture.vehicle = vehicle;
   fixture.source = std::make_unique<FixtureLeadSource>(std::move(set), FixtureKeepS(procedure), 2.0, lead);
   fixture.journal = std::make_unique<FixtureJournal>(session, *fixture.source, procedure, std::move(notice));
   return fixture;
@@ -65,6 +68,16 @@ void FinishFixtureWizard(const FixtureWizard& fixture, SessionJournal& session,
   const FixtureFinish finish = FinishFixtureSession(session, fixture.source->lead(), procedure,
                                                     procedure_path, session_path);
   for (const std::string& line : finish.lines) out << line << "\n";
+  if (fixture.vehicle == nullptr || finish.batch.empty()) return;
+  MavlinkSource& imus = fixture.vehicle->instances();
+  std::vector<ImuWriteback> each;
+  for (const SensorBatchRow& row : finish.batch) {
+    const auto lane = static_cast<std::size_t>(row.sensor);
+    each.push_back({imus.imu(lane), row.sensor + 1, row.serial, row.verdict, row.calibration, row.reason,
+                    imus.undo(lane).has_value()});
+  }
+  for (const std::string& line : ImuWritebackLines(session_path, imus.spec(), procedure_path, each))
+    out << line << "\n";
 }
 
 }  // namespace accelcal::cli

@@ -8,6 +8,7 @@
 #include <ostream>
 #include <string>
 
+#include "accelcal/acquire/mavlink/mavlink_sensor_set.h"
 #include "accelcal/acquire/source/source_options.h"
 #include "accelcal/app/fixture/fixture_capture.h"
 #include "accelcal/session/procedure.h"
@@ -22,6 +23,9 @@ bool WantsFixture(const WizardCommandOptions& options);
 struct FixtureWizard {
   std::unique_ptr<FixtureLeadSource> source;
   std::unique_ptr<FixtureJournal> journal;
+  // A vehicle's IMUs over one MAVLink link (inside source), borrowed: its end names the
+  // write-back of each IMU. nullptr for any other set.
+  MavlinkSensorSet* vehicle = nullptr;
 };
 
 // The sensors the options ask for (before any session is opened: a vehicle's IMUs have their
@@ -35,7 +39,8 @@ FixtureWizard OpenFixtureWizard(std::unique_ptr<SensorSetSource> set, const Wiza
                                 const Procedure& procedure, SessionJournal& session,
                                 std::function<void(const std::string&)> notice);
 
-// After the engine's report: every sensor calibrated, reported, and the batch summary.
+// After the engine's report: every sensor calibrated, reported, and the batch summary; for a
+// vehicle's IMUs, the command that writes each into the vehicle (vehicle_imus_writeback.h).
 void FinishFixtureWizard(const FixtureWizard& fixture, SessionJournal& session,
                          const Procedure& procedure, const std::string& procedure_path,
                          const std::string& session_path, std::ostream& out);

@@ -1,10 +1,11 @@
 // A vehicle's own accelerometer calibration taken back out of its readings, and a calibration
 // planned for its parameters: the names per stack and IMU, the undo of offsets, scales and the
 // board rotation (checked by applying the vehicle's correction and undoing it), and what cannot
-// be undone.
+// be undone; the write-back commands at the end of a session of several IMUs.
 #include <gtest/gtest.h>
 
 #include "accelcal/acquire/mavlink/sensor_orientation.h"
+#include "accelcal/app/device/vehicle_imus_writeback.h"
 #include "accelcal/app/device/vehicle_writeback.h"
 #include "test_support.h"
 
@@ -112,6 +113,33 @@ TEST(VehicleWritebackTest, PlanNamedForTheImuFromTheUnitsScaling) {
   const WritebackPlan px4 = PlanWriteback(cal, FlightStack::kPx4, 0, *driver);
   EXPECT_EQ(px4.writes[3].name, "CAL_ACC0_XSCALE");
   EXPECT_EQ(DescribeWrites(px4.writes)[0], "PARAM_SET CAL_ACC0_XOFF = 0.12 (REAL32)");
+}
+
+// The end of a session of a vehicle's IMUs: each IMU's exact command (its sensor, its imu=, the
+// procedure's scaling only for counts, a path quoted for the shell), or why nothing is written.
+TEST(VehicleWritebackTest, EachImuOfASessionItsOwnCommandOrWhyNot) {
+  Calibration mps2;
+  mps2.reading_unit = ReadingUnit{ReadingUnit::Kind::kMps2, 1000.0};
+  Calibration counts;  // RAW_IMU
+  const MavlinkSourceSpec link = ParseMavlinkSpec("mavlink:tcp:127.0.0.1:5760");
+  const std::vector<std::string> lines = ImuWritebackLines(
+      "/lab/fc 1.db", link, "/p/autopilot.toml",
+      {{0, 1, "ACC0", "PASS", counts, "", true},
+       {1, 2, "ACC1", "FAIL", mps2, "", true},
+       {2, 3, "ACC2", "NO CALIBRATION", std::nullopt, "no capture of this sensor was accepted", true}});
+  ASSERT_EQ(lines.size(), 4u);
+  EXPECT_EQ(lines[1], "  IMU 0 (ACC0, PASS): accelcal export-cal '/lab/fc 1.db' --sensor 1 --to "
+                      "mavlink:tcp:127.0.0.1:5760,imu=0 --procedure /p/autopilot.toml --apply");
+  EXPECT_EQ(lines[2], "  IMU 1 (ACC1, FAIL: read its report before writing it): accelcal export-cal "
+                      "'/lab/fc 1.db' --sensor 2 --to mavlink:tcp:127.0.0.1:5760,imu=1 --apply");
+  EXPECT_EQ(lines[3], "  IMU 2 (ACC2): nothing to write: no capture of this sensor was accepted");
+  const std::vector<std::string> as_is =
+      ImuWritebackLines("fc.db", link, "p.toml", {{1, 2, "ACC1", "PASS", mps2, "", false}});
+  EXPECT_TRUE(Contains(as_is[1], "IMU 1 (ACC1): nothing to write: the vehicle's own calibration was left in "
+                                 "its readings"))
+      << as_is[1];
+  EXPECT_TRUE(Contains(as_is[1], "device-info --source mavlink:tcp:127.0.0.1:5760,imu=1 --reset --apply"))
+      << as_is[1];
 }
 
 }  // namespace

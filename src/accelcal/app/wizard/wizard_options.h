@@ -62,6 +62,9 @@ struct WizardOptions {
   // bench's wrapper), borrowed: the write-back step (steps/write_back_step.cpp) writes the
   // calibration into it through the source's own link. nullptr for any other source.
   MavlinkSource* vehicle = nullptr;
+  // Said by the write-back step in place of a write when the session's vehicle is written back
+  // elsewhere (a vehicle's several IMUs: each on its own at the session's end); empty: none.
+  std::string write_back_elsewhere = {};
 
   // Empty when the options are usable; else why not.
   std::string Validate() const {

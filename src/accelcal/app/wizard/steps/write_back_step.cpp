@@ -8,7 +8,8 @@
 // (app/device/vehicle_writeback.h); the outcome is shown and recorded, and a write that stopped
 // says which parameters were written and which not (r tries again). A source that is no MAVLink
 // vehicle, or a session whose vehicle calibration was left in the readings, has nothing to write:
-// the step says so and goes on.
+// the step says so and goes on; a session of a vehicle's several IMUs writes each at its end
+// (WizardOptions::write_back_elsewhere says so).
 #include <algorithm>
 #include <cctype>
 
@@ -118,6 +119,8 @@ StepOutcome WriteBackStep::Run() {
   outcome_lines_.clear();
   stopped_.clear();
   MavlinkSource* vehicle = session_.options.vehicle;
+  if (vehicle == nullptr && !session_.options.write_back_elsewhere.empty())
+    return {{session_.options.write_back_elsewhere}, {}, "", ""};
   if (vehicle == nullptr)
     return {{"The source is not a MAVLink vehicle: there is no vehicle to write the calibration into.",
              "To load it elsewhere: accelcal export-cal SESSION --to ardupilot, px4, c-header, ..."},
