@@ -22,4 +22,14 @@ batch="$work/row.batch.csv"
 for n in 1 2 3 4 5 6 7 8; do
   grep -q "^$n,\"SIM0$n\",PASS," "$batch" || { cat "$batch" >&2; fail "SIM0$n does not conform"; }
 done
+# `accelcal refit` of a fixture's session is refused with why, the session unchanged: its
+# stored result is the first sensor's alone, which a refit would fit without the fixture.
+"$accelcal" report "$work/row.db" --sensor 1 --format calibration -o "$work/before.json" > /dev/null
+if "$accelcal" refit "$work/row.db" --gravity 9.80 > "$work/refit.out" 2> "$work/refit.err"; then
+  fail "refit of a session of 8 sensors went ahead"
+fi
+grep -q "holds 8 sensors on a fixture: refit corrects a session of one sensor" "$work/refit.err" ||
+  { cat "$work/refit.err" >&2; fail "refit's refusal does not say why"; }
+"$accelcal" report "$work/row.db" --sensor 1 --format calibration -o "$work/after.json" > /dev/null
+cmp -s "$work/before.json" "$work/after.json" || fail "the refused refit changed sensor 1's calibration"
 echo "fixture_row_8: ok"

@@ -153,6 +153,15 @@ Procedure SessionProcedure(const RefitFileRequest& r, const SessionInfo& info) {
 RefitFileOutcome RefitSessionFile(const RefitFileRequest& request) {
   const std::unique_ptr<SessionStore> store = OpenSessionToChange(request.input);
   const SessionInfo info = store->Info();
+  // A fixture's session: the store's Result() is the first sensor's alone, which a refit here
+  // would fit without the fixture (its radius, the plate's placement: sensor_batch.h) and not
+  // the lead the wizard refits (FixtureJournal); never a result that disagrees with the batch
+  // the session ended with.
+  if (const std::optional<Fixture> sensors = store->Sensors(); sensors && sensors->sensors.size() > 1)
+    throw Error(fmt::format("session {} holds {} sensors on a fixture: refit corrects a session of one "
+                            "sensor; each sensor of this one was calibrated at its end and is reported with "
+                            "`accelcal report {} --sensor N` (a refit of every sensor is not built yet)",
+                            info.path, sensors->sensors.size(), info.path));
   const Procedure procedure = SessionProcedure(request, info);
   RefitRequest refit = request.corrections;
   refit.session_name = info.path;

@@ -258,12 +258,13 @@ FixtureBoard ReadBoard(TomlTableReader& r, const std::string& source) {
   }
   b.dead_from_s = r.Number("dead_from_s", b.dead_from_s, NumberRange::kNonNegative);
   b.loose_deg = r.Number("loose_deg", b.loose_deg, NumberRange::kPositive);
+  b.loose_rock_s = r.Number("loose_rock_s", b.loose_rock_s, NumberRange::kPositive);
   if (b.fault != BoardFault::kDead && r.Has("dead_from_s")) {
     r.FailKey("dead_from_s", "only a board with fault = \"dead\" has dead_from_s");
   }
-  if (b.fault != BoardFault::kLoose && r.Has("loose_deg")) {
-    r.FailKey("loose_deg", "only a board with fault = \"loose\" has loose_deg");
-  }
+  for (const char* key : {"loose_deg", "loose_rock_s"})
+    if (b.fault != BoardFault::kLoose && r.Has(key))
+      r.FailKey(key, fmt::format("only a board with fault = \"loose\" has {}", key));
   return b;
 }
 

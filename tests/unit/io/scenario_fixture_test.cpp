@@ -60,6 +60,7 @@ dead_from_s = 12.5
 serial = "B4"
 fault = "loose"
 loose_deg = 4
+loose_rock_s = 12
 mounted_x = "-x"
 mounted_y = "-y"
 )";
@@ -95,6 +96,8 @@ TEST(ScenarioFixture, ReadsEachBoard) {
   // B4: loose, and put in turned half a turn about z although the file says square.
   EXPECT_EQ(f.boards[3].fault, BoardFault::kLoose);
   EXPECT_DOUBLE_EQ(f.boards[3].loose_deg, 4.0);
+  EXPECT_DOUBLE_EQ(f.boards[3].loose_rock_s, 12.0);
+  EXPECT_DOUBLE_EQ(f.boards[0].loose_rock_s, 3.0);  // the default
   EXPECT_TRUE(f.boards[3].declared.sensor_to_plate.isIdentity());
   EXPECT_TRUE(f.boards[3].mounted_to_plate.isApprox(
       Eigen::Vector3d(-1, -1, 1).asDiagonal().toDenseMatrix()));
@@ -168,6 +171,9 @@ TEST(ScenarioFixture, RefusesWhatIsWrongWhereItIs) {
   EXPECT_TRUE(Contains(
       ParseFails(kBase + "[[fixture.board]]\nserial = \"A\"\ndead_from_s = 3\n").what(),
       "only a board with fault = \"dead\""));
+  EXPECT_TRUE(Contains(
+      ParseFails(kBase + "[[fixture.board]]\nserial = \"A\"\nloose_rock_s = 20\n").what(),
+      "only a board with fault = \"loose\" has loose_rock_s"));
   EXPECT_TRUE(Contains(
       ParseFails(kBase + "[[fixture.board]]\nserial = \"A\"\nmounted_x = \"+z\"\nmounted_y = \"-z\"\n")
           .what(),

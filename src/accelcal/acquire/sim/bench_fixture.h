@@ -37,6 +37,9 @@ struct FixtureBoard {
   BoardFault fault = BoardFault::kNone;
   double dead_from_s = 0.0;  // dead: silent from this session time on, s
   double loose_deg = 3.0;    // loose: std of each component of its tilt on the plate, deg
+  // loose: how long it rocks on after each placement (e-folding time), s: a board that rocks
+  // longer than the plate takes to settle is left out of the pose and retried alone.
+  double loose_rock_s = 3.0;
 };
 
 // [fixture] of a scenario.

@@ -12,9 +12,8 @@ namespace accelcal {
 namespace {
 
 constexpr double kBoardDegToRad = M_PI / 180.0;
-// A loose board rocks on after each placement for about this long (e-folding time), s, at
+// A loose board rocks on after each placement (for its loose_rock_s, e-folding) at
 // kLooseRockHz with a quarter of its loose_deg: clearly motion to a stillness check, then quiet.
-constexpr double kLooseRockS = 3.0;
 constexpr double kLooseRockHz = 4.0;
 
 // Board i's streams: from the seed and i alone.
@@ -177,7 +176,7 @@ Eigen::Matrix3d FixtureSimSource::BoardForce(const Board& b, double t_s,
     // It rocks about all three of its axes at once (three frequencies), so that gravity moves in
     // it whichever face is up.
     const double amplitude_rad =
-        0.25 * b.spec.loose_deg * kBoardDegToRad * std::exp(-age_s / kLooseRockS);
+        0.25 * b.spec.loose_deg * kBoardDegToRad * std::exp(-age_s / b.spec.loose_rock_s);
     const Eigen::Vector3d phase(0.0, 1.0, 2.0);
     Eigen::Vector3d rock_rad;
     for (int i = 0; i < 3; ++i)

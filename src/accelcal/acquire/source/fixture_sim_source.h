@@ -11,7 +11,7 @@
 //   mounting     f_board = M^T f_plate, M = mounted_to_plate (the board as really put in) times,
 //                for a loose board, its tilt on the plate (drawn anew at each placement, each
 //                component ~ N(0, loose_deg)) and a rocking about its three axes (a quarter of
-//                loose_deg, 4-6 Hz) that dies out over kLooseRockS after each placement (it goes
+//                loose_deg, 4-6 Hz) that dies out over its loose_rock_s after each placement (it goes
 //                on moving after the plate has settled).
 //   dead         no sample from dead_from_s on: its status goes dead, the others' stay up.
 //
