@@ -43,7 +43,9 @@ for _ in $(seq 6000); do
   grep -q '^\[8/' "$work/out.1" 2>/dev/null && break  # step 8: five poses taken
   kill -0 "$pid" 2>/dev/null || break
   size=$(stat -c %s "$work/out.1")
-  if [ "$size" != "$answered_at" ] && [ "$(tail -c 2 "$work/out.1")" = "> " ]; then
+  # The prompt seen may be step 8's, printed after the check above: looked for again after it.
+  if [ "$size" != "$answered_at" ] && [ "$(tail -c 2 "$work/out.1")" = "> " ] &&
+     ! grep -q '^\[8/' "$work/out.1"; then
     printf '\n' >&3
     answered_at=$size
   fi
