@@ -12,6 +12,7 @@
 #include "accelcal/app/wizard/resume_summary.h"
 #include "accelcal/app/wizard/wizard_engine.h"
 #include "accelcal/io/procedure_file.h"
+#include "accelcal/session/sensor_journal_view.h"
 #include "accelcal/session/session_journal.h"
 
 namespace accelcal::wizard_resume_summary_test {
@@ -34,6 +35,25 @@ Capture StillCapture(int id, const std::string& label, const Eigen::Vector3d& up
     c.samples.push_back(s);
   }
   return c;
+}
+
+// A session of several sensors records its lead and its plate's placement before the engine
+// starts: its first run is no resume (it said "Resuming session ...: 0 captures" before).
+TEST(WizardResumeSummaryTest, ASetsOwnInputsAreNoResume) {
+  std::shared_ptr<SessionJournal> journal(MakeMemoryJournal());
+  journal->RecordInput(kSensorSetStep, kSensorSetLeadKey, "SIM02");
+  journal->RecordInput(kSensorSetStep, kSensorSetPlacementKey, "0.1");
+  SimOptions sim_options;
+  sim_options.speed = 0.0;
+  SimSource sim(sim::DefaultScenario(), sim_options);
+  WizardEngine engine(FullProcedure(), sim, *journal, WizardOptions{"test", "op", "SN1", {}, 2.0, {}});
+  for (const std::string& line : engine.View().lines)
+    EXPECT_EQ(line.find("Resuming session"), std::string::npos) << line;
+  // An answer of a run is a resume.
+  journal->RecordInput("welcome", "device", "SN1");
+  WizardEngine again(FullProcedure(), sim, *journal, WizardOptions{"test", "op", "SN1", {}, 2.0, {}});
+  ASSERT_FALSE(again.View().lines.empty());
+  EXPECT_EQ(again.View().lines[0], "Resuming session test: 0 captures and 0 steps already recorded.");
 }
 
 TEST(WizardResumeSummaryTest, ListsTheStepsInTheProceduresOrderByTitle) {

@@ -18,6 +18,7 @@
 #include "accelcal/app/wizard/time_estimate.h"
 #include "accelcal/base/error.h"
 #include "accelcal/base/utc_time.h"
+#include "accelcal/session/sensor_journal_view.h"
 
 namespace accelcal {
 
@@ -46,6 +47,18 @@ const StepController* WizardEngine::Current() const {
 
 // ---- resume ---------------------------------------------------------------------------------
 
+namespace {
+
+// Inputs of the session's own making: a session of several sensors records its lead and its
+// plate's placement before the engine starts (sensor_journal_view.h), which no run answered.
+bool HoldsAnswers(const SessionInputs& inputs) {
+  for (const auto& [step, values] : inputs)
+    if (step != kSensorSetStep && !values.empty()) return true;
+  return false;
+}
+
+}  // namespace
+
 void WizardEngine::ReadJournal() {
   const std::vector<JournalCapture>& captures = model_.captures();
   const std::map<std::string, std::string>& done = model_.done_steps();
@@ -57,7 +70,7 @@ void WizardEngine::ReadJournal() {
   welcome_.Resume();
   session_.noise_floor.Resume();
   for (const std::unique_ptr<StepController>& c : controllers_) c->Resume();
-  resumed_ = !captures.empty() || !done.empty() || !model_.inputs().empty();
+  resumed_ = !captures.empty() || !done.empty() || HoldsAnswers(model_.inputs());
   if (!resumed_) return;
   resume_lines_.push_back(fmt::format("Resuming session {}: {} captures and {} steps already recorded.",
                                       options_.session_name, captures.size(), done.size()));
