@@ -10,6 +10,7 @@
 set -euo pipefail
 accelcal=$1
 source_dir=$2
+data_dir=$3
 . "$source_dir/tests/e2e/lib/common.bash"
 set +e
 yes '' | "$accelcal" wizard --source sim --speed 0 --sensors 8 --session "$work/row.db" --plain \
@@ -32,4 +33,15 @@ grep -q "holds 8 sensors on a fixture: refit corrects a session of one sensor" "
   { cat "$work/refit.err" >&2; fail "refit's refusal does not say why"; }
 "$accelcal" report "$work/row.db" --sensor 1 --format calibration -o "$work/after.json" > /dev/null
 cmp -s "$work/before.json" "$work/after.json" || fail "the refused refit changed sensor 1's calibration"
+# A plate without a board at its reference point cannot run the turntable steps (the radius is
+# measured to the board the wizard follows): refused before a session is made, with the remedy.
+sed 's/^offset_m = \[0.0, 0.0, 0.0\]$/offset_m = [0.015, 0.0, 0.0]/' "$data_dir/fixture/row_8_1khz.toml" > "$work/off.toml"
+grep -q '^offset_m = \[0.015, 0.0, 0.0\]$' "$work/off.toml" || fail "no board at the reference point to move"
+if "$accelcal" wizard --source sim --speed 0 --scenario "$work/off.toml" --session "$work/off.db" --plain \
+    < /dev/null > "$work/off.out" 2> "$work/off.err"; then
+  fail "a plate without a board at its reference point ran"
+fi
+grep -q "The nearest, R04, is 15 mm from it: make its sensing point the reference point" "$work/off.err" ||
+  { cat "$work/off.err" >&2; fail "the refusal does not name the board and the remedy"; }
+[ ! -e "$work/off.db" ] || fail "the refused wizard left a session file"
 echo "fixture_row_8: ok"

@@ -98,6 +98,10 @@ int RunWizard(const WizardCommandOptions& options) {
   std::unique_ptr<SampleSource> source;
   std::unique_ptr<SensorSetSource> set;
   if (several) set = OpenWizardSensorSet(options, source_options);
+  if (set) {
+    if (const std::string why = FixtureTurntableProblem(set->fixture(), procedure); !why.empty())
+      throw Error("the fixture cannot run this procedure's turntable steps: " + why);
+  }
   else source = OpenSource(options.source, source_options);
   // The vehicle's calibration (each of its IMUs') is said at the welcome (and recorded there); a
   // refusal, here.

@@ -46,6 +46,32 @@ TEST(FixtureCapture, TheLeadIsSquareLiveAndNearestTheReference) {
   EXPECT_EQ(ChooseLeadSensor(f, {false, true, false, false}), -1);      // only a turned one
 }
 
+// The turntable radius is measured to the lead: a fixture without a square board at its
+// reference point cannot run turntable steps (the others' radii would be off by the lead's
+// offset), and is told so with the remedy; static poses alone need none.
+TEST(FixtureCapture, TurntableStepsNeedASquareBoardAtTheReferencePoint) {
+  Fixture f;
+  f.sensors.resize(2);
+  f.sensors[0].serial = "B1";
+  f.sensors[0].offset_m = Eigen::Vector3d(0.02, 0.03, 0.0);
+  f.sensors[1].serial = "B2";
+  f.sensors[1].offset_m = Eigen::Vector3d(0.0, 0.0, 0.0);
+  const Procedure with_table = OnePoseAndATurntable();
+  EXPECT_EQ(FixtureTurntableProblem(f, with_table), "");
+  f.sensors[1].offset_m = Eigen::Vector3d(0.06, 0.0, 0.0);
+  const std::string why = FixtureTurntableProblem(f, with_table);
+  EXPECT_NE(why.find("no board sits at the plate's reference point"), std::string::npos) << why;
+  EXPECT_NE(why.find("The nearest, B1, is 36 mm from it"), std::string::npos) << why;
+  EXPECT_NE(why.find("subtract its offset [0.02, 0.03, 0]"), std::string::npos) << why;
+  Procedure statics = with_table;
+  statics.steps.pop_back();  // the turntable step
+  EXPECT_EQ(FixtureTurntableProblem(f, statics), "");
+  f.sensors[0].offset_m.setZero();
+  f.sensors[0].sensor_to_plate = SensorToPlate(SensorAxis::kPlusY, SensorAxis::kMinusX);  // turned
+  f.sensors[1].sensor_to_plate = SensorToPlate(SensorAxis::kPlusY, SensorAxis::kMinusX);
+  EXPECT_NE(FixtureTurntableProblem(f, with_table).find("no board sits square"), std::string::npos);
+}
+
 TEST(FixtureCapture, EverySensorsCaptureOfTheLeadsMomentsJudgedOnItsOwn) {
   const Procedure procedure = OnePoseAndATurntable();
   FixtureLeadSource lead(Plate(), 30.0, 1.0);

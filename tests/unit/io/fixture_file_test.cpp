@@ -32,9 +32,10 @@ TEST(FixtureFile, ReadsTheExamplePlate) {
   EXPECT_EQ(SensorAxisOf(f.sensors[2], SensorAxis::kPlusX), SensorAxis::kMinusY);
   // Board 6, upside down: the plate's up is its -z.
   EXPECT_EQ(SensorAxisOf(f.sensors[5], SensorAxis::kPlusZ), SensorAxis::kMinusZ);
-  // Centred on the axis: board 1 at sqrt(0.075^2 + 0.025^2) from it.
-  EXPECT_NEAR(SensorRadiusM(f.sensors[0], 0.0, SensorAxis::kPlusX, SensorAxis::kPlusZ),
-              std::hypot(0.075, 0.025), 1e-15);
+  // Board 2 at the reference point; board 1, 50 mm beside it along -x: at a 0.1 m radius with
+  // the plate's +x outward, 0.05 m from the axis.
+  EXPECT_TRUE(f.sensors[1].offset_m.isZero());
+  EXPECT_NEAR(SensorRadiusM(f.sensors[0], 0.1, SensorAxis::kPlusX, SensorAxis::kPlusZ), 0.05, 1e-15);
 }
 
 TEST(FixtureFile, OneSensorWithItsOwnLink) {
