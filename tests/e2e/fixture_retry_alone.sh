@@ -17,12 +17,7 @@ scenario="$work/loose_20s.toml"
 sed 's/^loose_deg = 3.0$/loose_deg = 3.0\nloose_rock_s = 20.0/' "$data_dir/fixture/plate_8_faults.toml" > "$scenario"
 grep -q '^loose_rock_s = 20.0$' "$scenario" || fail "the scenario's loose board was not found to make it rock longer"
 db="$work/plate.db"
-set +e
-yes '' | "$accelcal" wizard --source sim --speed 0 --scenario "$scenario" --session "$db" --plain \
-  > "$work/out" 2> "$work/err"
-code=${PIPESTATUS[1]}
-set -e
-[ "$code" -eq 0 ] || { tail -20 "$work/out" >&2; cat "$work/err" >&2; fail "the wizard exited $code"; }
+wizard_on_enter --source sim --speed 0 --scenario "$scenario" --session "$db"
 grep -q "sensor 2 (B02) left out of '[^']*': not still while the others were" "$work/out" ||
   { grep B02 "$work/out" | head >&2; fail "the rocking board was never left out of a pose"; }
 grep -q "Enter: retry sensor 2 (B02)" "$work/out" || fail "a retry alone was not what Enter recommended"

@@ -18,13 +18,7 @@ data_dir=$3
 command -v jq > /dev/null || { echo "jq missing: skipped"; exit 77; }
 scenario="$data_dir/fixture/row_8_1khz.toml"
 db="$work/row.db"
-set +e
-yes '' | "$accelcal" wizard --source sim --speed 0 --scenario "$scenario" --fixed-duration 10 \
-  --session "$db" --plain \
-  > "$work/out" 2> "$work/err"
-code=${PIPESTATUS[1]}
-set -e
-[ "$code" -eq 0 ] || { tail -20 "$work/out" >&2; cat "$work/err" >&2; fail "the wizard exited $code"; }
+wizard_on_enter --source sim --speed 0 --scenario "$scenario" --fixed-duration 10 --session "$db"
 batch="$work/row.batch.csv"
 [ -s "$batch" ] || fail "no batch summary beside the session"
 

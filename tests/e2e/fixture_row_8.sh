@@ -12,12 +12,8 @@ accelcal=$1
 source_dir=$2
 data_dir=$3
 . "$source_dir/tests/e2e/lib/common.bash"
-set +e
-yes '' | "$accelcal" wizard --source sim --speed 0 --sensors 8 --session "$work/row.db" --plain \
-  > "$work/out" 2> "$work/err"
-code=${PIPESTATUS[1]}
-set -e
-[ "$code" -eq 0 ] || { tail -20 "$work/out" >&2; cat "$work/err" >&2; fail "wizard --sensors 8 exited $code"; }
+. "$source_dir/tests/e2e/lib/sensor_checks.bash"
+wizard_on_enter --source sim --speed 0 --sensors 8 --session "$work/row.db"
 batch="$work/row.batch.csv"
 [ -s "$batch" ] || fail "no batch summary beside the session"
 for n in 1 2 3 4 5 6 7 8; do

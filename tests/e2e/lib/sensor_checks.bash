@@ -13,6 +13,9 @@
 #                                   ($work/STEM.SERIAL.report.txt) is there and names SERIAL;
 #                                   its certificate number is added to $work/numbers (check
 #                                   afterwards that they differ)
+#   wizard_on_enter ARGS...         `accelcal wizard ARGS... --plain`, every answer Enter, its
+#                                   output in $work/out and $work/err; fails with both when it
+#                                   exits other than 0
 #   [REPORT_ARGS=(...)]             more arguments for `accelcal report` (a --procedure)
 #   kill_at_step PID OUT STEP       waits (up to 2 min) until the wizard PID's output OUT shows
 #                                   step STEP (`[STEP/`), where it waits for an answer it was not
@@ -60,6 +63,14 @@ sensor_report_checked() {  # STEM SERIAL
   [ -s "$report" ] || fail "no report of $2"
   grep -q "$2" "$report" || fail "$2's report does not name it"
   sed -n 's/.*Certificate No.: *\(ACC-[^ ]*\).*/\1/p' "$report" >> "$work/numbers"
+}
+
+wizard_on_enter() {  # ARGS...
+  set +e
+  yes '' | "$accelcal" wizard "$@" --plain > "$work/out" 2> "$work/err"
+  local code=${PIPESTATUS[1]}
+  set -e
+  [ "$code" -eq 0 ] || { tail -20 "$work/out" >&2; cat "$work/err" >&2; fail "wizard $* exited $code"; }
 }
 
 kill_at_step() {  # PID OUT STEP

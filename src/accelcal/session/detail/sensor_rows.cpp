@@ -6,6 +6,7 @@
 #include <fmt/core.h>
 
 #include "accelcal/base/error.h"
+#include "accelcal/base/text_scan.h"
 #include "accelcal/session/detail/session_schema.h"
 #include "accelcal/session/sensor_journal_view.h"
 
@@ -100,8 +101,7 @@ std::optional<Fixture> ReadSensorRows(SqliteDb& db) {
   placement.Bind(1, kSensorSetStep).Bind(2, kSensorSetPlacementKey);
   if (placement.Step()) {
     double deg = kNaN;
-    std::istringstream in(placement.ColumnText(0));
-    if (!(in >> deg) || !std::isfinite(deg) || deg < 0.0)
+    if (!ParseDouble(placement.ColumnText(0), &deg) || !std::isfinite(deg) || deg < 0.0)
       throw Error(fmt::format("session {} is damaged: its fixture's placement uncertainty '{}' "
                               "is not an angle", db.path(), placement.ColumnText(0)));
     fixture.placement_u_rad = deg * M_PI / 180.0;
